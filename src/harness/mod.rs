@@ -1,0 +1,579 @@
+//! Run any WGSL function over a batch of arguments on a real adapter (feature `harness`).
+//!
+//! Give it WGSL source and a function name: it reads the signature with naga (scalars and
+//! vectors of `f32`/`u32`/`i32`), appends a generated compute entry point that applies the
+//! function to every element, and runs it through wgpu — on the GPU where there is one, on Mesa's
+//! lavapipe (a Vulkan driver on the CPU) where there is not. Batches of any size run in chunked
+//! dispatches; [`Kernel::run_chunks`] streams results so sweeps of 2^32 inputs fit in memory.
+//!
+//! ```no_run
+//! use prepass::harness::{Arg, Gpu};
+//! let gpu = Gpu::new()?; // fails with the fix in its message when no adapter exists
+//! println!("adapter: {}", gpu.describe());
+//! let kernel = gpu.kernel(prepass::wgsl::DEPTH, "hyperbolic_depth_from_depth24")?;
+//! let out = kernel.run(&[Arg::Index { start: 0 }], 1 << 24)?; // every 24-bit code
+//! assert_eq!(out.as_f32()[(1 << 24) - 1], 1.0);
+//! # Ok::<(), prepass::harness::HarnessError>(())
+//! ```
+
+mod codegen;
+mod signature;
+
+pub use codegen::{Feed, WORKGROUP_SIZE};
+pub use signature::{Param, Scalar, Signature, SignatureError, ValueType};
+
+use crate::wgsl::parse_and_validate;
+use std::sync::Mutex;
+use wgpu::util::DeviceExt as _;
+
+/// How to get an adapter on a machine without one; part of every no-adapter error.
+pub const NO_ADAPTER_FIX: &str = "install a Vulkan driver — on a machine without a GPU, Mesa's \
+     software driver lavapipe: `sudo apt-get update && sudo apt-get install -y \
+     mesa-vulkan-drivers libvulkan1` (Debian/Ubuntu; `.ci/setup-adapter` does this) — or run on \
+     a machine with a Vulkan, Metal or Direct3D 12 GPU. WGPU_BACKEND and PREPASS_ADAPTER \
+     (a substring of the adapter name) choose among several";
+
+/// Everything that can stop a harness run.
+#[derive(Debug)]
+pub enum HarnessError {
+    /// No adapter could be found; the message says how to get one.
+    NoAdapter {
+        /// What was looked for and what was found.
+        detail: String,
+    },
+    /// The adapter refused a device.
+    Device(String),
+    /// The function's signature cannot be run.
+    Signature(SignatureError),
+    /// The generated module failed naga or wgpu validation.
+    Shader(String),
+    /// The arguments do not fit the signature.
+    Arguments(String),
+    /// Reading results back failed.
+    Readback(String),
+}
+
+impl std::fmt::Display for HarnessError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NoAdapter { detail } => {
+                write!(
+                    f,
+                    "no wgpu adapter to run WGSL on ({detail}). Fix: {NO_ADAPTER_FIX}."
+                )
+            }
+            Self::Device(m) => write!(f, "the adapter refused a device: {m}"),
+            Self::Signature(e) => e.fmt(f),
+            Self::Shader(m) => write!(f, "the generated shader is invalid: {m}"),
+            Self::Arguments(m) => write!(f, "arguments do not fit the signature: {m}"),
+            Self::Readback(m) => write!(f, "reading results back failed: {m}"),
+        }
+    }
+}
+
+impl std::error::Error for HarnessError {}
+
+impl From<SignatureError> for HarnessError {
+    fn from(e: SignatureError) -> Self {
+        Self::Signature(e)
+    }
+}
+
+/// An adapter and a device on it.
+pub struct Gpu {
+    adapter: wgpu::Adapter,
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+}
+
+fn device_rank(t: wgpu::DeviceType) -> u8 {
+    match t {
+        wgpu::DeviceType::DiscreteGpu => 0,
+        wgpu::DeviceType::IntegratedGpu => 1,
+        wgpu::DeviceType::VirtualGpu => 2,
+        wgpu::DeviceType::Cpu => 3,
+        wgpu::DeviceType::Other => 4,
+    }
+}
+
+impl Gpu {
+    /// Open the best adapter: a discrete GPU before an integrated, virtual or software one.
+    /// `WGPU_BACKEND` (e.g. `vulkan`) restricts the backends tried, `PREPASS_ADAPTER` picks
+    /// the first adapter whose name contains it (case-insensitive).
+    ///
+    /// With no adapter it returns [`HarnessError::NoAdapter`], whose message names the fix.
+    pub fn new() -> Result<Self, HarnessError> {
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        let backends = wgpu::Backends::from_env().unwrap_or(wgpu::Backends::all());
+        let mut adapters = pollster::block_on(instance.enumerate_adapters(backends));
+        let wanted = std::env::var("PREPASS_ADAPTER")
+            .ok()
+            .map(|s| s.to_lowercase());
+        let seen: Vec<String> = adapters
+            .iter()
+            .map(|a| {
+                let i = a.get_info();
+                format!("{} ({:?})", i.name, i.backend)
+            })
+            .collect();
+        if let Some(w) = &wanted {
+            adapters.retain(|a| a.get_info().name.to_lowercase().contains(w));
+        }
+        adapters.sort_by_key(|a| device_rank(a.get_info().device_type));
+        let Some(adapter) = adapters.into_iter().next() else {
+            let detail = match wanted {
+                Some(w) => format!(
+                    "PREPASS_ADAPTER={w:?} matches none of the adapters found: [{}]",
+                    seen.join(", ")
+                ),
+                None => format!("backends tried: {backends:?}; none found"),
+            };
+            return Err(HarnessError::NoAdapter { detail });
+        };
+        let mut required_features = wgpu::Features::empty();
+        if adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY) {
+            required_features |= wgpu::Features::TIMESTAMP_QUERY;
+        }
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("prepass harness"),
+            required_features,
+            required_limits: adapter.limits(),
+            ..Default::default()
+        }))
+        .map_err(|e| HarnessError::Device(e.to_string()))?;
+        Ok(Gpu {
+            adapter,
+            device,
+            queue,
+        })
+    }
+
+    /// The adapter's own description (name, backend, driver).
+    pub fn adapter_info(&self) -> wgpu::AdapterInfo {
+        self.adapter.get_info()
+    }
+
+    /// One line naming the adapter, its kind, backend and driver — for reports.
+    pub fn describe(&self) -> String {
+        let i = self.adapter.get_info();
+        format!(
+            "{} [{:?}, {:?}, driver {} {}]",
+            i.name, i.device_type, i.backend, i.driver, i.driver_info
+        )
+    }
+
+    /// Whether the adapter is a software rasteriser (lavapipe, WARP, SwiftShader): its timings
+    /// measure a CPU, not a GPU.
+    pub fn is_software(&self) -> bool {
+        self.adapter.get_info().device_type == wgpu::DeviceType::Cpu
+    }
+
+    /// The wgpu device, for callers who need more than the harness.
+    pub fn device(&self) -> &wgpu::Device {
+        &self.device
+    }
+
+    /// The wgpu queue.
+    pub fn queue(&self) -> &wgpu::Queue {
+        &self.queue
+    }
+
+    /// Prepare `function` from `source` (which must be valid WGSL on its own) to run on batches.
+    pub fn kernel(&self, source: &str, function: &str) -> Result<Kernel<'_>, HarnessError> {
+        let signature = Signature::read(source, function)?;
+        Ok(Kernel {
+            gpu: self,
+            source: source.to_string(),
+            signature,
+            pipelines: Mutex::new(Vec::new()),
+        })
+    }
+}
+
+/// One argument of a batch run.
+#[derive(Clone, Copy, Debug)]
+pub enum Arg<'a> {
+    /// One value per element, as raw bytes (`n × words × 4` of them); see [`Arg::column`].
+    Column(&'a [u8]),
+    /// One value for every element, passed in a uniform buffer as a renderer passes uniforms.
+    /// Holds the value's bits, lanes in order; unused lanes are ignored.
+    Splat([u32; 4]),
+    /// Element `i` receives the bits `start + i` (wrapping), read as the parameter's scalar
+    /// type: every 24-bit code, or every `f32` bit pattern in a range, without uploading them.
+    /// Scalar parameters only.
+    Index {
+        /// Bits given to element 0.
+        start: u32,
+    },
+}
+
+impl<'a> Arg<'a> {
+    /// A column from any plain-old-data slice: `&[f32]`, `&[u32]`, `&[[f32; 3]]`, `&[glam::Vec3]`…
+    pub fn column<T: bytemuck::NoUninit>(values: &'a [T]) -> Self {
+        Arg::Column(bytemuck::cast_slice(values))
+    }
+
+    /// The same `f32` for every element.
+    pub fn splat_f32(x: f32) -> Self {
+        Arg::Splat([x.to_bits(), 0, 0, 0])
+    }
+
+    /// The same `u32` for every element.
+    pub fn splat_u32(x: u32) -> Self {
+        Arg::Splat([x, 0, 0, 0])
+    }
+
+    /// The same vector for every element (up to 4 `f32` lanes).
+    pub fn splat_vec(lanes: &[f32]) -> Self {
+        let mut w = [0u32; 4];
+        for (slot, x) in w.iter_mut().zip(lanes) {
+            *slot = x.to_bits();
+        }
+        Arg::Splat(w)
+    }
+
+    fn feed(&self) -> Feed {
+        match self {
+            Arg::Column(_) => Feed::Column,
+            Arg::Splat(_) => Feed::Splat,
+            Arg::Index { .. } => Feed::Index,
+        }
+    }
+}
+
+/// The results of a run (or of one chunk of it): `len` values of type `ty`, as raw words.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Output {
+    /// Type of each value.
+    pub ty: ValueType,
+    words: Vec<u32>,
+}
+
+impl Output {
+    /// Number of values.
+    pub fn len(&self) -> usize {
+        self.words.len() / self.ty.words()
+    }
+
+    /// Whether there are no values.
+    pub fn is_empty(&self) -> bool {
+        self.words.is_empty()
+    }
+
+    /// The raw 32-bit words, lanes of each value consecutive.
+    pub fn words(&self) -> &[u32] {
+        &self.words
+    }
+
+    /// Take the raw words.
+    pub fn into_words(self) -> Vec<u32> {
+        self.words
+    }
+
+    /// Scalar `f32` results (or the lanes of vectors, flattened).
+    pub fn as_f32(&self) -> &[f32] {
+        bytemuck::cast_slice(&self.words)
+    }
+
+    /// Scalar `u32` results (or lanes).
+    pub fn as_u32(&self) -> &[u32] {
+        &self.words
+    }
+
+    /// Scalar `i32` results (or lanes).
+    pub fn as_i32(&self) -> &[i32] {
+        bytemuck::cast_slice(&self.words)
+    }
+
+    /// `vec2<f32>` results. Panics if the result is not two lanes wide.
+    pub fn as_vec2(&self) -> &[[f32; 2]] {
+        assert_eq!(self.ty.lanes, 2, "result is {}", self.ty);
+        bytemuck::cast_slice(&self.words)
+    }
+
+    /// `vec3<f32>` results. Panics if the result is not three lanes wide.
+    pub fn as_vec3(&self) -> &[[f32; 3]] {
+        assert_eq!(self.ty.lanes, 3, "result is {}", self.ty);
+        bytemuck::cast_slice(&self.words)
+    }
+
+    /// `vec4<f32>` results. Panics if the result is not four lanes wide.
+    pub fn as_vec4(&self) -> &[[f32; 4]] {
+        assert_eq!(self.ty.lanes, 4, "result is {}", self.ty);
+        bytemuck::cast_slice(&self.words)
+    }
+}
+
+/// A function prepared to run on batches; pipelines are compiled once per pattern of feeds.
+pub struct Kernel<'g> {
+    gpu: &'g Gpu,
+    source: String,
+    signature: Signature,
+    pipelines: Mutex<Vec<(Vec<Feed>, wgpu::ComputePipeline)>>,
+}
+
+/// Largest number of elements per dispatch: bounds the buffers (a `vec4` column chunk is
+/// 64 MiB) while keeping dispatch overhead negligible.
+pub const MAX_CHUNK: u64 = 1 << 22;
+
+impl Kernel<'_> {
+    /// The function's signature as naga read it.
+    pub fn signature(&self) -> &Signature {
+        &self.signature
+    }
+
+    /// The full WGSL that runs for these arguments: the source plus the generated entry point.
+    pub fn generated_source(&self, args: &[Arg<'_>]) -> String {
+        let feeds: Vec<Feed> = args.iter().map(Arg::feed).collect();
+        format!(
+            "{}\n\n// ---- generated by prepass::harness ----\n{}",
+            self.source,
+            codegen::entry_point(&self.signature, &feeds)
+        )
+    }
+
+    /// Apply the function to `n` elements and return all results.
+    pub fn run(&self, args: &[Arg<'_>], n: u64) -> Result<Output, HarnessError> {
+        let total = usize::try_from(n)
+            .ok()
+            .and_then(|n| n.checked_mul(self.signature.result.words()))
+            .ok_or_else(|| HarnessError::Arguments(format!("{n} results do not fit in memory")))?;
+        let mut words = Vec::with_capacity(total);
+        self.run_chunks(args, n, |_, chunk| {
+            words.extend_from_slice(chunk.words());
+            Ok(())
+        })?;
+        Ok(Output {
+            ty: self.signature.result,
+            words,
+        })
+    }
+
+    /// Apply the function to `n` elements, handing each chunk's results to `each(first, chunk)`
+    /// as soon as it is read back (`first` = index of the chunk's first element). Memory stays
+    /// bounded by one chunk whatever `n` is. An error from `each` stops the run.
+    pub fn run_chunks(
+        &self,
+        args: &[Arg<'_>],
+        n: u64,
+        mut each: impl FnMut(u64, &Output) -> Result<(), HarnessError>,
+    ) -> Result<(), HarnessError> {
+        let sig = &self.signature;
+        if args.len() != sig.params.len() {
+            return Err(HarnessError::Arguments(format!(
+                "`{}` takes {} arguments, {} given",
+                sig.function,
+                sig.params.len(),
+                args.len()
+            )));
+        }
+        for (p, a) in sig.params.iter().zip(args) {
+            match a {
+                Arg::Column(bytes) => {
+                    let want = n.checked_mul(p.ty.words() as u64 * 4);
+                    if want != Some(bytes.len() as u64) {
+                        return Err(HarnessError::Arguments(format!(
+                            "column for `{}: {}` holds {} bytes; {n} elements need {}",
+                            p.name,
+                            p.ty,
+                            bytes.len(),
+                            n * p.ty.words() as u64 * 4
+                        )));
+                    }
+                }
+                Arg::Index { .. } if p.ty.lanes != 1 => {
+                    return Err(HarnessError::Arguments(format!(
+                        "Arg::Index feeds scalars; `{}` is {}",
+                        p.name, p.ty
+                    )));
+                }
+                _ => {}
+            }
+        }
+        if n == 0 {
+            return Ok(());
+        }
+        let pipeline = self.pipeline(args)?;
+        let gpu = self.gpu;
+        let limits = gpu.device.limits();
+        let widest = sig
+            .params
+            .iter()
+            .map(|p| p.ty.words())
+            .chain([sig.result.words()])
+            .max()
+            .unwrap_or(1) as u64;
+        let binding_limit = limits
+            .max_storage_buffer_binding_size
+            .min(limits.max_buffer_size);
+        let per_dim = u64::from(limits.max_compute_workgroups_per_dimension);
+        let wg = u64::from(WORKGROUP_SIZE);
+        let chunk = MAX_CHUNK
+            .min(binding_limit / (widest * 4))
+            .min(per_dim * per_dim * wg)
+            .min(n)
+            / wg
+            * wg;
+        let chunk = chunk.max(wg.min(n));
+
+        let storage = |size: u64, usage: wgpu::BufferUsages, label: &str| {
+            gpu.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: size.max(4),
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        let columns: Vec<(usize, wgpu::Buffer, u64)> = args
+            .iter()
+            .enumerate()
+            .filter(|(_, a)| matches!(a, Arg::Column(_)))
+            .map(|(k, _)| {
+                let stride = sig.params[k].ty.words() as u64 * 4;
+                let usage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST;
+                (k, storage(chunk * stride, usage, "prepass column"), stride)
+            })
+            .collect();
+        let out_stride = sig.result.words() as u64 * 4;
+        let out = storage(
+            chunk * out_stride,
+            wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            "prepass output",
+        );
+        let staging = storage(
+            chunk * out_stride,
+            wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            "prepass readback",
+        );
+        let params = gpu
+            .device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("prepass params"),
+                contents: &vec![0u8; codegen::uniform_words(args.len()) * 4],
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            });
+        let mut entries = vec![wgpu::BindGroupEntry {
+            binding: 0,
+            resource: params.as_entire_binding(),
+        }];
+        for (b, (_, buf, _)) in columns.iter().enumerate() {
+            entries.push(wgpu::BindGroupEntry {
+                binding: b as u32 + 1,
+                resource: buf.as_entire_binding(),
+            });
+        }
+        entries.push(wgpu::BindGroupEntry {
+            binding: columns.len() as u32 + 1,
+            resource: out.as_entire_binding(),
+        });
+        let bind_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("prepass harness"),
+            layout: &pipeline.get_bind_group_layout(0),
+            entries: &entries,
+        });
+
+        let mut first = 0u64;
+        while first < n {
+            let count = chunk.min(n - first);
+            let groups = count.div_ceil(wg);
+            let gx = groups.min(per_dim);
+            let gy = groups.div_ceil(gx);
+            let mut uniform = vec![count as u32, (gx * wg) as u32, 0, 0];
+            for a in args {
+                uniform.extend_from_slice(&match *a {
+                    Arg::Splat(v) => v,
+                    Arg::Index { start } => [start.wrapping_add(first as u32), 0, 0, 0],
+                    Arg::Column(_) => [0; 4],
+                });
+            }
+            if args.is_empty() {
+                uniform.extend_from_slice(&[0; 4]);
+            }
+            gpu.queue
+                .write_buffer(&params, 0, bytemuck::cast_slice(&uniform));
+            for (k, buf, stride) in &columns {
+                let Arg::Column(bytes) = args[*k] else {
+                    unreachable!("columns are built from Column args")
+                };
+                let lo = (first * stride) as usize;
+                let hi = ((first + count) * stride) as usize;
+                gpu.queue.write_buffer(buf, 0, &bytes[lo..hi]);
+            }
+            let mut encoder = gpu
+                .device
+                .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+            {
+                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor::default());
+                pass.set_pipeline(&pipeline);
+                pass.set_bind_group(0, &bind_group, &[]);
+                pass.dispatch_workgroups(gx as u32, gy as u32, 1);
+            }
+            let bytes = count * out_stride;
+            encoder.copy_buffer_to_buffer(&out, 0, &staging, 0, bytes);
+            gpu.queue.submit([encoder.finish()]);
+            let words = read_back(gpu, &staging, bytes)?;
+            each(
+                first,
+                &Output {
+                    ty: sig.result,
+                    words,
+                },
+            )?;
+            first += count;
+        }
+        Ok(())
+    }
+
+    fn pipeline(&self, args: &[Arg<'_>]) -> Result<wgpu::ComputePipeline, HarnessError> {
+        let feeds: Vec<Feed> = args.iter().map(Arg::feed).collect();
+        let mut cache = self.pipelines.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some((_, p)) = cache.iter().find(|(f, _)| *f == feeds) {
+            return Ok(p.clone());
+        }
+        let source = self.generated_source(args);
+        // naga first: its messages point at the offending line, and wgpu would otherwise panic.
+        parse_and_validate(&source).map_err(|e| HarnessError::Shader(e.to_string()))?;
+        let device = &self.gpu.device;
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some(&self.signature.function),
+            source: wgpu::ShaderSource::Wgsl(source.into()),
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(&self.signature.function),
+            layout: None,
+            module: &module,
+            entry_point: Some(codegen::ENTRY),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(HarnessError::Shader(e.to_string()));
+        }
+        cache.push((feeds, pipeline.clone()));
+        Ok(pipeline)
+    }
+}
+
+fn read_back(gpu: &Gpu, staging: &wgpu::Buffer, bytes: u64) -> Result<Vec<u32>, HarnessError> {
+    let slice = staging.slice(..bytes);
+    let (tx, rx) = std::sync::mpsc::channel();
+    slice.map_async(wgpu::MapMode::Read, move |r| {
+        let _ = tx.send(r);
+    });
+    gpu.device
+        .poll(wgpu::PollType::wait_indefinitely())
+        .map_err(|e| HarnessError::Readback(e.to_string()))?;
+    rx.recv()
+        .map_err(|e| HarnessError::Readback(e.to_string()))?
+        .map_err(|e| HarnessError::Readback(e.to_string()))?;
+    let words = {
+        let view = slice
+            .get_mapped_range()
+            .map_err(|e| HarnessError::Readback(format!("{e:?}")))?;
+        bytemuck::cast_slice::<u8, u32>(&view).to_vec()
+    };
+    staging.unmap();
+    Ok(words)
+}

@@ -1,0 +1,26 @@
+//! # prepass
+//!
+//! GPU shader maths for deferred and light-pre-pass renderers, written twice — as WGSL that a
+//! renderer ships (`wgsl/*.wgsl`, embedded in [`wgsl`]) and as Rust twins for the CPU side —
+//! and proven by exhaustive and property-based tests that execute the WGSL on a real adapter and
+//! measure it against exact references.
+//!
+//! | module | WGSL | what |
+//! |---|---|---|
+//! | [`depth`] | `wgsl/depth.wgsl` | 24-bit depth codes in RGBA8 texels, hyperbolic depth |
+//! | [`precision`] | — | error metrics (ULP, relative, angular, mismatches) and test inputs |
+//! | [`wgsl`] | all | embedded sources; naga validation/translation (feature `validate`) |
+//! | `harness` | any | run any WGSL function on a wgpu adapter (feature `harness`) |
+//!
+//! Features: none by default (glam + half only); `validate` adds naga, `harness` adds wgpu,
+//! `proptest` adds strategies for downstream precision suites.
+
+#![warn(missing_docs)]
+
+pub mod depth;
+#[cfg(feature = "harness")]
+pub mod harness;
+pub mod precision;
+#[cfg(feature = "harness")]
+pub mod sweep;
+pub mod wgsl;

@@ -1,0 +1,4 @@
+//! Precision sweeps that run the WGSL on the adapter and measure it against exact references
+//! (feature `harness`). The tests assert on their results; `errplot` tabulates them.
+
+pub mod depth24;

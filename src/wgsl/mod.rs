@@ -1,0 +1,29 @@
+//! The shipped WGSL sources, embedded as text, and (with the `validate` feature) naga checks.
+//!
+//! Each file in `wgsl/` is plain WGSL, valid on its own: a renderer can paste it, `include_str!`
+//! it, or take it from here.
+
+#[cfg(feature = "validate")]
+mod naga_check;
+#[cfg(feature = "validate")]
+pub use naga_check::{
+    CALL_ALL_ENTRY, Checked, Translations, WgslError, parse_and_validate, translate_all,
+};
+
+/// One shipped WGSL file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct WgslFile {
+    /// File name inside `wgsl/`.
+    pub name: &'static str,
+    /// The file's text.
+    pub source: &'static str,
+}
+
+/// `wgsl/depth.wgsl`: 24-bit depth codes in RGBA8 texels (twin: [`crate::depth`]).
+pub const DEPTH: &str = include_str!("../../wgsl/depth.wgsl");
+
+/// Every shipped WGSL file. `tests/wgsl_validate.rs` checks this list against the directory.
+pub const FILES: &[WgslFile] = &[WgslFile {
+    name: "depth.wgsl",
+    source: DEPTH,
+}];

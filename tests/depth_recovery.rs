@@ -1,0 +1,260 @@
+//! `wgsl/depth.wgsl` on the adapter, exhaustively over all 2^24 codes, against exact references
+//! and against its Rust twin `src/depth.rs`.
+
+mod common;
+
+use common::gpu;
+use glam::Vec3;
+use prepass::depth::{self, DEPTH24_MAX};
+use prepass::harness::Arg;
+use prepass::precision::inputs::{ChannelError, all_codes_rgb8};
+use prepass::precision::metrics::Mismatches;
+use prepass::sweep::depth24::{
+    CODES, RECOVERY_CASES, hyperbolic_all, measure_hyperbolic, recover_all,
+};
+use prepass::wgsl::DEPTH;
+
+const BASELINES: &str = include_str!("baselines/depth24.wgsl");
+
+fn with_baselines() -> String {
+    format!("{DEPTH}\n{BASELINES}")
+}
+
+/// Recovery with per-channel rounding returns every code exactly under each channel error, and
+/// the Rust twin returns the same codes from the same channels.
+fn recovery_case(case: usize) {
+    let (error, flip) = RECOVERY_CASES[case];
+    let r = recover_all(gpu(), DEPTH, "depth24_from_rgb8", error, flip).unwrap();
+    // Bound: 0 mismatches. Each channel is within 0.45/255 (or 3 ULP ≈ 1e-7) of byte/255, so
+    // 255·c is within 0.45 + 2^-16 of the byte and round() cannot pick a neighbour.
+    assert_eq!(
+        r.mismatches.count, 0,
+        "{error} (flip {flip}): first (code, got, want) = {:?}",
+        r.mismatches.first
+    );
+    let rgb = all_codes_rgb8(error, flip);
+    let twin = Mismatches::count(&r.codes, |i| depth::depth24_from_rgb8(Vec3::from(rgb[i])));
+    assert_eq!(twin.count, 0, "Rust twin differs: {:?}", twin.first);
+}
+
+#[test]
+fn rgb8_recovery_exact_channels_all_codes() {
+    recovery_case(0);
+}
+
+#[test]
+fn rgb8_recovery_3ulp_up_and_down_all_codes() {
+    recovery_case(1);
+    recovery_case(2);
+}
+
+#[test]
+fn rgb8_recovery_045_over_255_up_and_down_all_codes() {
+    recovery_case(3);
+    recovery_case(4);
+}
+
+#[test]
+fn unrounded_baseline_reproduces_the_talks_problem() {
+    let src = with_baselines();
+    let mut report = Vec::new();
+    for (error, flip) in RECOVERY_CASES {
+        let r = recover_all(
+            gpu(),
+            &src,
+            "baseline_depth24_from_rgb8_unrounded",
+            error,
+            flip,
+        )
+        .unwrap();
+        report.push((error, flip, r.mismatches.count));
+        if matches!(error, ChannelError::Offset(_)) {
+            // ±0.45/255 on r alone moves the unrounded total by 0.45·65536 codes: nearly every
+            // code must come back wrong. If this passes with few mismatches the sweep is broken.
+            assert!(
+                r.mismatches.count > CODES / 2,
+                "{error}: only {} mismatches",
+                r.mismatches.count
+            );
+        }
+    }
+    for (e, f, m) in report {
+        eprintln!("unrounded baseline, channels {e} (flip {f}): {m} of {CODES} codes wrong");
+    }
+}
+
+#[test]
+fn packed_paths_are_exact_and_match_the_twin_for_every_code() {
+    let g = gpu();
+    let packed = g
+        .kernel(DEPTH, "pack_depth24")
+        .unwrap()
+        .run(&[Arg::Index { start: 0 }], CODES)
+        .unwrap()
+        .into_words();
+    let twin = Mismatches::count(&packed, |d| depth::pack_depth24(d as u32));
+    assert_eq!(twin.count, 0, "pack_depth24 twin differs: {:?}", twin.first);
+    assert!(
+        packed.iter().all(|p| p >> 24 == 0),
+        "alpha byte must stay 0"
+    );
+
+    // Alpha is not part of the code: fill it with junk before unpacking.
+    let with_alpha: Vec<u32> = packed
+        .iter()
+        .enumerate()
+        .map(|(d, p)| p | ((d as u32).wrapping_mul(0x9e37_79b9) & 0xff00_0000))
+        .collect();
+    let codes = g
+        .kernel(DEPTH, "depth24_from_packed")
+        .unwrap()
+        .run(&[Arg::column(&with_alpha)], CODES)
+        .unwrap()
+        .into_words();
+    let m = Mismatches::count(&codes, |d| d as u32);
+    assert_eq!(m.count, 0, "depth24_from_packed: {:?}", m.first);
+    let twin = Mismatches::count(&codes, |i| depth::depth24_from_packed(with_alpha[i]));
+    assert_eq!(twin.count, 0);
+
+    // The issue's identity, through the adapter's own unpack4x8unorm.
+    let src = format!(
+        "{DEPTH}\nfn roundtrip(d: u32) -> u32 {{ return depth24_from_rgb8(unpack4x8unorm(pack_depth24(d)).xyz); }}"
+    );
+    let back = g
+        .kernel(&src, "roundtrip")
+        .unwrap()
+        .run(&[Arg::Index { start: 0 }], CODES)
+        .unwrap()
+        .into_words();
+    let m = Mismatches::count(&back, |d| d as u32);
+    assert_eq!(m.count, 0, "unpack4x8unorm round trip: {:?}", m.first);
+}
+
+#[test]
+fn hyperbolic_depth_is_correctly_rounded_for_every_code() {
+    let h = hyperbolic_all(gpu(), DEPTH, "hyperbolic_depth_from_depth24").unwrap();
+    // Bound: correctly rounded (≤ 0.5 ULP). The integer construction has no rounding step, so
+    // anything above 0.5 is a bug, not an accuracy allowance.
+    assert_eq!(h.ulps.nan_count, 0);
+    assert!(
+        h.ulps.max <= 0.5,
+        "max {} ULP at code {}",
+        h.ulps.max,
+        h.ulps.argmax
+    );
+    assert_eq!(h.exact_roundtrip_failures, 0);
+    assert_eq!(h.collisions, 0, "two codes share a float");
+    let twin: Vec<f32> = (0..=DEPTH24_MAX)
+        .map(depth::hyperbolic_depth_from_depth24)
+        .collect();
+    let m = prepass::precision::metrics::bit_mismatches(&h.values, &twin);
+    assert_eq!(m.count, 0, "Rust twin differs: {:?}", m.first);
+    eprintln!(
+        "hyperbolic_depth_from_depth24: max {:.3} ULP, mean {:.3}; f32 round trip failures {}",
+        h.ulps.max,
+        h.ulps.mean(),
+        h.f32_roundtrip_failures
+    );
+    // Independent of the adapter: the twin measured the same way.
+    let t = measure_hyperbolic(twin);
+    assert_eq!(t.ulps.max, h.ulps.max);
+}
+
+#[test]
+fn hyperbolic_baselines_are_measured() {
+    let src = with_baselines();
+    for f in [
+        "baseline_hyperbolic_divide",
+        "baseline_hyperbolic_reciprocal",
+    ] {
+        let h = hyperbolic_all(gpu(), &src, f).unwrap();
+        // WGSL allows `/` 2.5 ULP; the reciprocal form rounds twice (≤ 0.5 + 0.5·(1+2^-23) ULP
+        // plus the constant's own 0.5 ULP relative error): both stay within 2.5 ULP, so a
+        // conforming adapter cannot exceed this.
+        assert!(h.ulps.max <= 2.5, "{f}: {} ULP", h.ulps.max);
+        eprintln!(
+            "{f}: max {:.3} ULP, mean {:.4}; exact round trip failures {}, f32 round trip \
+             failures {}, collisions {}",
+            h.ulps.max,
+            h.ulps.mean(),
+            h.exact_roundtrip_failures,
+            h.f32_roundtrip_failures,
+            h.collisions
+        );
+    }
+}
+
+#[test]
+fn bad_channels_give_the_documented_clamped_code_on_both_sides() {
+    let specials = [
+        f32::NAN,
+        -f32::NAN,
+        f32::from_bits(0x7f80_0001), // signalling-NaN bit pattern
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        -1.0,
+        2.0,
+        -0.0,
+        f32::from_bits(1), // smallest subnormal (may be flushed: still byte 0)
+        1e30,
+        0.5,
+    ];
+    // Documented per-channel byte: NaN → 0, ≤ 0 → 0, ≥ 1 → 255, else round(255c).
+    let byte = |c: f32| -> u32 {
+        if c.is_nan() || c <= 0.0 {
+            0
+        } else if c >= 1.0 {
+            255
+        } else {
+            (c * 255.0).round_ties_even() as u32
+        }
+    };
+    let mut rgb = Vec::new();
+    for &r in &specials {
+        for &g in &specials {
+            for &b in &specials {
+                rgb.push([r, g, b]);
+            }
+        }
+    }
+    let out = gpu()
+        .kernel(DEPTH, "depth24_from_rgb8")
+        .unwrap()
+        .run(&[Arg::column(&rgb)], rgb.len() as u64)
+        .unwrap();
+    for (i, (&got, c)) in out.as_u32().iter().zip(&rgb).enumerate() {
+        let want = (byte(c[0]) << 16) | (byte(c[1]) << 8) | byte(c[2]);
+        assert_eq!(got, want, "WGSL, input {i}: {c:?}");
+        assert_eq!(
+            depth::depth24_from_rgb8(Vec3::from(*c)),
+            want,
+            "Rust, input {c:?}"
+        );
+    }
+}
+
+#[test]
+fn codes_above_24_bits_saturate_on_both_sides() {
+    let g = gpu();
+    let n = 4096u64; // the top of the u32 range, and just above 2^24 − 1
+    for start in [u32::MAX - 4095, DEPTH24_MAX + 1] {
+        let idx = [Arg::Index { start }];
+        let packed = g
+            .kernel(DEPTH, "pack_depth24")
+            .unwrap()
+            .run(&idx, n)
+            .unwrap();
+        let hyper = g
+            .kernel(DEPTH, "hyperbolic_depth_from_depth24")
+            .unwrap()
+            .run(&idx, n)
+            .unwrap();
+        for i in 0..n as usize {
+            let d = start.wrapping_add(i as u32);
+            assert_eq!(packed.as_u32()[i], 0x00ff_ffff, "pack_depth24({d})");
+            assert_eq!(depth::pack_depth24(d), 0x00ff_ffff);
+            assert_eq!(hyper.as_f32()[i], 1.0, "hyperbolic_depth_from_depth24({d})");
+            assert_eq!(depth::hyperbolic_depth_from_depth24(d), 1.0);
+        }
+    }
+}
