@@ -24,3 +24,8 @@ pub mod precision;
 #[cfg(feature = "harness")]
 pub mod sweep;
 pub mod wgsl;
+
+/// The README's code examples, compiled and run as doctests so they cannot rot.
+#[cfg(all(doctest, feature = "harness"))]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
