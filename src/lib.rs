@@ -8,6 +8,9 @@
 //! | module | WGSL | what |
 //! |---|---|---|
 //! | [`depth`] | `wgsl/depth.wgsl` | 24-bit depth codes in RGBA8 texels, hyperbolic depth |
+//! | [`linear_depth`] | `wgsl/linear_depth.wgsl` | view distance from depth, stable for any far/near |
+//! | [`projection`] | — | `Projection`: near/far/convention, per-pixel constants, exact forward maps |
+//! | [`position`] | `wgsl/position.wgsl` | frustum rays, view/world/camera-relative position rebuild |
 //! | [`precision`] | — | error metrics (ULP, relative, angular, mismatches) and test inputs |
 //! | [`wgsl`] | all | embedded sources; naga validation/translation (feature `validate`) |
 //! | `harness` | any | run any WGSL function on a wgpu adapter (feature `harness`) |
@@ -20,7 +23,10 @@
 pub mod depth;
 #[cfg(feature = "harness")]
 pub mod harness;
+pub mod linear_depth;
+pub mod position;
 pub mod precision;
+pub mod projection;
 #[cfg(feature = "harness")]
 pub mod sweep;
 pub mod wgsl;

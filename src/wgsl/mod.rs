@@ -22,8 +22,24 @@ pub struct WgslFile {
 /// `wgsl/depth.wgsl`: 24-bit depth codes in RGBA8 texels (twin: [`crate::depth`]).
 pub const DEPTH: &str = include_str!("../../wgsl/depth.wgsl");
 
+/// `wgsl/linear_depth.wgsl`: view distance from depth (twin: [`crate::linear_depth`]).
+pub const LINEAR_DEPTH: &str = include_str!("../../wgsl/linear_depth.wgsl");
+
+/// `wgsl/position.wgsl`: frustum rays and position rebuild (twin: [`crate::position`]).
+pub const POSITION: &str = include_str!("../../wgsl/position.wgsl");
+
 /// Every shipped WGSL file. `tests/wgsl_validate.rs` checks this list against the directory.
-pub const FILES: &[WgslFile] = &[WgslFile {
-    name: "depth.wgsl",
-    source: DEPTH,
-}];
+pub const FILES: &[WgslFile] = &[
+    WgslFile {
+        name: "depth.wgsl",
+        source: DEPTH,
+    },
+    WgslFile {
+        name: "linear_depth.wgsl",
+        source: LINEAR_DEPTH,
+    },
+    WgslFile {
+        name: "position.wgsl",
+        source: POSITION,
+    },
+];

@@ -1,0 +1,177 @@
+//! View distance from stored depth — the Rust twins of `wgsl/linear_depth.wgsl`.
+//!
+//! The talk's inverse `vz = 1/(z·a + b)` (`a = (f−n)/(−f·n)`, `b = 1/n`; seed `000`,
+//! "Recovering linear depth") cancels near the far plane and loses precision like
+//! `(f/n)·2^-24` — about 8 % at `f/n = 10^6`. Rearranged so that every term is non-negative:
+//!
+//! - standard float: `vz = n / ((1 − z) + z·(n/f))` for `z ≥ 0.5` (`1 − z` exact there) and
+//!   `n / (1 − z·(1 − n/f))` below (`z·(1 − n/f) < 0.5`: no cancellation; monotonic in `z`),
+//! - reversed float: `vz = n / (z·(1 − n/f) + n/f)`,
+//! - 24-bit code `d`: `vz = n·(2^24−1) / ((2^24−1−d) + d·(n/f))` (integer complement, exact),
+//!
+//! with `n/f = 0` for an infinite far plane. Nothing cancels, so the error is a handful of
+//! roundings whatever `f/n` is.
+//!
+//! **Error bound (derived):** with `u = 2^-24` and `w = d·(n/f)/s ∈ [0, 1)` the weight of the
+//! product term in the denominator `s`, the relative error is at most
+//! `u·(1 + 1 + 2w) + ε_div` for the float paths (below `z = 0.5` read `w` as the share of
+//! `z·(1 − n/f)`, at most 1/2 of `s`) and one more `u` for the code path (the rounded `n·(2^24−1)`), where `ε_div`
+//! is the division's error: `u` where `/` is correctly rounded (lavapipe, and the Rust twin),
+//! up to 2.5 ULP where an adapter uses WGSL's full allowance. A relative error `k·u` is at most
+//! `k` ULP. The measured maxima over all codes and the stiff grid are in the README
+//! (`tests/linear_depth.rs` asserts ≤ 4 ULP on the adapter).
+//!
+//! **Twins:** the same operations in the same order in f32. They are bit-identical where the
+//! adapter neither fuses `a·b + c` into an fma nor divides less accurately than correctly
+//! rounded; WGSL permits both, so the tests require agreement within 1 ULP and report how many
+//! results differ.
+//!
+//! **Bad input:** depth is clamped to `[0, 1]` and codes to `2^24 − 1`; NaN depth gives NaN; the
+//! far plane of an infinite projection gives `+∞`. `near`/`far` are assumed valid
+//! (`0 < near < far ≤ +∞`, as [`crate::projection::Projection::new`] enforces); the result for
+//! other values is unspecified.
+
+use crate::depth::DEPTH24_MAX;
+
+/// `n/f` with an infinite far plane giving exactly 0 (as WGSL `ld_near_over_far`).
+fn near_over_far(near: f32, far: f32) -> f32 {
+    if far.is_infinite() { 0.0 } else { near / far }
+}
+
+/// `numerator / s`, `+∞` when `s == 0` (as WGSL `ld_divide_or_inf`).
+fn divide_or_inf(numerator: f32, s: f32) -> f32 {
+    if s == 0.0 {
+        f32::INFINITY
+    } else {
+        numerator / s
+    }
+}
+
+/// View distance of a 24-bit standard-convention depth code (twin of WGSL
+/// `view_z_from_depth24`). See the module docs for the formula and error bound.
+pub fn view_z_from_depth24(d: u32, near: f32, far: f32) -> f32 {
+    view_z_from_depth24_consts(d, [near * DEPTH24_MAX as f32, near_over_far(near, far)])
+}
+
+/// [`view_z_from_depth24`] with `k = (n·(2^24 − 1), n/f)` from
+/// [`crate::projection::Projection::depth24_consts`] (twin of `view_z_from_depth24_consts`).
+pub fn view_z_from_depth24_consts(d: u32, k: [f32; 2]) -> f32 {
+    let code = d.min(DEPTH24_MAX);
+    let s = (DEPTH24_MAX - code) as f32 + code as f32 * k[1];
+    divide_or_inf(k[0], s)
+}
+
+/// View distance of a float standard-convention depth (twin of WGSL `view_z_from_depth`).
+pub fn view_z_from_depth(z: f32, near: f32, far: f32) -> f32 {
+    let r = near_over_far(near, far);
+    view_z_from_depth_consts(z, [near, r, 1.0 - r])
+}
+
+/// [`view_z_from_depth`] with `k = (n, n/f, (f − n)/f)` from
+/// [`crate::projection::Projection::depth_consts`]. Below `z = 0.5` the denominator is
+/// `1 − z·(1 − n/f)` (where `1 − z` would round and let the result step backwards), so the
+/// result is monotonic in `z`.
+pub fn view_z_from_depth_consts(z: f32, k: [f32; 3]) -> f32 {
+    if z.is_nan() {
+        return f32::NAN;
+    }
+    let zc = z.clamp(0.0, 1.0);
+    let s = if zc < 0.5 {
+        1.0 - zc * k[2]
+    } else {
+        (1.0 - zc) + zc * k[1]
+    };
+    divide_or_inf(k[0], s)
+}
+
+/// View distance of a float reversed-convention depth (twin of WGSL
+/// `view_z_from_reversed_depth`). Depth 0 of an infinite projection (the sky) gives `+∞`.
+pub fn view_z_from_reversed_depth(z: f32, near: f32, far: f32) -> f32 {
+    let r = near_over_far(near, far);
+    view_z_from_reversed_depth_consts(z, [near, 1.0 - r, r])
+}
+
+/// [`view_z_from_reversed_depth`] with `k = (n, (f − n)/f, n/f)` from
+/// [`crate::projection::Projection::reversed_depth_consts`].
+pub fn view_z_from_reversed_depth_consts(z: f32, k: [f32; 3]) -> f32 {
+    if z.is_nan() {
+        return f32::NAN;
+    }
+    let zc = z.clamp(0.0, 1.0);
+    let s = zc * k[1] + k[2];
+    divide_or_inf(k[0], s)
+}
+
+/// Exact references in f64 from the f32 parameters as given (relative error ~2^-52, i.e.
+/// ~2^-28 of an f32 ULP: every term is non-negative, so f64 loses nothing to cancellation).
+pub mod exact {
+    use crate::depth::DEPTH24_MAX;
+
+    /// `vz = n·f·D / (f·(D − d) + n·d)`, `D = 2^24 − 1`; `n·D/(D − d)` for infinite far.
+    pub fn view_z_from_depth24(d: u32, near: f32, far: f32) -> f64 {
+        let (n, dd, big) = (
+            f64::from(near),
+            f64::from(d.min(DEPTH24_MAX)),
+            f64::from(DEPTH24_MAX),
+        );
+        if far.is_infinite() {
+            return n * big / (big - dd);
+        }
+        let f = f64::from(far);
+        n * f * big / (f * (big - dd) + n * dd)
+    }
+
+    /// `vz = n·f / (f·(1 − z) + n·z)` for standard float depth `z` (clamped to `[0, 1]`).
+    pub fn view_z_from_depth(z: f32, near: f32, far: f32) -> f64 {
+        let (z, n) = (f64::from(z.clamp(0.0, 1.0)), f64::from(near));
+        if far.is_infinite() {
+            return n / (1.0 - z);
+        }
+        let f = f64::from(far);
+        n * f / (f * (1.0 - z) + n * z)
+    }
+
+    /// `vz = n·f / (z·(f − n) + n)` for reversed float depth `z` (clamped to `[0, 1]`).
+    pub fn view_z_from_reversed_depth(z: f32, near: f32, far: f32) -> f64 {
+        let (z, n) = (f64::from(z.clamp(0.0, 1.0)), f64::from(near));
+        if far.is_infinite() {
+            return n / z;
+        }
+        let f = f64::from(far);
+        n * f / (z * (f - n) + n)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn planes_map_to_near_and_far() {
+        assert_eq!(view_z_from_depth24(0, 0.1, 100.0), 0.1);
+        assert!((view_z_from_depth24(DEPTH24_MAX, 0.1, 100.0) - 100.0).abs() <= 100.0 * 2e-7);
+        assert_eq!(
+            view_z_from_depth24(DEPTH24_MAX, 0.1, f32::INFINITY),
+            f32::INFINITY
+        );
+        assert_eq!(view_z_from_depth(0.0, 0.5, 10.0), 0.5);
+        assert_eq!(view_z_from_depth(1.0, 0.5, f32::INFINITY), f32::INFINITY);
+        assert_eq!(view_z_from_reversed_depth(1.0, 0.5, 10.0), 0.5);
+        assert_eq!(
+            view_z_from_reversed_depth(0.0, 0.5, f32::INFINITY),
+            f32::INFINITY
+        );
+        assert!((view_z_from_reversed_depth(0.0, 0.5, 10.0) - 10.0).abs() <= 10.0 * 2e-7);
+    }
+
+    #[test]
+    fn bad_depths_clamp_or_propagate() {
+        assert!(view_z_from_depth(f32::NAN, 1.0, 2.0).is_nan());
+        assert!(view_z_from_reversed_depth(f32::NAN, 1.0, 2.0).is_nan());
+        assert_eq!(view_z_from_depth(-5.0, 1.0, 2.0), 1.0);
+        assert_eq!(
+            view_z_from_depth24(u32::MAX, 1.0, 2.0),
+            view_z_from_depth24(DEPTH24_MAX, 1.0, 2.0)
+        );
+    }
+}

@@ -1,0 +1,98 @@
+//! View- and world-space position rebuild — the Rust twins of `wgsl/position.wgsl`.
+//!
+//! A full-screen lighting pass rebuilds each pixel's position as `ray · vz`, where `ray` is the
+//! view ray through the pixel scaled to a unit view-axis component and `vz` the view distance
+//! from [`crate::linear_depth`]. Rays are linear in NDC, so interpolating the corner rays of a
+//! full-screen triangle gives every pixel's ray.
+//!
+//! **Error bound (derived):** `frustum_ray` rounds `ndc·tan` once and `view_position` rounds the
+//! product with `vz` once, so each component's relative error is the error of `vz` plus at most
+//! 2 roundings (`2·2^-24`, ≤ 2 ULP); the z component carries `vz`'s error alone. `world_position`
+//! adds the camera position in f32: its absolute error is about half an ULP of the camera's
+//! coordinates (≈ 0.5 mm at 8 km, 0.5 m at 1e7 m) whatever the pixel's distance; the
+//! camera-relative path keeps the view-space relative error.
+//!
+//! **Bad input:** these are plain products and sums: NaN and ±∞ propagate as IEEE arithmetic
+//! does on the adapter (WGSL lets an implementation assume they never occur, so treat sky pixels
+//! — `vz = +∞` — separately: a zero ray component times ∞ is NaN). Vertex indices above 2 wrap
+//! through their low two bits (index 3 gives `(3, 3)`, outside the screen).
+
+use glam::{Mat3, Vec2, Vec3};
+
+/// View ray through `ndc_xy` with z = +1 (left-handed view space, +z forward). Twin of WGSL
+/// `frustum_ray`.
+pub fn frustum_ray(ndc_xy: Vec2, tan_half_fov: Vec2) -> Vec3 {
+    (ndc_xy * tan_half_fov).extend(1.0)
+}
+
+/// View ray with z = −1 (right-handed view space, −z forward, as wgpu and Bevy). Twin of WGSL
+/// `frustum_ray_rh`.
+pub fn frustum_ray_rh(ndc_xy: Vec2, tan_half_fov: Vec2) -> Vec3 {
+    (ndc_xy * tan_half_fov).extend(-1.0)
+}
+
+/// `ray · view_z`. Twin of WGSL `view_position`.
+pub fn view_position(ray: Vec3, view_z: f32) -> Vec3 {
+    ray * view_z
+}
+
+/// NDC of a full-screen triangle's vertex: 0 → (−1, −1), 1 → (3, −1), 2 → (−1, 3).
+pub fn fullscreen_triangle_ndc(vertex_index: u32) -> Vec2 {
+    Vec2::new((vertex_index & 1) as f32, ((vertex_index >> 1) & 1) as f32) * 4.0 - 1.0
+}
+
+/// [`frustum_ray`] at a full-screen triangle's vertex.
+pub fn fullscreen_triangle_ray(vertex_index: u32, tan_half_fov: Vec2) -> Vec3 {
+    frustum_ray(fullscreen_triangle_ndc(vertex_index), tan_half_fov)
+}
+
+/// [`frustum_ray_rh`] at a full-screen triangle's vertex.
+pub fn fullscreen_triangle_ray_rh(vertex_index: u32, tan_half_fov: Vec2) -> Vec3 {
+    frustum_ray_rh(fullscreen_triangle_ndc(vertex_index), tan_half_fov)
+}
+
+/// wgpu NDC from a texture coordinate: `(2u − 1, 1 − 2v)`.
+pub fn ndc_from_uv(uv: Vec2) -> Vec2 {
+    Vec2::new(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0)
+}
+
+/// A view ray rotated into world orientation. Twin of WGSL `world_ray` (a matrix-vector
+/// product: the adapter may fuse its multiply-adds, so agreement is within a few ULP, not bits).
+pub fn world_ray(view_ray: Vec3, view_to_world: Mat3) -> Vec3 {
+    view_to_world * view_ray
+}
+
+/// Position relative to the camera in world orientation: `ray · vz`.
+pub fn camera_relative_position(world_ray_dir: Vec3, view_z: f32) -> Vec3 {
+    world_ray_dir * view_z
+}
+
+/// World position `camera + ray · vz`.
+pub fn world_position(world_ray_dir: Vec3, view_z: f32, camera_position: Vec3) -> Vec3 {
+    camera_position + world_ray_dir * view_z
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fullscreen_triangle_covers_the_screen() {
+        assert_eq!(fullscreen_triangle_ndc(0), Vec2::new(-1.0, -1.0));
+        assert_eq!(fullscreen_triangle_ndc(1), Vec2::new(3.0, -1.0));
+        assert_eq!(fullscreen_triangle_ndc(2), Vec2::new(-1.0, 3.0));
+        // The ray at NDC (x, y) is the barycentric mix of the corner rays.
+        let t = Vec2::new(0.7, 0.4);
+        let r: Vec<Vec3> = (0..3).map(|i| fullscreen_triangle_ray(i, t)).collect();
+        let p = Vec2::new(0.25, -0.5);
+        let (b1, b2) = ((p.x + 1.0) / 4.0, (p.y + 1.0) / 4.0);
+        let mixed = r[0] * (1.0 - b1 - b2) + r[1] * b1 + r[2] * b2;
+        assert!((mixed - frustum_ray(p, t)).abs().max_element() < 1e-6);
+    }
+
+    #[test]
+    fn uv_to_ndc_flips_y() {
+        assert_eq!(ndc_from_uv(Vec2::new(0.0, 0.0)), Vec2::new(-1.0, 1.0));
+        assert_eq!(ndc_from_uv(Vec2::new(1.0, 1.0)), Vec2::new(1.0, -1.0));
+    }
+}

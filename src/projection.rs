@@ -1,0 +1,251 @@
+//! `Projection`: near/far planes and depth convention, validated, with the constants the WGSL
+//! per-pixel functions take (computed in f64, rounded once) and the exact forward maps
+//! (view distance → window depth / 24-bit code) used as references.
+//!
+//! View distance `vz` is the positive distance along the view axis (`+z` forward left-handed,
+//! `−z` forward right-handed as wgpu/Bevy: then view-space z is `−vz`). Window depth in `[0, 1]`:
+//! - standard: `z = f(vz − n) / ((f − n)·vz)` (near → 0, far → 1); infinite far: `z = 1 − n/vz`;
+//! - reversed: `z = n(f − vz) / ((f − n)·vz)` (near → 1, far → 0); infinite far: `z = n/vz`.
+
+use crate::depth::DEPTH24_MAX;
+
+/// Which end of the depth range the near plane maps to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum DepthConvention {
+    /// Near → 0, far → 1 (the talks' convention).
+    Standard,
+    /// Near → 1, far → 0 (reversed-Z: float depth's precision where distances are large).
+    Reversed,
+}
+
+/// A rejected [`Projection`] parameter: which field, and why.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProjectionError {
+    /// The offending field: `"near"` or `"far"`.
+    pub field: &'static str,
+    /// What is wrong with it.
+    pub reason: String,
+}
+
+impl std::fmt::Display for ProjectionError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "invalid projection `{}`: {}", self.field, self.reason)
+    }
+}
+
+impl std::error::Error for ProjectionError {}
+
+/// A perspective projection's depth mapping: `0 < near < far ≤ +∞`, standard or reversed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Projection {
+    near: f32,
+    far: f32,
+    convention: DepthConvention,
+}
+
+impl Projection {
+    /// Validate and build. Errors name the field: `near` must be finite and > 0 (a positive
+    /// normal float: subnormal near planes lose precision in every formula); `far` must be > near
+    /// (`+∞` allowed, for an infinite projection) and not NaN.
+    pub fn new(near: f32, far: f32, convention: DepthConvention) -> Result<Self, ProjectionError> {
+        let bad = |field, reason: String| Err(ProjectionError { field, reason });
+        if near.is_nan() {
+            return bad("near", "is NaN".into());
+        }
+        if near < f32::MIN_POSITIVE {
+            return bad("near", format!("{near} is not a positive normal float"));
+        }
+        if near.is_infinite() {
+            return bad("near", "is infinite".into());
+        }
+        if far.is_nan() {
+            return bad("far", "is NaN".into());
+        }
+        if far <= near {
+            return bad("far", format!("{far} is not greater than near = {near}"));
+        }
+        Ok(Projection {
+            near,
+            far,
+            convention,
+        })
+    }
+
+    /// Near plane distance.
+    pub fn near(&self) -> f32 {
+        self.near
+    }
+
+    /// Far plane distance (`+∞` for an infinite projection).
+    pub fn far(&self) -> f32 {
+        self.far
+    }
+
+    /// The depth convention.
+    pub fn convention(&self) -> DepthConvention {
+        self.convention
+    }
+
+    /// Whether the far plane is at infinity.
+    pub fn is_infinite(&self) -> bool {
+        self.far.is_infinite()
+    }
+
+    /// `n/f` in f64 (0 for an infinite far plane).
+    fn ratio(&self) -> f64 {
+        if self.is_infinite() {
+            0.0
+        } else {
+            f64::from(self.near) / f64::from(self.far)
+        }
+    }
+
+    /// Constants for WGSL `view_z_from_depth24_consts(d, k)`: `k = (n·(2^24 − 1), n/f)`, each
+    /// computed in f64 and rounded once (standard convention codes).
+    pub fn depth24_consts(&self) -> [f32; 2] {
+        [
+            (f64::from(self.near) * f64::from(DEPTH24_MAX)) as f32,
+            self.ratio() as f32,
+        ]
+    }
+
+    /// Constants for WGSL `view_z_from_depth_consts(z, k)`: `k = (n, n/f, (f − n)/f)`
+    /// (standard convention; `(0, 1)` in the last two when infinite).
+    pub fn depth_consts(&self) -> [f32; 3] {
+        [
+            self.near,
+            self.ratio() as f32,
+            self.one_minus_ratio() as f32,
+        ]
+    }
+
+    /// `(f − n)/f` in f64 (1 for an infinite far plane).
+    fn one_minus_ratio(&self) -> f64 {
+        if self.is_infinite() {
+            1.0
+        } else {
+            (f64::from(self.far) - f64::from(self.near)) / f64::from(self.far)
+        }
+    }
+
+    /// Constants for WGSL `view_z_from_reversed_depth_consts(z, k)`:
+    /// `k = (n, (f − n)/f, n/f)` (reversed convention; `(1, 0)` in the last two when infinite).
+    pub fn reversed_depth_consts(&self) -> [f32; 3] {
+        [
+            self.near,
+            self.one_minus_ratio() as f32,
+            self.ratio() as f32,
+        ]
+    }
+
+    /// Exact window depth of view distance `vz` under this projection's convention (f64).
+    pub fn depth_from_view_z(&self, vz: f64) -> f64 {
+        let (n, f) = (f64::from(self.near), f64::from(self.far));
+        let standard = if self.is_infinite() {
+            1.0 - n / vz
+        } else {
+            f * (vz - n) / ((f - n) * vz)
+        };
+        match self.convention {
+            DepthConvention::Standard => standard,
+            DepthConvention::Reversed => {
+                if self.is_infinite() {
+                    n / vz
+                } else {
+                    n * (f - vz) / ((f - n) * vz)
+                }
+            }
+        }
+    }
+
+    /// The 24-bit code a depth buffer stores for view distance `vz`: the nearest integer to
+    /// `depth · (2^24 − 1)`, clamped to the code range (standard convention codes are what
+    /// [`crate::linear_depth::view_z_from_depth24`] reads; for a reversed projection the code is
+    /// of the reversed depth).
+    pub fn depth24_from_view_z(&self, vz: f64) -> u32 {
+        let z = self.depth_from_view_z(vz).clamp(0.0, 1.0);
+        (z * f64::from(DEPTH24_MAX)).round() as u32
+    }
+
+    /// View distance from a float window depth in this projection's convention (the Rust twin
+    /// of the matching WGSL function; see [`crate::linear_depth`]).
+    pub fn view_z_from_depth(&self, z: f32) -> f32 {
+        match self.convention {
+            DepthConvention::Standard => {
+                crate::linear_depth::view_z_from_depth_consts(z, self.depth_consts())
+            }
+            DepthConvention::Reversed => crate::linear_depth::view_z_from_reversed_depth_consts(
+                z,
+                self.reversed_depth_consts(),
+            ),
+        }
+    }
+
+    /// A right-handed (−z forward, wgpu/Bevy) perspective matrix with this depth mapping, for
+    /// `fov_y` radians and `aspect` = width/height. Clip-space `z/w` is the window depth above;
+    /// entries are computed in f64 and rounded once.
+    pub fn perspective_rh(&self, fov_y: f32, aspect: f32) -> glam::Mat4 {
+        let (n, f) = (f64::from(self.near), f64::from(self.far));
+        let fy = 1.0 / (f64::from(fov_y) / 2.0).tan();
+        let fx = fy / f64::from(aspect);
+        // clip.z = c·(−vz) + e and clip.w = vz give z/w = the window depth of the module docs.
+        let (c, e) = match (self.convention, self.is_infinite()) {
+            (DepthConvention::Standard, false) => (f / (n - f), n * f / (n - f)),
+            (DepthConvention::Standard, true) => (-1.0, -n),
+            (DepthConvention::Reversed, false) => (n / (f - n), n * f / (f - n)),
+            (DepthConvention::Reversed, true) => (0.0, n),
+        };
+        glam::Mat4::from_cols(
+            glam::Vec4::new(fx as f32, 0.0, 0.0, 0.0),
+            glam::Vec4::new(0.0, fy as f32, 0.0, 0.0),
+            glam::Vec4::new(0.0, 0.0, c as f32, -1.0),
+            glam::Vec4::new(0.0, 0.0, e as f32, 0.0),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_name_the_field() {
+        let s = DepthConvention::Standard;
+        assert_eq!(Projection::new(0.0, 1.0, s).unwrap_err().field, "near");
+        assert_eq!(Projection::new(-1.0, 1.0, s).unwrap_err().field, "near");
+        assert_eq!(Projection::new(f32::NAN, 1.0, s).unwrap_err().field, "near");
+        assert_eq!(Projection::new(1e-40, 1.0, s).unwrap_err().field, "near");
+        assert_eq!(
+            Projection::new(f32::INFINITY, f32::INFINITY, s)
+                .unwrap_err()
+                .field,
+            "near"
+        );
+        assert_eq!(Projection::new(1.0, 1.0, s).unwrap_err().field, "far");
+        assert_eq!(Projection::new(1.0, 0.5, s).unwrap_err().field, "far");
+        assert_eq!(Projection::new(1.0, f32::NAN, s).unwrap_err().field, "far");
+        let e = Projection::new(1.0, 0.5, s).unwrap_err().to_string();
+        assert!(e.contains("`far`") && e.contains("0.5"), "{e}");
+        assert!(Projection::new(0.1, f32::INFINITY, s).is_ok());
+    }
+
+    #[test]
+    fn matrices_agree_with_the_depth_maps() {
+        for conv in [DepthConvention::Standard, DepthConvention::Reversed] {
+            for far in [100.0f32, f32::INFINITY] {
+                let p = Projection::new(0.5, far, conv).unwrap();
+                let m = p.perspective_rh(1.0, 1.5);
+                for vz in [0.5f32, 1.0, 7.0, 99.0] {
+                    let clip = m * glam::Vec4::new(0.0, 0.0, -vz, 1.0);
+                    let z = clip.z / clip.w;
+                    let want = p.depth_from_view_z(f64::from(vz));
+                    // glam builds the matrix in f32: a few f32 ULPs of slack on values ≤ 1.
+                    assert!(
+                        (f64::from(z) - want).abs() < 1e-6,
+                        "{conv:?} {far} {vz}: {z} vs {want}"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,199 @@
+//! Linear-depth sweeps over the stiff grid: every 24-bit code, and 2^24 float depths spread in
+//! ULP space, measured against the exact f64 references of [`crate::linear_depth::exact`].
+
+use crate::depth::DEPTH24_MAX;
+use crate::harness::{Arg, Gpu, HarnessError};
+use crate::precision::metrics::{ErrorStats, ulp_distance, ulp_error};
+use crate::projection::{DepthConvention, Projection};
+
+/// Near planes of the stiff grid.
+pub const NEARS: [f32; 5] = [1e-4, 1e-2, 0.1, 1.0, 10.0];
+/// Far/near ratios of the stiff grid (`∞` = infinite projection).
+pub const FAR_RATIOS: [f64; 5] = [10.0, 1e3, 1e6, 1e9, f64::INFINITY];
+
+/// One cell of the stiff grid: `far = near · ratio` rounded to f32 (or `+∞`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StiffCase {
+    /// Near plane.
+    pub near: f32,
+    /// Far plane (f32 as the shader sees it).
+    pub far: f32,
+    /// The nominal far/near ratio.
+    pub ratio: f64,
+}
+
+impl StiffCase {
+    /// The case's projection in `convention`.
+    pub fn projection(&self, convention: DepthConvention) -> Projection {
+        Projection::new(self.near, self.far, convention).expect("stiff grid cases are valid")
+    }
+}
+
+/// All 25 cells: every near × every ratio.
+pub fn stiff_grid() -> Vec<StiffCase> {
+    NEARS
+        .iter()
+        .flat_map(|&near| {
+            FAR_RATIOS.iter().map(move |&ratio| StiffCase {
+                near,
+                far: (f64::from(near) * ratio) as f32,
+                ratio,
+            })
+        })
+        .collect()
+}
+
+/// Error of one linear-depth function over one sweep.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct LinearStats {
+    /// Error in f32 ULPs of the exact distance. Where the exact distance is beyond f32's range,
+    /// `+∞` is the correct answer (error 0) and anything else counts as an infinite error.
+    pub ulps: ErrorStats,
+    /// Neighbouring inputs whose distances go the wrong way (must be 0: depth is monotonic).
+    pub non_monotonic: u64,
+    /// Largest ULP distance between the adapter and the Rust twin (`u64::MAX` for NaN vs number).
+    pub twin_max_ulps: u64,
+    /// How many results differ from the Rust twin in any bit.
+    pub twin_differ: u64,
+}
+
+/// Error of `got` against `exact` in ULPs, with `+∞` the right answer past `f32::MAX`.
+pub fn distance_error(got: f32, exact: f64) -> f64 {
+    if (exact as f32).is_infinite() {
+        return if got == exact as f32 {
+            0.0
+        } else {
+            f64::INFINITY
+        };
+    }
+    ulp_error(got, exact)
+}
+
+fn measure(
+    got: &[f32],
+    exact: impl Fn(usize) -> f64,
+    twin: Option<&dyn Fn(usize) -> f32>,
+    increasing: bool,
+) -> LinearStats {
+    let mut s = LinearStats::default();
+    for (i, &g) in got.iter().enumerate() {
+        s.ulps.add(i as u64, distance_error(g, exact(i)));
+        if i > 0 {
+            let (a, b) = (got[i - 1], g);
+            let wrong = if increasing { a > b } else { a < b };
+            if wrong {
+                s.non_monotonic += 1;
+            }
+        }
+        if let Some(t) = twin {
+            let t = t(i);
+            if t.to_bits() != g.to_bits() {
+                s.twin_differ += 1;
+                s.twin_max_ulps = s.twin_max_ulps.max(ulp_distance(t, g).unwrap_or(u64::MAX));
+            }
+        }
+    }
+    s
+}
+
+/// Run `function(d: u32, extra…) -> f32` over every 24-bit code (standard convention) for
+/// `case`, against the exact distance; `twin` (optional) is the Rust twin for the same code.
+pub fn codes_sweep(
+    gpu: &Gpu,
+    source: &str,
+    function: &str,
+    extra: &[Arg<'_>],
+    case: StiffCase,
+    twin: Option<&dyn Fn(u32) -> f32>,
+) -> Result<(LinearStats, Vec<f32>), HarnessError> {
+    let mut args = vec![Arg::Index { start: 0 }];
+    args.extend_from_slice(extra);
+    let out = gpu
+        .kernel(source, function)?
+        .run(&args, u64::from(DEPTH24_MAX) + 1)?;
+    let got = out.as_f32().to_vec();
+    let exact =
+        |i: usize| crate::linear_depth::exact::view_z_from_depth24(i as u32, case.near, case.far);
+    let twin_i = twin.map(|t| move |i: usize| t(i as u32));
+    let stats = measure(
+        &got,
+        exact,
+        twin_i.as_ref().map(|t| t as &dyn Fn(usize) -> f32),
+        true,
+    );
+    Ok((stats, got))
+}
+
+/// `count` float depths spread evenly in ULP space over `(0, 1]` (from the smallest subnormal to
+/// 1.0), with the 64 floats next to 0 and the 64 next to 1 always included.
+pub fn float_depths(count: usize) -> Vec<f32> {
+    let top = 1.0f32.to_bits() as u64; // ordinal of 1.0; ordinal 1 = smallest subnormal
+    let mut v: Vec<u64> = (0..count as u64)
+        .map(|i| 1 + i * (top - 1) / (count as u64 - 1))
+        .collect();
+    v.extend(1..=64);
+    v.extend(top - 63..=top);
+    v.sort_unstable();
+    v.dedup();
+    v.into_iter().map(|o| f32::from_bits(o as u32)).collect()
+}
+
+/// Run `function(z: f32, extra…) -> f32` over `depths` (sorted ascending) for `case` in
+/// `convention`, against the exact distance; `twin` (optional) is the Rust twin.
+pub fn float_sweep(
+    gpu: &Gpu,
+    source: &str,
+    function: &str,
+    depths: &[f32],
+    extra: &[Arg<'_>],
+    case: StiffCase,
+    convention: DepthConvention,
+    twin: Option<&dyn Fn(f32) -> f32>,
+) -> Result<(LinearStats, Vec<f32>), HarnessError> {
+    let mut args = vec![Arg::column(depths)];
+    args.extend_from_slice(extra);
+    let out = gpu
+        .kernel(source, function)?
+        .run(&args, depths.len() as u64)?;
+    let got = out.as_f32().to_vec();
+    let exact = |i: usize| match convention {
+        DepthConvention::Standard => {
+            crate::linear_depth::exact::view_z_from_depth(depths[i], case.near, case.far)
+        }
+        DepthConvention::Reversed => {
+            crate::linear_depth::exact::view_z_from_reversed_depth(depths[i], case.near, case.far)
+        }
+    };
+    let twin_i = twin.map(|t| move |i: usize| t(depths[i]));
+    let stats = measure(
+        &got,
+        exact,
+        twin_i.as_ref().map(|t| t as &dyn Fn(usize) -> f32),
+        convention == DepthConvention::Standard,
+    );
+    Ok((stats, got))
+}
+
+/// Constants `(a, b)` of the talk's textbook inverse `vz = 1/(z·a + b)` for `case` in
+/// `convention`, in f64 rounded once (the baseline's most favourable setting). Standard:
+/// `a = 1/f − 1/n`, `b = 1/n`; reversed: `a = 1/n − 1/f`, `b = 1/f`.
+pub fn textbook_consts(case: StiffCase, convention: DepthConvention) -> [f32; 2] {
+    let (n, f) = (f64::from(case.near), f64::from(case.far));
+    match convention {
+        DepthConvention::Standard => [(1.0 / f - 1.0 / n) as f32, (1.0 / n) as f32],
+        DepthConvention::Reversed => [(1.0 / n - 1.0 / f) as f32, (1.0 / f) as f32],
+    }
+}
+
+/// Constants `(A, B)` of the `vz = B/(z − A)` form, f64 rounded once. Standard:
+/// `A = f/(f − n)`, `B = −f·n/(f − n)` (`A = 1`, `B = −n` when infinite); reversed:
+/// `A = −n/(f − n)`, `B = f·n/(f − n)`.
+pub fn b_over_d_minus_a_consts(case: StiffCase, convention: DepthConvention) -> [f32; 2] {
+    let (n, f) = (f64::from(case.near), f64::from(case.far));
+    match (convention, f.is_infinite()) {
+        (DepthConvention::Standard, true) => [1.0, -n as f32],
+        (DepthConvention::Standard, false) => [(f / (f - n)) as f32, (-f * n / (f - n)) as f32],
+        (DepthConvention::Reversed, true) => [0.0, n as f32],
+        (DepthConvention::Reversed, false) => [(-n / (f - n)) as f32, (f * n / (f - n)) as f32],
+    }
+}
