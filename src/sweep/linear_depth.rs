@@ -138,22 +138,30 @@ pub fn float_depths(count: usize) -> Vec<f32> {
     v.into_iter().map(|o| f32::from_bits(o as u32)).collect()
 }
 
-/// Run `function(z: f32, extra…) -> f32` over `depths` (sorted ascending) for `case` in
+/// A WGSL function to sweep and the arguments that follow the depth.
+#[derive(Clone, Copy, Debug)]
+pub struct Call<'a> {
+    /// WGSL source defining the function.
+    pub source: &'a str,
+    /// The function's name.
+    pub function: &'a str,
+    /// Arguments after the depth (near/far splats, or a constants vector).
+    pub extra: &'a [Arg<'a>],
+}
+
+/// Run `call.function(z: f32, extra…) -> f32` over `depths` (sorted ascending) for `case` in
 /// `convention`, against the exact distance; `twin` (optional) is the Rust twin.
 pub fn float_sweep(
     gpu: &Gpu,
-    source: &str,
-    function: &str,
+    call: Call<'_>,
     depths: &[f32],
-    extra: &[Arg<'_>],
-    case: StiffCase,
-    convention: DepthConvention,
+    (case, convention): (StiffCase, DepthConvention),
     twin: Option<&dyn Fn(f32) -> f32>,
 ) -> Result<(LinearStats, Vec<f32>), HarnessError> {
     let mut args = vec![Arg::column(depths)];
-    args.extend_from_slice(extra);
+    args.extend_from_slice(call.extra);
     let out = gpu
-        .kernel(source, function)?
+        .kernel(call.source, call.function)?
         .run(&args, depths.len() as u64)?;
     let got = out.as_f32().to_vec();
     let exact = |i: usize| match convention {

@@ -1,0 +1,402 @@
+//! `wgsl/position.wgsl` on the adapter: position rebuild error over the whole screen and fov
+//! 1°…179°, world-space error against camera distance, the right-handed spelling, and the
+//! full-screen triangle's corner rays interpolated by the real rasteriser.
+
+mod common;
+
+use common::gpu;
+use glam::{Mat3, Vec2, Vec3};
+use prepass::harness::Arg;
+use prepass::linear_depth::exact;
+use prepass::position as pos;
+use prepass::precision::metrics::relative_error;
+use prepass::wgsl::{LINEAR_DEPTH, POSITION};
+
+const U: f64 = 1.0 / 16_777_216.0; // 2^-24: relative error of one correctly rounded operation
+
+fn gamma(n: f64) -> f64 {
+    n * U / (1.0 - n * U)
+}
+
+fn rebuild_source() -> String {
+    format!(
+        "{LINEAR_DEPTH}\n{POSITION}\n\
+         fn rebuild(ndc: vec2<f32>, tan_half_fov: vec2<f32>, d: u32, nf: vec2<f32>) -> vec3<f32> {{\n\
+             return view_position(frustum_ray(ndc, tan_half_fov), view_z_from_depth24(d, nf.x, nf.y));\n\
+         }}\n\
+         fn rebuild_rh(ndc: vec2<f32>, tan_half_fov: vec2<f32>, d: u32, nf: vec2<f32>) -> vec3<f32> {{\n\
+             return view_position(frustum_ray_rh(ndc, tan_half_fov), view_z_from_depth24(d, nf.x, nf.y));\n\
+         }}\n\
+         fn vz_only(d: u32, nf: vec2<f32>) -> f32 {{ return view_z_from_depth24(d, nf.x, nf.y); }}\n"
+    )
+}
+
+#[test]
+fn view_position_within_view_z_error_plus_two_roundings_over_screen_and_fov() {
+    let src = rebuild_source();
+    let (near, far) = (0.1f32, 1.0e5f32);
+    let side = 256usize;
+    let mut worst = 0.0f64;
+    for fov_deg in [1.0f64, 5.0, 30.0, 60.0, 90.0, 120.0, 150.0, 179.0] {
+        let ty = (fov_deg.to_radians() / 2.0).tan() as f32;
+        let tan = [ty * 16.0 / 9.0, ty];
+        let mut ndc = Vec::with_capacity(side * side);
+        let mut codes = Vec::with_capacity(side * side);
+        for j in 0..side {
+            for i in 0..side {
+                let x = (i as f32 + 0.5) / side as f32 * 2.0 - 1.0;
+                let y = 1.0 - (j as f32 + 0.5) / side as f32 * 2.0;
+                ndc.push([x, y]);
+                // Every pixel a different depth code, spread over the whole range.
+                codes.push(((i * side + j) as u32).wrapping_mul(0x9e37_79b9) >> 8);
+            }
+        }
+        let n = ndc.len() as u64;
+        let args = [
+            Arg::column(&ndc),
+            Arg::splat_vec(&tan),
+            Arg::column(&codes),
+            Arg::splat_vec(&[near, far]),
+        ];
+        let g = gpu();
+        let p = g.kernel(&src, "rebuild").unwrap().run(&args, n).unwrap();
+        let p_rh = g.kernel(&src, "rebuild_rh").unwrap().run(&args, n).unwrap();
+        let vz = g
+            .kernel(&src, "vz_only")
+            .unwrap()
+            .run(&[Arg::column(&codes), Arg::splat_vec(&[near, far])], n)
+            .unwrap();
+        for k in 0..ndc.len() {
+            let vz_exact = exact::view_z_from_depth24(codes[k], near, far);
+            let e_vz = relative_error(f64::from(vz.as_f32()[k]), vz_exact);
+            let exact_p = [
+                f64::from(ndc[k][0]) * f64::from(tan[0]) * vz_exact,
+                f64::from(ndc[k][1]) * f64::from(tan[1]) * vz_exact,
+                vz_exact,
+            ];
+            // Bound: x and y pass two correctly rounded products (ndc·tan, then ·vz), each
+            // ≤ 2^-24 relative, on top of vz's own error; second-order terms ≤ 2^-44.
+            // z is 1·vz (exact): vz's error alone. In ULPs, 2·2^-24 relative is ≤ 2 ULP.
+            for (c, exact_c) in exact_p.iter().enumerate() {
+                let got = p.as_vec3()[k][c];
+                let e = relative_error(f64::from(got), *exact_c);
+                let bound = e_vz + if c < 2 { 2.0 * U + 2f64.powi(-44) } else { 0.0 };
+                assert!(
+                    e <= bound,
+                    "fov {fov_deg}°, pixel {k}, component {c}: rel err {e:e} > {bound:e}"
+                );
+                worst = worst.max(e - e_vz);
+                // Right-handed: the same x, y; z = −vz exactly.
+                let rh = p_rh.as_vec3()[k][c];
+                let want_rh = if c == 2 { -got } else { got };
+                assert_eq!(rh.to_bits(), want_rh.to_bits(), "rh component {c}");
+            }
+            // The Rust twins give the same bits (pure products: nothing to fuse).
+            let twin = pos::view_position(
+                pos::frustum_ray(Vec2::from(ndc[k]), Vec2::from(tan)),
+                prepass::linear_depth::view_z_from_depth24(codes[k], near, far),
+            );
+            assert_eq!(twin.to_array(), p.as_vec3()[k], "twin, pixel {k}");
+        }
+    }
+    eprintln!(
+        "position rebuild: worst error beyond view z's own = {:.3} × 2^-24 relative",
+        worst / U
+    );
+}
+
+fn camera_rotation() -> Mat3 {
+    // An arbitrary yaw/pitch/roll so that every world component mixes all three ray components.
+    Mat3::from_euler(glam::EulerRot::YXZ, 0.7, -0.4, 0.25)
+}
+
+/// World-space and camera-relative rebuild: absolute error against camera distance.
+#[test]
+fn world_rebuild_error_grows_with_camera_distance_and_camera_relative_does_not() {
+    let src = format!(
+        "{POSITION}\n\
+         fn world_rebuild(ray: vec3<f32>, vz: f32, cam: vec3<f32>, c0: vec3<f32>, c1: vec3<f32>, c2: vec3<f32>) -> vec3<f32> {{\n\
+             return world_position(world_ray(ray, mat3x3<f32>(c0, c1, c2)), vz, cam);\n\
+         }}\n\
+         fn relative_rebuild(ray: vec3<f32>, vz: f32, c0: vec3<f32>, c1: vec3<f32>, c2: vec3<f32>) -> vec3<f32> {{\n\
+             return camera_relative_position(world_ray(ray, mat3x3<f32>(c0, c1, c2)), vz);\n\
+         }}\n"
+    );
+    let m = camera_rotation();
+    let cols = [m.x_axis, m.y_axis, m.z_axis].map(|c| c.to_array());
+    let dir = Vec3::new(0.6, 0.3, -0.742).normalize();
+    let side = 64usize;
+    let mut rays = Vec::new();
+    let mut vzs = Vec::new();
+    for j in 0..side {
+        for i in 0..side {
+            let ndc = Vec2::new(
+                (i as f32 + 0.5) / side as f32 * 2.0 - 1.0,
+                1.0 - (j as f32 + 0.5) / side as f32 * 2.0,
+            );
+            rays.push(pos::frustum_ray_rh(ndc, Vec2::new(1.0, 0.75)).to_array());
+            vzs.push(10f32.powf(-1.0 + 4.0 * ((i * side + j) as f32 / (side * side) as f32)));
+        }
+    }
+    let n = rays.len() as u64;
+    eprintln!(
+        "| camera distance | world max abs error | camera-relative max abs error | camera-relative max error / |offset| |"
+    );
+    for exp10 in 0..=7 {
+        let dist = 10f32.powi(exp10);
+        let cam = (dir * dist).to_array();
+        let g = gpu();
+        let world = g
+            .kernel(&src, "world_rebuild")
+            .unwrap()
+            .run(
+                &[
+                    Arg::column(&rays),
+                    Arg::column(&vzs),
+                    Arg::splat_vec(&cam),
+                    Arg::splat_vec(&cols[0]),
+                    Arg::splat_vec(&cols[1]),
+                    Arg::splat_vec(&cols[2]),
+                ],
+                n,
+            )
+            .unwrap();
+        let rel = g
+            .kernel(&src, "relative_rebuild")
+            .unwrap()
+            .run(
+                &[
+                    Arg::column(&rays),
+                    Arg::column(&vzs),
+                    Arg::splat_vec(&cols[0]),
+                    Arg::splat_vec(&cols[1]),
+                    Arg::splat_vec(&cols[2]),
+                ],
+                n,
+            )
+            .unwrap();
+        let (mut world_max, mut rel_max, mut rel_scaled) = (0.0f64, 0.0f64, 0.0f64);
+        for k in 0..rays.len() {
+            let r = rays[k].map(f64::from);
+            let vz = f64::from(vzs[k]);
+            let mut len2 = 0.0;
+            for c in 0..3 {
+                let row = [cols[0][c], cols[1][c], cols[2][c]].map(f64::from);
+                let offset = (row[0] * r[0] + row[1] * r[1] + row[2] * r[2]) * vz;
+                len2 += offset * offset;
+                // Σ|m_ij·r_j|·vz: the scale of the matrix-vector product's rounding.
+                let b = (row[0] * r[0]).abs() + (row[1] * r[1]).abs() + (row[2] * r[2]).abs();
+                let b = b * vz;
+                let exact_w = f64::from(cam[c]) + offset;
+                // Bounds: the 3-term dot product (3 products, 2 sums, fused or not) is within
+                // γ3·Σ|m r|; times vz adds one rounding (γ4 overall); the camera addition one
+                // more rounding of the result (≤ 2^-24·|result|), its input error carried (γ5).
+                let rel_bound = gamma(4.0) * b;
+                let world_bound = gamma(5.0) * b + U * (exact_w.abs() + gamma(5.0) * b);
+                let ew = (f64::from(world.as_vec3()[k][c]) - exact_w).abs();
+                let er = (f64::from(rel.as_vec3()[k][c]) - offset).abs();
+                assert!(
+                    ew <= world_bound,
+                    "world, cam {dist}, pixel {k}, c {c}: {ew:e} > {world_bound:e}"
+                );
+                assert!(
+                    er <= rel_bound,
+                    "relative, cam {dist}, pixel {k}, c {c}: {er:e} > {rel_bound:e}"
+                );
+                world_max = world_max.max(ew);
+                rel_max = rel_max.max(er);
+            }
+            let len = len2.sqrt();
+            for c in 0..3 {
+                let row = [cols[0][c], cols[1][c], cols[2][c]].map(f64::from);
+                let offset = (row[0] * r[0] + row[1] * r[1] + row[2] * r[2]) * vz;
+                let er = (f64::from(rel.as_vec3()[k][c]) - offset).abs();
+                rel_scaled = rel_scaled.max(er / len);
+            }
+        }
+        eprintln!("| {dist:e} m | {world_max:.3e} m | {rel_max:.3e} m | {rel_scaled:.3e} |");
+    }
+}
+
+#[test]
+fn fullscreen_triangle_and_uv_helpers_match_their_twins() {
+    let g = gpu();
+    let out = g
+        .kernel(POSITION, "fullscreen_triangle_ndc")
+        .unwrap()
+        .run(&[Arg::Index { start: 0 }], 8)
+        .unwrap();
+    for (i, v) in out.as_vec2().iter().enumerate() {
+        assert_eq!(
+            *v,
+            pos::fullscreen_triangle_ndc(i as u32).to_array(),
+            "vertex {i}"
+        );
+    }
+    let tan = [0.9f32, 0.55];
+    for (f, twin) in [
+        (
+            "fullscreen_triangle_ray",
+            pos::fullscreen_triangle_ray as fn(u32, Vec2) -> Vec3,
+        ),
+        (
+            "fullscreen_triangle_ray_rh",
+            pos::fullscreen_triangle_ray_rh,
+        ),
+    ] {
+        let out = g
+            .kernel(POSITION, f)
+            .unwrap()
+            .run(&[Arg::Index { start: 0 }, Arg::splat_vec(&tan)], 3)
+            .unwrap();
+        for (i, v) in out.as_vec3().iter().enumerate() {
+            assert_eq!(
+                *v,
+                twin(i as u32, Vec2::from(tan)).to_array(),
+                "{f} vertex {i}"
+            );
+        }
+    }
+    let uv: Vec<[f32; 2]> = (0..4096)
+        .map(|k| [(k % 64) as f32 / 63.0, (k / 64) as f32 / 63.0])
+        .collect();
+    let out = g
+        .kernel(POSITION, "ndc_from_uv")
+        .unwrap()
+        .run(&[Arg::column(&uv)], uv.len() as u64)
+        .unwrap();
+    for (k, v) in out.as_vec2().iter().enumerate() {
+        // 2u is exact, so 2u − 1 has one rounding fused or not: bit-identical.
+        assert_eq!(*v, pos::ndc_from_uv(Vec2::from(uv[k])).to_array());
+    }
+}
+
+/// The vertex part through the real rasteriser: a full-screen triangle whose vertex stage emits
+/// `fullscreen_triangle_ray`, interpolated by the hardware (or lavapipe) to every pixel.
+#[test]
+fn rasteriser_interpolates_corner_rays_to_each_pixels_ray() {
+    let g = gpu();
+    let (w, h) = (64u32, 48u32);
+    let tan = Vec2::new(1.2, 0.9);
+    let shader = format!(
+        "{POSITION}\n\
+         struct VsOut {{ @builtin(position) clip: vec4<f32>, @location(0) ray: vec3<f32> }};\n\
+         @vertex fn vs(@builtin(vertex_index) i: u32) -> VsOut {{\n\
+             return VsOut(vec4<f32>(fullscreen_triangle_ndc(i), 0.0, 1.0), fullscreen_triangle_ray(i, vec2<f32>({}, {})));\n\
+         }}\n\
+         @fragment fn fs(v: VsOut) -> @location(0) vec4<f32> {{ return vec4<f32>(v.ray, 1.0); }}\n",
+        tan.x, tan.y
+    );
+    prepass::wgsl::parse_and_validate(&shader).unwrap();
+    let device = g.device();
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: None,
+        source: wgpu::ShaderSource::Wgsl(shader.into()),
+    });
+    let format = wgpu::TextureFormat::Rgba32Float;
+    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: None,
+        layout: None,
+        vertex: wgpu::VertexState {
+            module: &module,
+            entry_point: Some("vs"),
+            compilation_options: Default::default(),
+            buffers: &[],
+        },
+        fragment: Some(wgpu::FragmentState {
+            module: &module,
+            entry_point: Some("fs"),
+            compilation_options: Default::default(),
+            targets: &[Some(format.into())],
+        }),
+        primitive: Default::default(),
+        depth_stencil: None,
+        multisample: Default::default(),
+        multiview_mask: None,
+        cache: None,
+    });
+    let target = device.create_texture(&wgpu::TextureDescriptor {
+        label: None,
+        size: wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        },
+        mip_level_count: 1,
+        sample_count: 1,
+        dimension: wgpu::TextureDimension::D2,
+        format,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+        view_formats: &[],
+    });
+    let bytes_per_row = w * 16; // 64 px × 16 B = 1024, a multiple of 256
+    let readback = device.create_buffer(&wgpu::BufferDescriptor {
+        label: None,
+        size: u64::from(bytes_per_row * h),
+        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
+        mapped_at_creation: false,
+    });
+    let view = target.create_view(&Default::default());
+    let mut enc = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: None,
+            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+                view: &view,
+                depth_slice: None,
+                resolve_target: None,
+                ops: wgpu::Operations {
+                    load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
+                    store: wgpu::StoreOp::Store,
+                },
+            })],
+            ..Default::default()
+        });
+        pass.set_pipeline(&pipeline);
+        pass.draw(0..3, 0..1);
+    }
+    enc.copy_texture_to_buffer(
+        target.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &readback,
+            layout: wgpu::TexelCopyBufferLayout {
+                offset: 0,
+                bytes_per_row: Some(bytes_per_row),
+                rows_per_image: None,
+            },
+        },
+        wgpu::Extent3d {
+            width: w,
+            height: h,
+            depth_or_array_layers: 1,
+        },
+    );
+    g.queue().submit([enc.finish()]);
+    let slice = readback.slice(..);
+    slice.map_async(wgpu::MapMode::Read, |r| r.expect("map"));
+    device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+    let data: Vec<f32> = bytemuck::cast_slice(&slice.get_mapped_range().unwrap()).to_vec();
+    // Requirement: the interpolated ray must pick out its own pixel — within 1/16 of the ray
+    // step between neighbouring pixels (2·tan/width) — and z must stay exactly 1. Vulkan leaves
+    // interpolation precision to the implementation, so this is a functional bound, not a ULP one.
+    let step = (2.0 * tan.x / w as f32).min(2.0 * tan.y / h as f32);
+    let mut worst = 0.0f32;
+    for y in 0..h {
+        for x in 0..w {
+            let k = ((y * w + x) * 4) as usize;
+            let got = Vec3::new(data[k], data[k + 1], data[k + 2]);
+            let ndc = Vec2::new(
+                (x as f32 + 0.5) / w as f32 * 2.0 - 1.0,
+                1.0 - (y as f32 + 0.5) / h as f32 * 2.0,
+            );
+            let want = pos::frustum_ray(ndc, tan);
+            let err = (got - want).abs().max_element();
+            worst = worst.max(err);
+            assert!(err <= step / 16.0, "pixel ({x}, {y}): {got} vs {want}");
+        }
+    }
+    eprintln!(
+        "rasterised corner rays: worst error {worst:e} = {:.2e} of a pixel step",
+        worst / step
+    );
+}

@@ -1,0 +1,123 @@
+//! `Projection` properties (proptest): validation never panics and names the field; view
+//! distance is monotonic in the code; forward (distance → code) then back lands within one
+//! code's width; and on the adapter, random projections agree with the twins within 1 ULP.
+
+mod common;
+
+use common::gpu;
+use prepass::depth::{DEPTH24_MAX, hyperbolic_depth_from_depth24};
+use prepass::harness::Arg;
+use prepass::linear_depth::{self as ld, exact};
+use prepass::precision::metrics::{ulp_distance, ulp_error};
+use prepass::projection::{DepthConvention, Projection};
+use proptest::prelude::*;
+
+/// Stiff projections: near log-uniform in [1e-4, 10], far/near log-uniform in [10, 1e9] or ∞.
+fn stiff() -> impl Strategy<Value = (f32, f32)> {
+    (-4.0f64..1.0, 1.0f64..9.0, any::<bool>()).prop_map(|(ln, lr, inf)| {
+        let near = 10f64.powf(ln) as f32;
+        let far = if inf {
+            f32::INFINITY
+        } else {
+            (f64::from(near) * 10f64.powf(lr)) as f32
+        };
+        (near, far)
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
+
+    #[test]
+    fn validation_never_panics_and_names_the_field(n in any::<u32>(), f in any::<u32>()) {
+        let (near, far) = (f32::from_bits(n), f32::from_bits(f));
+        match Projection::new(near, far, DepthConvention::Standard) {
+            Ok(p) => {
+                prop_assert!(near >= f32::MIN_POSITIVE && near.is_finite() && far > near);
+                prop_assert_eq!((p.near(), p.far()), (near, far));
+            }
+            Err(e) => {
+                let near_ok = near >= f32::MIN_POSITIVE && near.is_finite();
+                prop_assert_eq!(e.field, if near_ok { "far" } else { "near" });
+                prop_assert!(e.to_string().contains(e.field));
+            }
+        }
+    }
+
+    #[test]
+    fn view_z_is_monotonic_in_the_code((near, far) in stiff(), d in 0u32..DEPTH24_MAX) {
+        prop_assert!(ld::view_z_from_depth24(d, near, far) <= ld::view_z_from_depth24(d + 1, near, far));
+    }
+
+    #[test]
+    fn forward_then_back_is_within_one_code((near, far) in stiff(), t in 0.0f64..1.0, reversed in any::<bool>()) {
+        let conv = if reversed { DepthConvention::Reversed } else { DepthConvention::Standard };
+        let p = Projection::new(near, far, conv).unwrap();
+        // A distance log-uniform between near and min(far, 1e30).
+        let top = f64::from(far).min(1e30);
+        let vz = f64::from(near) * (top / f64::from(near)).powf(t);
+        let code = p.depth24_from_view_z(vz);
+        let back = |c: u32| -> f64 {
+            match conv {
+                DepthConvention::Standard => f64::from(ld::view_z_from_depth24(c, near, far)),
+                DepthConvention::Reversed => f64::from(ld::view_z_from_reversed_depth(
+                    hyperbolic_depth_from_depth24(c), near, far)),
+            }
+        };
+        let exact_of = |c: u32| -> f64 {
+            match conv {
+                DepthConvention::Standard => exact::view_z_from_depth24(c, near, far),
+                DepthConvention::Reversed => exact::view_z_from_reversed_depth(
+                    hyperbolic_depth_from_depth24(c), near, far),
+            }
+        };
+        let got = back(code);
+        if got.is_infinite() {
+            // The far code of an infinite projection reads back as +inf by design: then vz must
+            // lie beyond the last finite code's distance.
+            let (far_code, last) = match conv {
+                DepthConvention::Standard => (DEPTH24_MAX, DEPTH24_MAX - 1),
+                DepthConvention::Reversed => (0, 1),
+            };
+            prop_assert!(far.is_infinite() && code == far_code);
+            prop_assert!(vz >= exact_of(last), "vz {} read back as inf", vz);
+            return Ok(());
+        }
+        // One code's width: the larger gap to a neighbouring code's exact distance. vz lies within
+        // half a code of `code`, and the twin's result within 4 ULP (tests/linear_depth.rs) of
+        // `code`'s exact distance (≤ 4·2^-23 relative).
+        let lo = if code > 0 { exact_of(code - 1) } else { exact_of(code) };
+        let hi = if code < DEPTH24_MAX { exact_of(code + 1) } else { exact_of(code) };
+        let here = exact_of(code);
+        let width = (here - lo).abs().max((hi - here).abs());
+        let slack = 4.0 * 2f64.powi(-23) * got.abs();
+        prop_assert!((got - vz).abs() <= width + slack,
+            "vz {} → code {} → {} (width {})", vz, code, got, width);
+    }
+
+    #[test]
+    fn random_projections_agree_with_twins_on_the_adapter(
+        cases in proptest::collection::vec((stiff(), 0u32..=DEPTH24_MAX), 4096)
+    ) {
+        let near: Vec<f32> = cases.iter().map(|c| c.0.0).collect();
+        let far: Vec<f32> = cases.iter().map(|c| c.0.1).collect();
+        let code: Vec<u32> = cases.iter().map(|c| c.1).collect();
+        let out = gpu()
+            .kernel(prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth24")
+            .unwrap()
+            .run(&[Arg::column(&code), Arg::column(&near), Arg::column(&far)], code.len() as u64)
+            .unwrap();
+        for (k, &got) in out.as_f32().iter().enumerate() {
+            let twin = ld::view_z_from_depth24(code[k], near[k], far[k]);
+            // Within 1 ULP of the twin (the bound; only fusion could separate them)…
+            prop_assert!(ulp_distance(got, twin).unwrap() <= 1, "{} vs twin {}", got, twin);
+            // …and within 4 ULP of the exact distance, as over the grid.
+            let e = exact::view_z_from_depth24(code[k], near[k], far[k]);
+            if e.is_finite() {
+                prop_assert!(ulp_error(got, e) <= 4.0, "code {} near {} far {}: {}", code[k], near[k], far[k], ulp_error(got, e));
+            } else {
+                prop_assert_eq!(got, f32::INFINITY);
+            }
+        }
+    }
+}
