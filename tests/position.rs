@@ -124,6 +124,8 @@ fn world_rebuild_error_grows_with_camera_distance_and_camera_relative_does_not()
     );
     let m = camera_rotation();
     let cols = [m.x_axis, m.y_axis, m.z_axis].map(|c| c.to_array());
+    let rows: [[f64; 3]; 3] =
+        std::array::from_fn(|c| [cols[0][c], cols[1][c], cols[2][c]].map(f64::from));
     let dir = Vec3::new(0.6, 0.3, -0.742).normalize();
     let side = 64usize;
     let mut rays = Vec::new();
@@ -180,8 +182,7 @@ fn world_rebuild_error_grows_with_camera_distance_and_camera_relative_does_not()
             let r = rays[k].map(f64::from);
             let vz = f64::from(vzs[k]);
             let mut len2 = 0.0;
-            for c in 0..3 {
-                let row = [cols[0][c], cols[1][c], cols[2][c]].map(f64::from);
+            for (c, row) in rows.iter().enumerate() {
                 let offset = (row[0] * r[0] + row[1] * r[1] + row[2] * r[2]) * vz;
                 len2 += offset * offset;
                 // Σ|m_ij·r_j|·vz: the scale of the matrix-vector product's rounding.
@@ -207,8 +208,7 @@ fn world_rebuild_error_grows_with_camera_distance_and_camera_relative_does_not()
                 rel_max = rel_max.max(er);
             }
             let len = len2.sqrt();
-            for c in 0..3 {
-                let row = [cols[0][c], cols[1][c], cols[2][c]].map(f64::from);
+            for (c, row) in rows.iter().enumerate() {
                 let offset = (row[0] * r[0] + row[1] * r[1] + row[2] * r[2]) * vz;
                 let er = (f64::from(rel.as_vec3()[k][c]) - offset).abs();
                 rel_scaled = rel_scaled.max(er / len);
