@@ -11,6 +11,7 @@
 //! | [`linear_depth`] | `wgsl/linear_depth.wgsl` | view distance from depth, stable for any far/near |
 //! | [`projection`] | — | `Projection`: near/far/convention, per-pixel constants, exact forward maps |
 //! | [`position`] | `wgsl/position.wgsl` | frustum rays, view/world/camera-relative position rebuild |
+//! | [`scene`] | composed | scene declaration → minimal WGSL module + G-buffer layout |
 //! | [`precision`] | — | error metrics (ULP, relative, angular, mismatches) and test inputs |
 //! | [`wgsl`] | all | embedded sources; naga validation/translation (feature `validate`) |
 //! | `harness` | any | run any WGSL function on a wgpu adapter (feature `harness`) |
@@ -27,6 +28,7 @@ pub mod linear_depth;
 pub mod position;
 pub mod precision;
 pub mod projection;
+pub mod scene;
 #[cfg(feature = "harness")]
 pub mod sweep;
 pub mod wgsl;

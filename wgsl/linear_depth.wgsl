@@ -51,7 +51,8 @@ fn view_z_from_depth24(d: u32, near: f32, far: f32) -> f32 {
     return view_z_from_depth24_consts(d, vec2<f32>(near * 16777215.0, ld_near_over_far(near, far)));
 }
 
-// The same with per-projection constants k = (n·(2^24 - 1), n/f) (Projection::depth24_consts).
+// View distance of a 24-bit standard-convention depth code, from per-projection constants
+// k = (n·(2^24 - 1), n/f) (Projection::depth24_consts): fewer operations per pixel.
 fn view_z_from_depth24_consts(d: u32, k: vec2<f32>) -> f32 {
     let code = min(d, 0xffffffu);
     // Both terms are exact integers or products of them: no cancellation.
@@ -66,7 +67,8 @@ fn view_z_from_depth(z: f32, near: f32, far: f32) -> f32 {
     return view_z_from_depth_consts(z, vec3<f32>(near, r, 1.0 - r));
 }
 
-// The same with k = (n, n/f, (f - n)/f) (Projection::depth_consts).
+// View distance of a float standard-convention depth, from per-projection constants
+// k = (n, n/f, (f - n)/f) (Projection::depth_consts).
 // Below z = 0.5, 1 - z would round while z·(n/f) keeps growing, so the result could step
 // backwards by an ULP; there 1 - z·(1 - n/f) is used instead (no cancellation: z·(1 - n/f) < 0.5),
 // and every step is a monotonic rounding, so view distance never decreases as z grows.
@@ -86,7 +88,8 @@ fn view_z_from_reversed_depth(z: f32, near: f32, far: f32) -> f32 {
     return view_z_from_reversed_depth_consts(z, vec3<f32>(near, 1.0 - r, r));
 }
 
-// The same with k = (n, (f - n)/f, n/f) (Projection::reversed_depth_consts).
+// View distance of a float reversed-convention depth, from per-projection constants
+// k = (n, (f - n)/f, n/f) (Projection::reversed_depth_consts).
 fn view_z_from_reversed_depth_consts(z: f32, k: vec3<f32>) -> f32 {
     if (ld_is_nan(z)) {
         return ld_nan();

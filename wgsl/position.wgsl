@@ -12,7 +12,7 @@ fn frustum_ray(ndc_xy: vec2<f32>, tan_half_fov: vec2<f32>) -> vec3<f32> {
     return vec3<f32>(ndc_xy * tan_half_fov, 1.0);
 }
 
-// The same for right-handed view space (-z forward): z = -1.
+// View ray through ndc_xy for right-handed view space (-z forward): z = -1.
 fn frustum_ray_rh(ndc_xy: vec2<f32>, tan_half_fov: vec2<f32>) -> vec3<f32> {
     return vec3<f32>(ndc_xy * tan_half_fov, -1.0);
 }
@@ -34,7 +34,7 @@ fn fullscreen_triangle_ray(vertex_index: u32, tan_half_fov: vec2<f32>) -> vec3<f
     return frustum_ray(fullscreen_triangle_ndc(vertex_index), tan_half_fov);
 }
 
-// The right-handed spelling of fullscreen_triangle_ray.
+// The frustum ray at a full-screen triangle's vertex, right-handed (-z forward).
 fn fullscreen_triangle_ray_rh(vertex_index: u32, tan_half_fov: vec2<f32>) -> vec3<f32> {
     return frustum_ray_rh(fullscreen_triangle_ndc(vertex_index), tan_half_fov);
 }

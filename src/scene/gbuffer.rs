@@ -1,0 +1,96 @@
+//! The render targets a scene's choices imply, their bytes per pixel, and their memory at a
+//! resolution and MSAA count. Plain data: no wgpu needed (feature `harness` adds
+//! [`TargetFormat::to_wgpu`]).
+
+/// A render-target or depth format, with the WebGPU format it corresponds to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TargetFormat {
+    /// `rgba8unorm`: 4 × 8-bit unorm.
+    Rgba8Unorm,
+    /// `rgba8uint`: 4 bytes read back as integers (no conversion error).
+    Rgba8Uint,
+    /// `rg8unorm`: 2 × 8-bit unorm.
+    Rg8Unorm,
+    /// `r8unorm`: one byte.
+    R8Unorm,
+    /// `r32uint`: one 32-bit word.
+    R32Uint,
+    /// `rgba16float`: 4 × f16.
+    Rgba16Float,
+    /// `depth32float`.
+    Depth32Float,
+    /// `depth24plus-stencil8` (D24S8 on the consoles of the talks).
+    Depth24PlusStencil8,
+}
+
+impl TargetFormat {
+    /// Bytes per sample.
+    pub fn bytes(self) -> u64 {
+        match self {
+            Self::R8Unorm => 1,
+            Self::Rg8Unorm => 2,
+            Self::Rgba8Unorm
+            | Self::Rgba8Uint
+            | Self::R32Uint
+            | Self::Depth32Float
+            | Self::Depth24PlusStencil8 => 4,
+            Self::Rgba16Float => 8,
+        }
+    }
+
+    /// The WebGPU/wgpu format.
+    #[cfg(feature = "harness")]
+    pub fn to_wgpu(self) -> wgpu::TextureFormat {
+        use wgpu::TextureFormat as T;
+        match self {
+            Self::Rgba8Unorm => T::Rgba8Unorm,
+            Self::Rgba8Uint => T::Rgba8Uint,
+            Self::Rg8Unorm => T::Rg8Unorm,
+            Self::R8Unorm => T::R8Unorm,
+            Self::R32Uint => T::R32Uint,
+            Self::Rgba16Float => T::Rgba16Float,
+            Self::Depth32Float => T::Depth32Float,
+            Self::Depth24PlusStencil8 => T::Depth24PlusStencil8,
+        }
+    }
+}
+
+/// One render target and what its channels hold.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Target {
+    /// Its role, e.g. `"normal"`, `"depth"`.
+    pub name: &'static str,
+    /// Its format.
+    pub format: TargetFormat,
+    /// Channel by channel (or byte by byte) contents, e.g. `"rgb: normal xyz8, a: log roughness"`.
+    pub channels: String,
+}
+
+/// A G-buffer: its targets in order.
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
+pub struct GBufferLayout {
+    /// The targets.
+    pub targets: Vec<Target>,
+}
+
+impl GBufferLayout {
+    /// Bytes per pixel per sample, all targets together.
+    pub fn bytes_per_pixel(&self) -> u64 {
+        self.targets.iter().map(|t| t.format.bytes()).sum()
+    }
+
+    /// Memory at `width × height` with `samples` MSAA samples (every target multisampled).
+    pub fn memory_bytes(&self, width: u64, height: u64, samples: u64) -> u64 {
+        self.bytes_per_pixel() * width * height * samples
+    }
+}
+
+/// Bytes as decimal megabytes (10^6), the unit both talks' figures turn out to use.
+pub fn megabytes(bytes: u64) -> f64 {
+    bytes as f64 / 1e6
+}
+
+/// Bytes as binary mebibytes (2^20).
+pub fn mebibytes(bytes: u64) -> f64 {
+    bytes as f64 / 1_048_576.0
+}
