@@ -17,7 +17,8 @@ fn depth24_from_rgb8(rgb: vec3<f32>) -> u32 {
     return (b.x << 16u) | (b.y << 8u) | b.z;
 }
 
-// The same from a texel read as one u32 (rgba8uint view or storage buffer), by bit operations.
+// Recover a 24-bit code from a texel read as one u32 (rgba8uint view or storage buffer), by bit
+// operations: byte 0 is the most significant byte, byte 3 is ignored.
 fn depth24_from_packed(p: u32) -> u32 {
     return ((p & 0xffu) << 16u) | (p & 0xff00u) | ((p >> 16u) & 0xffu);
 }
