@@ -49,6 +49,9 @@ pub struct LinearStats {
     /// Error in f32 ULPs of the exact distance. Where the exact distance is beyond f32's range,
     /// `+∞` is the correct answer (error 0) and anything else counts as an infinite error.
     pub ulps: ErrorStats,
+    /// Relative error `|got − exact|/exact` (readable where the ULP error is huge; `+∞` for an
+    /// infinite or wrong-signed result where the exact distance is finite).
+    pub relative: ErrorStats,
     /// Neighbouring inputs whose distances go the wrong way (must be 0: depth is monotonic).
     pub non_monotonic: u64,
     /// Largest ULP distance between the adapter and the Rust twin (`u64::MAX` for NaN vs number).
@@ -77,7 +80,18 @@ fn measure(
 ) -> LinearStats {
     let mut s = LinearStats::default();
     for (i, &g) in got.iter().enumerate() {
-        s.ulps.add(i as u64, distance_error(g, exact(i)));
+        let e = exact(i);
+        s.ulps.add(i as u64, distance_error(g, e));
+        let rel = if (e as f32).is_infinite() {
+            if g == f32::INFINITY {
+                0.0
+            } else {
+                f64::INFINITY
+            }
+        } else {
+            crate::precision::metrics::relative_error(f64::from(g), e)
+        };
+        s.relative.add(i as u64, rel);
         if i > 0 {
             let (a, b) = (got[i - 1], g);
             let wrong = if increasing { a > b } else { a < b };
@@ -204,4 +218,126 @@ pub fn b_over_d_minus_a_consts(case: StiffCase, convention: DepthConvention) -> 
         (DepthConvention::Reversed, true) => [0.0, n as f32],
         (DepthConvention::Reversed, false) => [(-n / (f - n)) as f32, (f * n / (f - n)) as f32],
     }
+}
+
+/// Which stored depth a grid row reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DepthPath {
+    /// 24-bit standard-convention codes (every code).
+    Code24,
+    /// Float depth, standard convention.
+    FloatStandard,
+    /// Float depth, reversed convention.
+    FloatReversed,
+}
+
+impl DepthPath {
+    /// Short label for tables.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Code24 => "D24 code",
+            Self::FloatStandard => "float standard",
+            Self::FloatReversed => "float reversed",
+        }
+    }
+}
+
+/// One row of the README's error table: a depth path and stiff case, with the stable forms and
+/// the two baselines measured on the same inputs.
+#[derive(Clone, Copy, Debug)]
+pub struct GridRow {
+    /// Depth path.
+    pub path: DepthPath,
+    /// Stiff case.
+    pub case: StiffCase,
+    /// The shipped function taking near/far.
+    pub stable: LinearStats,
+    /// The shipped per-pixel-constants variant.
+    pub stable_consts: LinearStats,
+    /// The talk's textbook `1/(z·a + b)`.
+    pub textbook: LinearStats,
+    /// The `B/(z − A)` form.
+    pub b_over_z_minus_a: LinearStats,
+}
+
+/// Measure every path × case: the shipped forms against the baselines defined in
+/// `baselines_source` (`tests/baselines/linear_depth.wgsl`). Float paths use
+/// [`float_depths`]`(float_count)`. `each` is called after every row (for progress).
+pub fn grid_table(
+    gpu: &Gpu,
+    baselines_source: &str,
+    cases: &[StiffCase],
+    float_count: usize,
+    mut each: impl FnMut(&GridRow),
+) -> Result<Vec<GridRow>, HarnessError> {
+    let src = format!("{}\n{baselines_source}", crate::wgsl::LINEAR_DEPTH);
+    let depths = float_depths(float_count);
+    let mut rows = Vec::new();
+    for path in [
+        DepthPath::Code24,
+        DepthPath::FloatStandard,
+        DepthPath::FloatReversed,
+    ] {
+        for &case in cases {
+            let nf = [Arg::splat_f32(case.near), Arg::splat_f32(case.far)];
+            let conv = match path {
+                DepthPath::FloatReversed => DepthConvention::Reversed,
+                _ => DepthConvention::Standard,
+            };
+            let p = case.projection(conv);
+            let tb = [Arg::splat_vec(&textbook_consts(case, conv))];
+            let ba = [Arg::splat_vec(&b_over_d_minus_a_consts(case, conv))];
+            let run = |function: &str, extra: &[Arg<'_>]| -> Result<LinearStats, HarnessError> {
+                let call = Call {
+                    source: &src,
+                    function,
+                    extra,
+                };
+                Ok(match path {
+                    DepthPath::Code24 => {
+                        codes_sweep(gpu, call.source, function, extra, case, None)?.0
+                    }
+                    _ => float_sweep(gpu, call, &depths, (case, conv), None)?.0,
+                })
+            };
+            let row = match path {
+                DepthPath::Code24 => {
+                    let k = [Arg::splat_vec(&p.depth24_consts())];
+                    GridRow {
+                        path,
+                        case,
+                        stable: run("view_z_from_depth24", &nf)?,
+                        stable_consts: run("view_z_from_depth24_consts", &k)?,
+                        textbook: run("baseline_view_z_textbook24", &tb)?,
+                        b_over_z_minus_a: run("baseline_view_z_b_over_d_minus_a24", &ba)?,
+                    }
+                }
+                DepthPath::FloatStandard => {
+                    let k = [Arg::splat_vec(&p.depth_consts())];
+                    GridRow {
+                        path,
+                        case,
+                        stable: run("view_z_from_depth", &nf)?,
+                        stable_consts: run("view_z_from_depth_consts", &k)?,
+                        textbook: run("baseline_view_z_textbook", &tb)?,
+                        b_over_z_minus_a: run("baseline_view_z_b_over_d_minus_a", &ba)?,
+                    }
+                }
+                DepthPath::FloatReversed => {
+                    let k = [Arg::splat_vec(&p.reversed_depth_consts())];
+                    GridRow {
+                        path,
+                        case,
+                        stable: run("view_z_from_reversed_depth", &nf)?,
+                        stable_consts: run("view_z_from_reversed_depth_consts", &k)?,
+                        textbook: run("baseline_view_z_textbook", &tb)?,
+                        b_over_z_minus_a: run("baseline_view_z_b_over_d_minus_a", &ba)?,
+                    }
+                }
+            };
+            each(&row);
+            rows.push(row);
+        }
+    }
+    Ok(rows)
 }
