@@ -79,7 +79,7 @@ fn off_by_one_depth_is_found_and_shrunk_to_the_smallest_failing_code() {
         fail.shrunk.error,
         ulps(&fail.shrunk.got, &exact_depth(&smallest))
     );
-    assert!(fail.shrink_steps > 0 && fail.shrink_dispatches > 0);
+    assert!(fail.shrank && fail.shrink_steps > 0 && fail.shrink_dispatches > 0);
 }
 
 #[test]
@@ -119,7 +119,10 @@ fn unsaturated_pack_is_shrunk_to_a_minimal_out_of_range_code() {
     // Every d ≤ 2^24 − 1 packs correctly, so a failing input is ≥ 2^24; binary-search shrinking
     // stops where s fails and s − 1 passes, which (d − 1 passes iff its low 24 bits are all
     // ones) means s = k·2^24.
-    assert!(s >= 1 << 24 && s % (1 << 24) == 0, "shrunk to {s:#x}");
+    assert!(
+        s >= 1 << 24 && s.is_multiple_of(1 << 24),
+        "shrunk to {s:#x}"
+    );
     assert!(s <= fail.worst.input);
     let got: Vec<u32> = check.evaluate::<u32, u32, ()>(&[s - 1, s]).unwrap();
     assert_eq!(got[0], depth::pack_depth24(s - 1), "s − 1 passes");

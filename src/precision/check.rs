@@ -220,8 +220,11 @@ pub struct Failure<I, O, R> {
     pub stats: ErrorStats,
     /// The failing input with the largest error (NaN errors rank highest).
     pub worst: Evaluated<I, O, R>,
-    /// The simplest input the worst one shrank to that still fails.
+    /// The simplest input the worst one shrank to that still fails (the worst input itself
+    /// when no simpler candidate failed: see `shrank`).
     pub shrunk: Evaluated<I, O, R>,
+    /// Whether shrinking found a simpler failing input than the worst one.
+    pub shrank: bool,
     /// Shrinking decisions followed.
     pub shrink_steps: u32,
     /// Whether shrinking stopped at `max_shrink_steps` rather than at a local minimum.
@@ -265,7 +268,14 @@ impl<I: Debug, O: Debug, R: Debug> fmt::Display for Failure<I, O, R> {
             self.stats.nan_count
         )?;
         show(f, "worst ", &self.worst)?;
-        show(f, "shrunk", &self.shrunk)?;
+        if self.shrank {
+            show(f, "shrunk", &self.shrunk)?;
+        } else {
+            writeln!(
+                f,
+                "  shrunk: no simpler candidate fails; the worst input is the smallest found"
+            )?;
+        }
         write!(
             f,
             "  shrinking: {} steps{} in {} dispatches ({} candidates on the adapter); seed {:#x}",
@@ -330,8 +340,9 @@ fn runner(seed: u64, case: u64) -> TestRunner {
     )
 }
 
+/// An error fails unless it is within the bound; NaN (unmeasurable) fails.
 fn fails(error: f64, bound: f64) -> bool {
-    !(error <= bound)
+    error.is_nan() || error > bound
 }
 
 impl<'g> PrecisionCheck<'g> {
@@ -488,6 +499,7 @@ impl<'g> PrecisionCheck<'g> {
             error: w_err,
         };
         let shrink = self.shrink(strategy, seeds[w], &reference, &error, bound)?;
+        let shrank = shrink.best.is_some();
         // Nothing simpler failed: the worst input is its own shrink.
         let shrunk = shrink.best.unwrap_or_else(|| Evaluated {
             input: worst.input.clone(),
@@ -503,6 +515,7 @@ impl<'g> PrecisionCheck<'g> {
             stats,
             worst,
             shrunk,
+            shrank,
             shrink_steps: shrink.steps,
             shrink_truncated: shrink.truncated,
             shrink_dispatches: shrink.dispatches,
@@ -520,7 +533,7 @@ impl<'g> PrecisionCheck<'g> {
         reference: &impl Fn(&S::Value) -> R,
         error: &impl Fn(&O, &R) -> f64,
         bound: f64,
-    ) -> Result<Shrunk<S::Value, O, R>, CheckError<S::Value, O, R>>
+    ) -> ShrinkResult<S::Value, O, R>
     where
         S: Strategy,
         S::Value: WgslArgs,
@@ -619,6 +632,8 @@ fn suffix_of(mut j: usize) -> Vec<bool> {
     path.reverse();
     path
 }
+
+type ShrinkResult<I, O, R> = Result<Shrunk<I, O, R>, CheckError<I, O, R>>;
 
 struct Shrunk<I, O, R> {
     /// The last failing candidate (the simplest found), if any candidate failed.
