@@ -27,6 +27,16 @@ fn f32_text(x: f32) -> String {
     }
 }
 
+fn f64_text(x: f64) -> String {
+    if x.is_nan() {
+        "NaN".to_string()
+    } else if x.is_infinite() {
+        (if x > 0.0 { "+Inf" } else { "−Inf" }).to_string()
+    } else {
+        format!("{x:?}")
+    }
+}
+
 fn text(v: V) -> String {
     let list = |xs: &[f32]| {
         let parts: Vec<String> = xs.iter().map(|&x| f32_text(x)).collect();
@@ -37,9 +47,19 @@ fn text(v: V) -> String {
         V::U32(x) => format!("{x:#x}"),
         V::Vec3(x) => list(&x),
         V::Vec4(x) => list(&x),
-        V::F64(x) => format!("{x:?}"),
+        V::F64(x) => f64_text(x),
         V::OptU32(None) => "None".to_string(),
         V::OptU32(Some(x)) => format!("Some({x:#x})"),
+        V::I64(x) => format!("{x}"),
+        V::Bool(x) => format!("{x}"),
+        V::F64x3(x) => {
+            let parts: Vec<String> = x.iter().map(|&v| f64_text(v)).collect();
+            format!("({})", parts.join(", "))
+        }
+        V::OptI64(None) | V::OptU64(None) => "None".to_string(),
+        V::OptI64(Some(x)) => format!("Some({x:#x})"),
+        V::OptU64(Some(x)) => format!("Some({x})"),
+        V::Channel(c) => format!("{c:?}"),
     }
 }
 
@@ -53,6 +73,14 @@ fn same(a: V, b: V) -> bool {
         (V::Vec4(x), V::Vec4(y)) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
         (V::F64(x), V::F64(y)) => x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()),
         (V::OptU32(x), V::OptU32(y)) => x == y,
+        (V::F64x3(x), V::F64x3(y)) => x
+            .iter()
+            .zip(&y)
+            .all(|(p, q)| p.to_bits() == q.to_bits() || (p.is_nan() && q.is_nan())),
+        (V::OptI64(x), V::OptI64(y)) => x == y,
+        (V::OptU64(x), V::OptU64(y)) => x == y,
+        (V::I64(x), V::I64(y)) => x == y,
+        (V::Bool(x), V::Bool(y)) => x == y,
         _ => false,
     }
 }
@@ -63,7 +91,7 @@ fn words(v: V, out: &mut Vec<u32>) {
         V::U32(x) => out.push(x),
         V::Vec3(x) => out.extend(x.map(f32::to_bits)),
         V::Vec4(x) => out.extend(x.map(f32::to_bits)),
-        V::F64(_) | V::OptU32(_) => panic!("{v:?} has no WGSL type"),
+        _ => panic!("{v:?} has no WGSL type"),
     }
 }
 
@@ -75,7 +103,7 @@ fn from_words(like: V, w: &[u32]) -> V {
         V::U32(_) => V::U32(w[0]),
         V::Vec3(_) => V::Vec3([f(0), f(1), f(2)]),
         V::Vec4(_) => V::Vec4([f(0), f(1), f(2), f(3)]),
-        V::F64(_) | V::OptU32(_) => panic!("{like:?} has no WGSL type"),
+        _ => panic!("{like:?} has no WGSL type"),
     }
 }
 

@@ -233,6 +233,9 @@ pub const SPEC_POWER_RANGE: (f32, f32) = (1.0, 8192.0);
 /// Specular exponents in `[lo, hi]` (`0 < lo < hi`, both finite), log-uniform (an encoding stores
 /// them in log range, so errors are comparable across it), with both ends and their `f32`
 /// neighbours inside the range weighted in.
+///
+/// # Panics
+/// Unless `0 < lo < hi < +Inf` (a programming error in the test, not data).
 pub fn spec_power_in(lo: f32, hi: f32) -> impl Strategy<Value = f32> {
     assert!(
         lo > 0.0 && lo < hi && hi.is_finite(),
@@ -290,6 +293,9 @@ pub fn light() -> impl Strategy<Value = Light> {
 /// Sets of 1 to `max` lights (`max ≥ 1`): independent [`light`]s, or sets built to cancel — each
 /// light paired with its mirror image through the shaded point, same intensity, so the summed
 /// light direction is zero (aggregate-light schemes must not divide by that length).
+///
+/// # Panics
+/// If `max` is 0.
 pub fn light_set(max: usize) -> impl Strategy<Value = Vec<Light>> {
     assert!(max >= 1, "light_set needs max ≥ 1");
     let independent = proptest::collection::vec(light(), 1..=max);
