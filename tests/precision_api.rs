@@ -6,11 +6,13 @@ mod common;
 
 use common::gpu;
 use prepass::depth;
-use prepass::harness::Arg;
-use prepass::precision::check::{CheckConfig, CheckError, Failure, PrecisionCheck};
-use prepass::precision::metrics::ulp_error;
+use prepass::harness::{Arg, ValueType};
+use prepass::precision::check::{
+    CheckConfig, CheckError, Failure, PrecisionCheck, WgslArgs, WgslValue,
+};
+use prepass::precision::metrics::{relative_error, ulp_error};
 use prepass::precision::proptest::prelude::*;
-use prepass::precision::strategies::depth24_code;
+use prepass::precision::strategies::{depth24_code, near_far};
 
 /// Divides by 2^24 where `d/(2^24 − 1)` was meant: the off-by-one every depth decoder risks.
 const WRONG_DEPTH: &str = "fn depth_unit_wrong(d: u32) -> f32 { return f32(d) / 16777216.0; }";
@@ -149,4 +151,39 @@ fn mismatched_types_are_a_setup_error_not_a_panic() {
         Err(CheckError::Setup(m)) => assert!(m.contains("fn(u32) -> f32"), "{m}"),
         other => panic!("expected a setup error, got {:?}", other.map(|p| p.cases)),
     }
+}
+
+/// A downstream input type: implementing `WgslArgs` for it feeds a two-parameter function.
+#[derive(Clone, Debug)]
+struct Planes {
+    near: f32,
+    far: f32,
+}
+
+impl WgslArgs for Planes {
+    fn param_types() -> Vec<ValueType> {
+        vec![f32::TYPE, f32::TYPE]
+    }
+    fn push_columns(&self, columns: &mut [Vec<u32>]) {
+        self.near.push_words(&mut columns[0]);
+        self.far.push_words(&mut columns[1]);
+    }
+}
+
+#[test]
+fn a_user_input_struct_runs_over_stiff_and_infinite_planes() {
+    let src = "fn far_over_near(near: f32, far: f32) -> f32 { return far / near; }";
+    let check = PrecisionCheck::new(gpu(), src, "far_over_near").unwrap();
+    let planes = near_far().prop_map(|(near, far)| Planes { near, far });
+    let exact = |p: &Planes| f64::from(p.far) / f64::from(p.near);
+    let rel = |got: &f32, want: &f64| relative_error(f64::from(*got), *want);
+    // Bound: WGSL's `/` is within 2.5 ULP, and one f32 ULP is at most 2^-23 of the value, so
+    // the relative error is at most 2.5·2^-23 (far = +Inf gives +Inf exactly: error 0). The
+    // quotient stays far inside f32's range (far/near ≤ 1e9·(1 + 2^-24)).
+    let bound = 2.5 * 2f64.powi(-23);
+    let passed = check
+        .run(&planes, exact, rel, bound)
+        .unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(passed.stats.nan_count, 0);
+    assert!(passed.stats.max <= bound);
 }
