@@ -127,6 +127,11 @@ pub mod exact {
         };
         // x·D = m·D·2^e with e < 0 here (x ≤ 1 < 2^24): round half up on the exact product.
         let shift = (-e) as u32;
+        // x < 2^-40 (every subnormal among them) gives x·D < 2^-16: code 0. Returning early also
+        // keeps the shift below 128 (a subnormal's shift of 149 overflowed u128).
+        if shift >= 64 {
+            return Some(0);
+        }
         let prod = m * u128::from(DEPTH24_MAX);
         Some(((prod + (1u128 << (shift - 1))) >> shift) as u32)
     }

@@ -13,6 +13,7 @@
 //! | [`position`] | `wgsl/position.wgsl` | frustum rays, view/world/camera-relative position rebuild |
 //! | [`scene`] | composed | scene declaration → minimal WGSL module + G-buffer layout |
 //! | [`precision`] | — | error metrics (ULP, relative, angular, mismatches) and test inputs |
+//! | `precision::strategies`, `precision::check` | any | proptest strategies with adversarial cases; batched checks of any WGSL against a Rust reference, shrinking on the adapter (features `proptest`; `check` also `harness`) |
 //! | [`wgsl`] | all | embedded sources; naga validation/translation (feature `validate`) |
 //! | `harness` | any | run any WGSL function on a wgpu adapter (feature `harness`) |
 //!

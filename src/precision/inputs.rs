@@ -38,6 +38,10 @@ pub fn sign_pattern(code: u32, flip: bool) -> u32 {
 
 /// One unorm8 channel holding `byte`, as a sampler might return it under `error`, pushed down
 /// when `down`.
+///
+/// **Bad input:** bytes above 255 are used as given (`256/255 > 1`: out-of-range test inputs);
+/// a push below `byte = 0` gives negative values (`Ulps(3)` down from `+0.0` is `−3·2^-149`);
+/// a NaN offset gives NaN.
 pub fn unorm8_channel(byte: u32, error: ChannelError, down: bool) -> f32 {
     let exact = byte as f32 / 255.0; // correctly rounded quotient
     match error {
@@ -51,7 +55,8 @@ pub fn unorm8_channel(byte: u32, error: ChannelError, down: bool) -> f32 {
 }
 
 /// The r, g, b channels of an RGBA8 texel holding the 24-bit `code` (r most significant), each
-/// perturbed by `error` in the direction given by [`sign_pattern`].
+/// perturbed by `error` in the direction given by [`sign_pattern`]. Codes above `2^24 − 1`
+/// saturate to `2^24 − 1` (the sign pattern still comes from the code as given).
 pub fn rgb8_channels(code: u32, error: ChannelError, flip: bool) -> [f32; 3] {
     let signs = sign_pattern(code, flip);
     let code = code.min(DEPTH24_MAX);

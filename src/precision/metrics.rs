@@ -89,8 +89,13 @@ pub fn relative_error(got: f64, exact: f64) -> f64 {
 
 /// Angle in degrees between two directions (neither need be unit length), computed as
 /// `atan2(|a×b|, a·b)` in f64, which stays accurate for tiny and near-180° angles where
-/// `acos(a·b)` loses half its digits. Zero or non-finite vectors give NaN.
+/// `acos(a·b)` loses half its digits. Zero or non-finite vectors give NaN. Vectors of any other
+/// length are directions: lanes below `10^-150` or above `10^150` are first scaled by `2^±600`
+/// (exactly), so squares neither underflow nor overflow.
 pub fn angle_degrees(a: [f64; 3], b: [f64; 3]) -> f64 {
+    let (Some(a), Some(b)) = (rescaled(a), rescaled(b)) else {
+        return f64::NAN;
+    };
     let cross = [
         a[1] * b[2] - a[2] * b[1],
         a[2] * b[0] - a[0] * b[2],
@@ -98,12 +103,27 @@ pub fn angle_degrees(a: [f64; 3], b: [f64; 3]) -> f64 {
     ];
     let sin = (cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]).sqrt();
     let cos = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    let na = a.iter().map(|v| v * v).sum::<f64>();
-    let nb = b.iter().map(|v| v * v).sum::<f64>();
-    if !(na > 0.0 && nb > 0.0 && na.is_finite() && nb.is_finite()) {
-        return f64::NAN;
-    }
     sin.atan2(cos).to_degrees()
+}
+
+/// `v` scaled by a power of two (exact) so its largest lane is within `10^±150`; `None` for zero
+/// or non-finite vectors.
+fn rescaled(v: [f64; 3]) -> Option<[f64; 3]> {
+    if !v.iter().all(|x| x.is_finite()) {
+        return None;
+    }
+    let m = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if m == 0.0 {
+        return None;
+    }
+    let k = if m < 1e-150 {
+        600
+    } else if m > 1e150 {
+        -600
+    } else {
+        0
+    };
+    Some(v.map(|x| x * 2f64.powi(k)))
 }
 
 /// Widen an `f32` vector for [`angle_degrees`].
@@ -285,6 +305,9 @@ mod tests {
         let b = angle_degrees([1.0, 0.0, 0.0], [-1.0, tiny, 0.0]);
         assert!((b - (180.0 - tiny.atan().to_degrees())).abs() < 1e-12);
         assert!(angle_degrees([0.0; 3], [1.0, 0.0, 0.0]).is_nan());
+        // Lengths whose squares leave f64's range are still directions.
+        assert_eq!(angle_degrees([1e-320, 0.0, 0.0], [0.0, 1e300, 0.0]), 90.0);
+        assert!(angle_degrees([f64::INFINITY, 0.0, 0.0], [1.0, 0.0, 0.0]).is_nan());
     }
 
     #[test]

@@ -1,5 +1,19 @@
 //! Precision testing tools: error metrics and adversarial test inputs, public so that
 //! downstream suites measure their own shaders the way this crate measures its own.
+//!
+//! - [`metrics`], [`inputs`]: always available.
+//! - `strategies` (feature `proptest`): proptest strategies with adversarial cases weighted in.
+//! - `check` (features `proptest` + `harness`): property-based checks of any WGSL function on an
+//!   adapter against a Rust reference, batched, with shrinking that re-runs the WGSL.
 
+#[cfg(all(feature = "proptest", feature = "harness"))]
+pub mod check;
 pub mod inputs;
 pub mod metrics;
+#[cfg(feature = "proptest")]
+pub mod strategies;
+
+/// The proptest crate these strategies are built with, so downstream code combines them with
+/// the same version.
+#[cfg(feature = "proptest")]
+pub use proptest;

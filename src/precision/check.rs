@@ -1,0 +1,692 @@
+//! Property-based precision checks of *your* WGSL on a real adapter (features `harness` and
+//! `proptest`).
+//!
+//! [`PrecisionCheck`] takes WGSL source and a function name, a proptest strategy for the
+//! arguments, a Rust reference closure, an error metric and a bound. It
+//!
+//! 1. draws `cases` inputs and evaluates them **in one dispatch** (a batch: the per-dispatch cost
+//!    of a GPU round trip is paid once, not per case);
+//! 2. measures every result against the reference with the metric, and if any error exceeds the
+//!    bound (or is NaN), picks the **worst** failing input;
+//! 3. **shrinks** that input with proptest's value tree — every candidate is re-run on the
+//!    adapter, never on a CPU copy — and reports the worst input, the shrunk input and their
+//!    errors.
+//!
+//! Shrinking is a chain of decisions (candidate still fails → simplify further, passes → step
+//! back), so a naive loop needs one GPU round trip per candidate. Here each round trip evaluates
+//! the whole decision tree of the next `speculation_depth` steps at once (`2^depth − 1`
+//! candidates, a trivial batch for the adapter), then follows the real outcomes through it: the
+//! number of dispatches drops by about `speculation_depth`. proptest value trees cannot be
+//! cloned, so each speculative candidate is rebuilt by replaying its decision path on a tree
+//! regenerated from the case's seed (value trees are deterministic given their random source);
+//! that costs CPU time proportional to the path length, far less than a GPU round trip.
+//!
+//! ```no_run
+//! use prepass::harness::Gpu;
+//! use prepass::precision::check::PrecisionCheck;
+//! use prepass::precision::metrics::ulp_error;
+//! use prepass::precision::strategies::depth24_code;
+//!
+//! let gpu = Gpu::new()?;
+//! let wgsl = "fn to_unit(d: u32) -> f32 { return f32(d) / 16777215.0; }";
+//! let passed = PrecisionCheck::new(&gpu, wgsl, "to_unit")?
+//!     .run(
+//!         &depth24_code(),
+//!         |d: &u32| f64::from(*d) / 16777215.0,          // exact reference
+//!         |got: &f32, want: &f64| ulp_error(*got, *want), // metric: ULPs of the exact value
+//!         2.5 + 0.5, // bound: WGSL's `/` allowance, plus rounding of f32(d) (exact here: d < 2^24)
+//!     )
+//!     .map_err(|e| e.to_string())?;
+//! println!("max {} ULP over {} cases", passed.stats.max, passed.cases);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use super::metrics::ErrorStats;
+use crate::harness::{Arg, Gpu, HarnessError, Kernel, Scalar, ValueType};
+use glam::{IVec2, IVec3, IVec4, UVec2, UVec3, UVec4, Vec2, Vec3, Vec4};
+use proptest::strategy::{Strategy, ValueTree};
+use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+use std::fmt::{self, Debug};
+
+/// A value that crosses the harness's buffers as one WGSL parameter or result: a scalar or
+/// vector of `f32`, `u32` or `i32`, moved as its bits (NaN payloads and signed zeros intact).
+pub trait WgslValue: Clone + Debug {
+    /// Its WGSL type.
+    const TYPE: ValueType;
+    /// Append its lanes' bits.
+    fn push_words(&self, out: &mut Vec<u32>);
+    /// Read it back from `TYPE.words()` words.
+    fn from_words(words: &[u32]) -> Self;
+}
+
+const fn vt(scalar: Scalar, lanes: u8) -> ValueType {
+    ValueType { scalar, lanes }
+}
+
+macro_rules! scalar_value {
+    ($t:ty, $s:expr, $to:expr, $from:expr) => {
+        impl WgslValue for $t {
+            const TYPE: ValueType = vt($s, 1);
+            fn push_words(&self, out: &mut Vec<u32>) {
+                out.push($to(*self));
+            }
+            fn from_words(w: &[u32]) -> Self {
+                $from(w[0])
+            }
+        }
+    };
+}
+scalar_value!(f32, Scalar::F32, f32::to_bits, f32::from_bits);
+scalar_value!(u32, Scalar::U32, |x| x, |w| w);
+scalar_value!(i32, Scalar::I32, |x: i32| x as u32, |w: u32| w as i32);
+
+macro_rules! array_value {
+    ($($n:literal),*) => {$(
+        impl<T: WgslValue + Copy> WgslValue for [T; $n] {
+            const TYPE: ValueType = {
+                assert!(T::TYPE.lanes == 1, "arrays of scalars only");
+                vt(T::TYPE.scalar, $n)
+            };
+            fn push_words(&self, out: &mut Vec<u32>) {
+                for x in self {
+                    x.push_words(out);
+                }
+            }
+            fn from_words(w: &[u32]) -> Self {
+                std::array::from_fn(|i| T::from_words(&w[i..i + 1]))
+            }
+        }
+    )*};
+}
+array_value!(2, 3, 4);
+
+macro_rules! glam_value {
+    ($($t:ty => $a:ty),*) => {$(
+        impl WgslValue for $t {
+            const TYPE: ValueType = <$a as WgslValue>::TYPE;
+            fn push_words(&self, out: &mut Vec<u32>) {
+                <$a>::from(*self).push_words(out);
+            }
+            fn from_words(w: &[u32]) -> Self {
+                <$t>::from(<$a>::from_words(w))
+            }
+        }
+    )*};
+}
+glam_value!(
+    Vec2 => [f32; 2], Vec3 => [f32; 3], Vec4 => [f32; 4],
+    UVec2 => [u32; 2], UVec3 => [u32; 3], UVec4 => [u32; 4],
+    IVec2 => [i32; 2], IVec3 => [i32; 3], IVec4 => [i32; 4]
+);
+
+/// The arguments of one call: a single [`WgslValue`] for a one-parameter function, a tuple of
+/// them (up to four) for more. Implement it for your own input struct to feed a strategy that
+/// produces one.
+pub trait WgslArgs: Clone + Debug {
+    /// The WGSL type of each parameter, in order.
+    fn param_types() -> Vec<ValueType>;
+    /// Append parameter `k`'s bits to `columns[k]`, for every `k`.
+    fn push_columns(&self, columns: &mut [Vec<u32>]);
+}
+
+impl<T: WgslValue> WgslArgs for T {
+    fn param_types() -> Vec<ValueType> {
+        vec![T::TYPE]
+    }
+    fn push_columns(&self, columns: &mut [Vec<u32>]) {
+        self.push_words(&mut columns[0]);
+    }
+}
+
+macro_rules! tuple_args {
+    ($(($($t:ident $i:tt),*)),*) => {$(
+        impl<$($t: WgslValue),*> WgslArgs for ($($t,)*) {
+            fn param_types() -> Vec<ValueType> {
+                vec![$($t::TYPE),*]
+            }
+            fn push_columns(&self, columns: &mut [Vec<u32>]) {
+                $(self.$i.push_words(&mut columns[$i]);)*
+            }
+        }
+    )*};
+}
+tuple_args!((A 0), (A 0, B 1), (A 0, B 1, C 2), (A 0, B 1, C 2, D 3));
+
+/// How a check draws, bounds its work and shrinks.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CheckConfig {
+    /// Inputs drawn and evaluated in the first batch.
+    pub cases: u32,
+    /// Seed of the draw: the same seed, strategy and source give the same cases (so a failure
+    /// in CI reproduces locally). Change it to explore other inputs.
+    pub seed: u64,
+    /// Most shrinking decisions followed before the best input so far is reported.
+    pub max_shrink_steps: u32,
+    /// Decision levels evaluated per dispatch while shrinking (`2^depth − 1` candidates per
+    /// dispatch); 1 is the plain one-candidate-per-dispatch loop.
+    pub speculation_depth: u32,
+    /// Most strategy rejections (`prop_filter`) tolerated while drawing.
+    pub max_rejects: u32,
+}
+
+impl Default for CheckConfig {
+    fn default() -> Self {
+        Self {
+            cases: 4096,
+            seed: 0x7072_6570_6173_7321,
+            max_shrink_steps: 4096,
+            speculation_depth: 5,
+            max_rejects: 65_536,
+        }
+    }
+}
+
+/// A check that passed: every case within the bound.
+#[derive(Clone, Debug)]
+pub struct Passed<I> {
+    /// Cases evaluated.
+    pub cases: u64,
+    /// Error statistics over all cases (`argmax` indexes the cases in draw order).
+    pub stats: ErrorStats,
+    /// The input with the largest error (`None` when no case was drawn).
+    pub worst: Option<I>,
+}
+
+/// One evaluated input: what the adapter returned, the reference, and the metric's error.
+#[derive(Clone, Debug)]
+pub struct Evaluated<I, O, R> {
+    /// The input.
+    pub input: I,
+    /// The WGSL function's result on the adapter.
+    pub got: O,
+    /// The reference closure's value.
+    pub reference: R,
+    /// The metric's error (NaN when the metric could not measure, which counts as a failure).
+    pub error: f64,
+}
+
+/// A check that failed, with the worst input found and the input it shrank to.
+#[derive(Clone, Debug)]
+pub struct Failure<I, O, R> {
+    /// The function checked.
+    pub function: String,
+    /// The bound that was exceeded.
+    pub bound: f64,
+    /// Cases evaluated in the first batch, and how many of them failed.
+    pub cases: u64,
+    /// Failing cases in the first batch.
+    pub failing: u64,
+    /// Error statistics over the first batch.
+    pub stats: ErrorStats,
+    /// The failing input with the largest error (NaN errors rank highest).
+    pub worst: Evaluated<I, O, R>,
+    /// The simplest input the worst one shrank to that still fails (the worst input itself
+    /// when no simpler candidate failed: see `shrank`).
+    pub shrunk: Evaluated<I, O, R>,
+    /// Whether shrinking found a simpler failing input than the worst one.
+    pub shrank: bool,
+    /// Shrinking decisions followed.
+    pub shrink_steps: u32,
+    /// Whether shrinking stopped at `max_shrink_steps` rather than at a local minimum.
+    pub shrink_truncated: bool,
+    /// GPU dispatches spent shrinking, and candidates they evaluated.
+    pub shrink_dispatches: u32,
+    /// Candidates evaluated while shrinking.
+    pub shrink_evaluations: u64,
+    /// The seed that reproduces this failure.
+    pub seed: u64,
+}
+
+/// Why a check did not pass.
+#[derive(Debug)]
+pub enum CheckError<I, O, R> {
+    /// An error exceeded the bound: the worst and the shrunk input.
+    Failed(Box<Failure<I, O, R>>),
+    /// The harness could not run the function (no adapter, invalid WGSL, signature).
+    Harness(HarnessError),
+    /// The check is set up wrong (types do not match the signature, too many rejections).
+    Setup(String),
+}
+
+impl<I: Debug, O: Debug, R: Debug> fmt::Display for Failure<I, O, R> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let show = |f: &mut fmt::Formatter<'_>, what: &str, e: &Evaluated<I, O, R>| {
+            writeln!(
+                f,
+                "  {what}: input {:?} → WGSL {:?}, reference {:?}, error {}",
+                e.input, e.got, e.reference, e.error
+            )
+        };
+        writeln!(
+            f,
+            "precision check of `{}` failed: {} of {} cases exceed the bound {} (max error {}, {} NaN)",
+            self.function,
+            self.failing,
+            self.cases,
+            self.bound,
+            self.stats.max,
+            self.stats.nan_count
+        )?;
+        show(f, "worst ", &self.worst)?;
+        if self.shrank {
+            show(f, "shrunk", &self.shrunk)?;
+        } else {
+            writeln!(
+                f,
+                "  shrunk: no simpler candidate fails; the worst input is the smallest found"
+            )?;
+        }
+        write!(
+            f,
+            "  shrinking: {} steps{} in {} dispatches ({} candidates on the adapter); seed {:#x}",
+            self.shrink_steps,
+            if self.shrink_truncated {
+                " (stopped at max_shrink_steps)"
+            } else {
+                ""
+            },
+            self.shrink_dispatches,
+            self.shrink_evaluations,
+            self.seed
+        )
+    }
+}
+
+impl<I: Debug, O: Debug, R: Debug> fmt::Display for CheckError<I, O, R> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Failed(fail) => fmt::Display::fmt(fail, f),
+            Self::Harness(e) => fmt::Display::fmt(e, f),
+            Self::Setup(m) => write!(f, "precision check set up wrong: {m}"),
+        }
+    }
+}
+
+impl<I: Debug, O: Debug, R: Debug> std::error::Error for CheckError<I, O, R> {}
+
+impl<I, O, R> From<HarnessError> for CheckError<I, O, R> {
+    fn from(e: HarnessError) -> Self {
+        Self::Harness(e)
+    }
+}
+
+/// A WGSL function prepared for property-based precision checks on an adapter.
+pub struct PrecisionCheck<'g> {
+    kernel: Kernel<'g>,
+    function: String,
+    config: CheckConfig,
+}
+
+/// 64-bit mixer (splitmix64's finaliser): independent-looking seeds from consecutive indices.
+fn mix(mut z: u64) -> u64 {
+    z = z.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// A runner whose random source is fixed by `(seed, case)`, so the case's value tree can be
+/// regenerated identically at any time.
+fn runner(seed: u64, case: u64) -> TestRunner {
+    let mut bytes = [0u8; 32];
+    let mut s = mix(seed ^ mix(case));
+    for chunk in bytes.chunks_mut(8) {
+        s = mix(s);
+        chunk.copy_from_slice(&s.to_le_bytes());
+    }
+    TestRunner::new_with_rng(
+        Config::default(),
+        TestRng::from_seed(RngAlgorithm::ChaCha, &bytes),
+    )
+}
+
+/// An error fails unless it is within the bound; NaN (unmeasurable) fails.
+fn fails(error: f64, bound: f64) -> bool {
+    error.is_nan() || error > bound
+}
+
+impl<'g> PrecisionCheck<'g> {
+    /// Prepare `function` from `source` (valid WGSL on its own) on `gpu`, with the default
+    /// [`CheckConfig`].
+    pub fn new(gpu: &'g Gpu, source: &str, function: &str) -> Result<Self, HarnessError> {
+        Ok(Self {
+            kernel: gpu.kernel(source, function)?,
+            function: function.to_string(),
+            config: CheckConfig::default(),
+        })
+    }
+
+    /// Use `config` instead of the defaults.
+    pub fn with_config(mut self, config: CheckConfig) -> Self {
+        self.config = config;
+        self
+    }
+
+    /// Set how many cases the first batch draws.
+    pub fn cases(mut self, cases: u32) -> Self {
+        self.config.cases = cases;
+        self
+    }
+
+    /// Set the seed of the draw.
+    pub fn seed(mut self, seed: u64) -> Self {
+        self.config.seed = seed;
+        self
+    }
+
+    /// The configuration in use.
+    pub fn config(&self) -> &CheckConfig {
+        &self.config
+    }
+
+    /// Run the function on the adapter for every input, in one batch.
+    ///
+    /// Returns the results in input order; fails with [`CheckError::Setup`] when `I` or `O` do
+    /// not match the function's signature.
+    pub fn evaluate<I: WgslArgs, O: WgslValue, R>(
+        &self,
+        inputs: &[I],
+    ) -> Result<Vec<O>, CheckError<I, O, R>> {
+        let sig = self.kernel.signature();
+        let want: Vec<ValueType> = sig.params.iter().map(|p| p.ty).collect();
+        if I::param_types() != want || O::TYPE != sig.result {
+            let show = |ts: &[ValueType]| {
+                ts.iter()
+                    .map(|t| t.to_string())
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            };
+            return Err(CheckError::Setup(format!(
+                "`{}` is fn({}) -> {}, but the strategy gives ({}) and the metric reads {}",
+                sig.function,
+                show(&want),
+                sig.result,
+                show(&I::param_types()),
+                O::TYPE
+            )));
+        }
+        let mut columns = vec![Vec::with_capacity(inputs.len() * 4); want.len()];
+        for x in inputs {
+            x.push_columns(&mut columns);
+        }
+        let args: Vec<Arg<'_>> = columns
+            .iter()
+            .map(|c| Arg::Column(bytemuck::cast_slice(c)))
+            .collect();
+        let out = self.kernel.run(&args, inputs.len() as u64)?;
+        Ok(out
+            .words()
+            .chunks(O::TYPE.words())
+            .map(O::from_words)
+            .collect())
+    }
+
+    /// Check that `error(wgsl_result, reference(input)) ≤ bound` for `cases` inputs drawn from
+    /// `strategy`, evaluated on the adapter in one batch; on failure, shrink the worst input on
+    /// the adapter and report both (see the module docs).
+    ///
+    /// `O`, the WGSL result type, is read from the metric's first parameter; a NaN error is a
+    /// failure.
+    pub fn run<S, O, R>(
+        &self,
+        strategy: &S,
+        reference: impl Fn(&S::Value) -> R,
+        error: impl Fn(&O, &R) -> f64,
+        bound: f64,
+    ) -> Result<Passed<S::Value>, CheckError<S::Value, O, R>>
+    where
+        S: Strategy,
+        S::Value: WgslArgs,
+        O: WgslValue,
+    {
+        let cfg = self.config;
+        // Draw: case k's tree comes from runner(seed, k'), k' counting rejections too, so it can
+        // be regenerated later for shrinking.
+        let mut seeds = Vec::with_capacity(cfg.cases as usize);
+        let mut inputs = Vec::with_capacity(cfg.cases as usize);
+        let mut draw = 0u64;
+        let mut rejects = 0u32;
+        while inputs.len() < cfg.cases as usize {
+            match strategy.new_tree(&mut runner(cfg.seed, draw)) {
+                Ok(tree) => {
+                    seeds.push(draw);
+                    inputs.push(tree.current());
+                }
+                Err(why) => {
+                    rejects += 1;
+                    if rejects > cfg.max_rejects {
+                        return Err(CheckError::Setup(format!(
+                            "the strategy rejected {rejects} draws (last: {why})"
+                        )));
+                    }
+                }
+            }
+            draw += 1;
+        }
+        let outputs = self.evaluate::<S::Value, O, R>(&inputs)?;
+        let mut stats = ErrorStats::default();
+        let mut failing = 0u64;
+        let mut worst: Option<(usize, f64)> = None;
+        let rank = |e: f64| if e.is_nan() { f64::INFINITY } else { e };
+        let mut worst_any: Option<(usize, f64)> = None;
+        let mut refs = Vec::with_capacity(inputs.len());
+        for (i, (x, got)) in inputs.iter().zip(&outputs).enumerate() {
+            let r = reference(x);
+            let e = error(got, &r);
+            refs.push(r);
+            stats.add(i as u64, e);
+            if worst_any.is_none_or(|(_, w)| rank(e) > rank(w)) {
+                worst_any = Some((i, e));
+            }
+            if fails(e, bound) {
+                failing += 1;
+                if worst.is_none_or(|(_, w)| rank(e) > rank(w)) {
+                    worst = Some((i, e));
+                }
+            }
+        }
+        let Some((w, w_err)) = worst else {
+            return Ok(Passed {
+                cases: inputs.len() as u64,
+                stats,
+                worst: worst_any.map(|(i, _)| inputs[i].clone()),
+            });
+        };
+        let worst = Evaluated {
+            input: inputs[w].clone(),
+            got: outputs[w].clone(),
+            reference: refs.swap_remove(w),
+            error: w_err,
+        };
+        let shrink = self.shrink(strategy, seeds[w], &reference, &error, bound)?;
+        let shrank = shrink.best.is_some();
+        // Nothing simpler failed: the worst input is its own shrink.
+        let shrunk = shrink.best.unwrap_or_else(|| Evaluated {
+            input: worst.input.clone(),
+            got: worst.got.clone(),
+            reference: reference(&worst.input),
+            error: worst.error,
+        });
+        Err(CheckError::Failed(Box::new(Failure {
+            function: self.function.clone(),
+            bound,
+            cases: inputs.len() as u64,
+            failing,
+            stats,
+            worst,
+            shrunk,
+            shrank,
+            shrink_steps: shrink.steps,
+            shrink_truncated: shrink.truncated,
+            shrink_dispatches: shrink.dispatches,
+            shrink_evaluations: shrink.evaluations,
+            seed: cfg.seed,
+        })))
+    }
+
+    /// proptest's shrinking walk from the failing input drawn as `case` (fail → simplify, pass → complicate, stop when the tree has no
+    /// move left), `speculation_depth` decisions per dispatch.
+    fn shrink<S, O, R>(
+        &self,
+        strategy: &S,
+        case: u64,
+        reference: &impl Fn(&S::Value) -> R,
+        error: &impl Fn(&O, &R) -> f64,
+        bound: f64,
+    ) -> ShrinkResult<S::Value, O, R>
+    where
+        S: Strategy,
+        S::Value: WgslArgs,
+        O: WgslValue,
+    {
+        let cfg = self.config;
+        let depth = cfg.speculation_depth.clamp(1, 10) as usize;
+        // The tree after the first simplify and then `path` (true = simplify, false =
+        // complicate); None when a move along the way was refused (that branch has ended).
+        let tree_at = |path: &[bool]| -> Option<S::Tree> {
+            let mut tree = strategy.new_tree(&mut runner(cfg.seed, case)).ok()?;
+            let moved = std::iter::once(&true).chain(path).all(|&s| {
+                if s {
+                    tree.simplify()
+                } else {
+                    tree.complicate()
+                }
+            });
+            moved.then_some(tree)
+        };
+        let mut out = Shrunk {
+            best: None,
+            steps: 0,
+            truncated: false,
+            dispatches: 0,
+            evaluations: 0,
+        };
+        let mut frontier: Vec<bool> = Vec::new();
+        loop {
+            // Every node of the next `depth` decision levels below the frontier, breadth first:
+            // node j's children are 2j+1 (after simplify: it failed) and 2j+2 (after complicate).
+            let mut nodes: Vec<Option<S::Value>> = vec![None; (1 << depth) - 1];
+            for j in 0..nodes.len() {
+                // A move below a refused move does not exist either.
+                if j == 0 || nodes[(j - 1) / 2].is_some() {
+                    let mut path = frontier.clone();
+                    path.extend_from_slice(&suffix_of(j));
+                    nodes[j] = tree_at(&path).map(|t| t.current());
+                }
+            }
+            if nodes[0].is_none() {
+                return Ok(out);
+            }
+            let live: Vec<usize> = (0..nodes.len()).filter(|&j| nodes[j].is_some()).collect();
+            let batch: Vec<S::Value> = live.iter().map(|&j| nodes[j].clone().unwrap()).collect();
+            let got = self.evaluate::<S::Value, O, R>(&batch)?;
+            out.dispatches += 1;
+            out.evaluations += batch.len() as u64;
+            let mut results: Vec<Option<O>> = vec![None; nodes.len()];
+            for (&j, g) in live.iter().zip(got) {
+                results[j] = Some(g);
+            }
+            // Follow the real outcomes down the evaluated levels.
+            let mut j = 0usize;
+            let mut walked = Vec::new();
+            loop {
+                let Some(g) = results[j].take() else {
+                    return Ok(out); // the tree refused this move: shrinking is over
+                };
+                if out.steps >= cfg.max_shrink_steps {
+                    out.truncated = true;
+                    return Ok(out);
+                }
+                out.steps += 1;
+                let input = nodes[j].take().expect("evaluated nodes exist");
+                let r = reference(&input);
+                let e = error(&g, &r);
+                let failed = fails(e, bound);
+                if failed {
+                    out.best = Some(Evaluated {
+                        input,
+                        got: g,
+                        reference: r,
+                        error: e,
+                    });
+                }
+                walked.push(failed);
+                j = 2 * j + if failed { 1 } else { 2 };
+                if j >= nodes.len() {
+                    break;
+                }
+            }
+            frontier.extend_from_slice(&walked);
+        }
+    }
+}
+
+/// The decisions leading from the root of a breadth-first binary tree to node `j`
+/// (children of `j` are `2j + 1` = simplify and `2j + 2` = complicate).
+fn suffix_of(mut j: usize) -> Vec<bool> {
+    let mut path = Vec::new();
+    while j > 0 {
+        path.push(j % 2 == 1);
+        j = (j - 1) / 2;
+    }
+    path.reverse();
+    path
+}
+
+type ShrinkResult<I, O, R> = Result<Shrunk<I, O, R>, CheckError<I, O, R>>;
+
+struct Shrunk<I, O, R> {
+    /// The last failing candidate (the simplest found), if any candidate failed.
+    best: Option<Evaluated<I, O, R>>,
+    steps: u32,
+    truncated: bool,
+    dispatches: u32,
+    evaluations: u64,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn suffixes_follow_breadth_first_numbering() {
+        assert_eq!(suffix_of(0), Vec::<bool>::new());
+        assert_eq!(suffix_of(1), vec![true]);
+        assert_eq!(suffix_of(2), vec![false]);
+        assert_eq!(suffix_of(3), vec![true, true]);
+        assert_eq!(suffix_of(6), vec![false, false]);
+        assert_eq!(suffix_of(5), vec![false, true]);
+    }
+
+    #[test]
+    fn values_round_trip_their_bits() {
+        let mut w = Vec::new();
+        (-0.0f32).push_words(&mut w);
+        Vec3::new(1.0, f32::NAN, -2.0).push_words(&mut w);
+        (-5i32).push_words(&mut w);
+        assert_eq!(w[0], 0x8000_0000);
+        assert_eq!(f32::from_words(&w[0..1]).to_bits(), 0x8000_0000);
+        assert!(Vec3::from_words(&w[1..4]).y.is_nan());
+        assert_eq!(i32::from_words(&w[4..5]), -5);
+        assert_eq!(<(u32, Vec3)>::param_types(), vec![u32::TYPE, Vec3::TYPE]);
+    }
+
+    #[test]
+    fn regenerated_trees_replay_identically() {
+        use proptest::prelude::*;
+        let s = (any::<u32>(), -1e6f32..1e6);
+        let path = [true, false, true, true, false];
+        let walk = || {
+            let mut t = s.new_tree(&mut runner(7, 3)).unwrap();
+            for &p in &path {
+                if p {
+                    t.simplify();
+                } else {
+                    t.complicate();
+                }
+            }
+            t.current()
+        };
+        assert_eq!(walk(), walk());
+    }
+}

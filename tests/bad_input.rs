@@ -1,0 +1,261 @@
+//! The bad-input contract (README, "Bad input"): every row of `bad_input/rows.rs` runs through
+//! the WGSL on the adapter and through the Rust twin, and both must return the documented answer.
+//! The README's table is generated from the same rows and must match them exactly.
+
+mod common;
+
+#[path = "bad_input/rows.rs"]
+mod rows;
+
+use common::gpu;
+use prepass::harness::Arg;
+use rows::{FUNCS, Func, ROWS, Row, V, WGSL_HELPERS};
+
+fn f32_text(x: f32) -> String {
+    if x.is_nan() {
+        let sign = if x.is_sign_negative() { "−" } else { "" };
+        let kind = if x.to_bits() & 0x0040_0000 == 0 {
+            " (signalling)"
+        } else {
+            ""
+        };
+        format!("{sign}NaN{kind}")
+    } else if x.is_infinite() {
+        (if x > 0.0 { "+Inf" } else { "−Inf" }).to_string()
+    } else {
+        format!("{x:?}")
+    }
+}
+
+fn f64_text(x: f64) -> String {
+    if x.is_nan() {
+        "NaN".to_string()
+    } else if x.is_infinite() {
+        (if x > 0.0 { "+Inf" } else { "−Inf" }).to_string()
+    } else {
+        format!("{x:?}")
+    }
+}
+
+fn text(v: V) -> String {
+    let list = |xs: &[f32]| {
+        let parts: Vec<String> = xs.iter().map(|&x| f32_text(x)).collect();
+        format!("({})", parts.join(", "))
+    };
+    match v {
+        V::F32(x) => f32_text(x),
+        V::U32(x) => format!("{x:#x}"),
+        V::Vec3(x) => list(&x),
+        V::Vec4(x) => list(&x),
+        V::F64(x) => f64_text(x),
+        V::OptU32(None) => "None".to_string(),
+        V::OptU32(Some(x)) => format!("Some({x:#x})"),
+        V::I64(x) => format!("{x}"),
+        V::Bool(x) => format!("{x}"),
+        V::F64x3(x) => {
+            let parts: Vec<String> = x.iter().map(|&v| f64_text(v)).collect();
+            format!("({})", parts.join(", "))
+        }
+        V::OptI64(None) | V::OptU64(None) => "None".to_string(),
+        V::OptI64(Some(x)) => format!("Some({x:#x})"),
+        V::OptU64(Some(x)) => format!("Some({x})"),
+        V::Channel(c) => format!("{c:?}"),
+    }
+}
+
+/// Bit-for-bit equality; any NaN matches any NaN (payloads are not part of the contract).
+fn same(a: V, b: V) -> bool {
+    let f = |x: f32, y: f32| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+    match (a, b) {
+        (V::F32(x), V::F32(y)) => f(x, y),
+        (V::U32(x), V::U32(y)) => x == y,
+        (V::Vec3(x), V::Vec3(y)) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
+        (V::Vec4(x), V::Vec4(y)) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
+        (V::F64(x), V::F64(y)) => x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()),
+        (V::OptU32(x), V::OptU32(y)) => x == y,
+        (V::F64x3(x), V::F64x3(y)) => x
+            .iter()
+            .zip(&y)
+            .all(|(p, q)| p.to_bits() == q.to_bits() || (p.is_nan() && q.is_nan())),
+        (V::OptI64(x), V::OptI64(y)) => x == y,
+        (V::OptU64(x), V::OptU64(y)) => x == y,
+        (V::I64(x), V::I64(y)) => x == y,
+        (V::Bool(x), V::Bool(y)) => x == y,
+        _ => false,
+    }
+}
+
+fn words(v: V, out: &mut Vec<u32>) {
+    match v {
+        V::F32(x) => out.push(x.to_bits()),
+        V::U32(x) => out.push(x),
+        V::Vec3(x) => out.extend(x.map(f32::to_bits)),
+        V::Vec4(x) => out.extend(x.map(f32::to_bits)),
+        _ => panic!("{v:?} has no WGSL type"),
+    }
+}
+
+/// Read a WGSL result shaped like `like` from its words.
+fn from_words(like: V, w: &[u32]) -> V {
+    let f = |i: usize| f32::from_bits(w[i]);
+    match like {
+        V::F32(_) => V::F32(f(0)),
+        V::U32(_) => V::U32(w[0]),
+        V::Vec3(_) => V::Vec3([f(0), f(1), f(2)]),
+        V::Vec4(_) => V::Vec4([f(0), f(1), f(2), f(3)]),
+        _ => panic!("{like:?} has no WGSL type"),
+    }
+}
+
+fn func(name: &str) -> &'static Func {
+    FUNCS
+        .iter()
+        .find(|f| f.name == name)
+        .unwrap_or_else(|| panic!("row names `{name}`, which is not in FUNCS"))
+}
+
+fn rows_of(f: &Func) -> Vec<&'static Row> {
+    ROWS.iter().filter(|r| r.func == f.name).collect()
+}
+
+fn describe(r: &Row) -> String {
+    let args: Vec<String> = r.args.iter().map(|&a| text(a)).collect();
+    format!("{}({}) [{}]", r.func, args.join(", "), r.case)
+}
+
+#[test]
+fn rust_twins_give_the_documented_answers() {
+    let mut wrong = Vec::new();
+    for r in ROWS {
+        let got = (func(r.func).twin)(r.args);
+        if !same(got, r.expect) {
+            wrong.push(format!(
+                "{}: Rust gives {}, documented {}",
+                describe(r),
+                text(got),
+                text(r.expect)
+            ));
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn wgsl_gives_the_documented_answers_on_the_adapter() {
+    let mut wrong = Vec::new();
+    let mut ran = 0;
+    for f in FUNCS {
+        let Some((source, name)) = f.wgsl else {
+            continue;
+        };
+        let rows = rows_of(f);
+        let kernel = gpu()
+            .kernel(source, name)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        // All of a function's rows in one dispatch: one column per parameter.
+        let arity = kernel.signature().params.len();
+        let mut columns = vec![Vec::new(); arity];
+        for r in &rows {
+            assert_eq!(r.args.len(), arity, "{}: wrong argument count", describe(r));
+            for (col, &a) in columns.iter_mut().zip(r.args) {
+                words(a, col);
+            }
+        }
+        let args: Vec<Arg> = columns.iter().map(|c| Arg::column(c)).collect();
+        let out = kernel
+            .run(&args, rows.len() as u64)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let width = kernel.signature().result.words();
+        for (r, w) in rows.iter().zip(out.words().chunks(width)) {
+            let got = from_words(r.expect, w);
+            ran += 1;
+            if !same(got, r.expect) {
+                wrong.push(format!(
+                    "{}: WGSL `{name}` gives {}, documented {}",
+                    describe(r),
+                    text(got),
+                    text(r.expect)
+                ));
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert!(ran > 0, "no WGSL row ran");
+}
+
+#[test]
+fn every_function_has_rows_and_every_row_a_function() {
+    for f in FUNCS {
+        assert!(!rows_of(f).is_empty(), "`{}` has no bad-input rows", f.name);
+    }
+    for r in ROWS {
+        func(r.func);
+    }
+}
+
+/// A new WGSL function cannot escape the contract: every function in every shipped file must
+/// be the WGSL side of a row's function (or a listed private helper).
+#[test]
+fn every_shipped_wgsl_function_is_in_the_table() {
+    let mut missing = Vec::new();
+    for file in prepass::wgsl::FILES {
+        let checked = prepass::wgsl::parse_and_validate(file.source)
+            .unwrap_or_else(|e| panic!("{}: {e}", file.name));
+        for (_, f) in checked.module.functions.iter() {
+            let name = f.name.as_deref().unwrap_or("<unnamed>");
+            let covered = FUNCS.iter().any(|g| {
+                g.wgsl
+                    .is_some_and(|(src, n)| src == file.source && n == name)
+            });
+            if !covered && !WGSL_HELPERS.iter().any(|(h, _)| *h == name) {
+                missing.push(format!("{}: `{name}`", file.name));
+            }
+        }
+    }
+    assert!(
+        missing.is_empty(),
+        "WGSL functions without bad-input rows (add them to tests/bad_input/rows.rs):\n{}",
+        missing.join("\n")
+    );
+}
+
+fn table_line(r: &Row) -> String {
+    let f = func(r.func);
+    let args: Vec<String> = r.args.iter().map(|&a| text(a)).collect();
+    let checked = if f.wgsl.is_some() {
+        "WGSL + Rust"
+    } else {
+        "Rust (no WGSL)"
+    };
+    format!(
+        "| `{}` | {} | `{}` | `{}` | {} | {} |",
+        r.func,
+        r.case,
+        args.join(", "),
+        text(r.expect),
+        checked,
+        r.why
+    )
+}
+
+const BEGIN: &str = "<!-- bad-input-table:begin -->";
+const END: &str = "<!-- bad-input-table:end -->";
+
+#[test]
+fn readme_table_is_exactly_the_rows() {
+    let readme = include_str!("../README.md");
+    let want: Vec<String> = ROWS.iter().map(table_line).collect();
+    let header = "| function | bad input | arguments | WGSL and Rust return | checked | why |\n\
+                  |---|---|---|---|---|---|";
+    let expected = format!("{BEGIN}\n{header}\n{}\n{END}", want.join("\n"));
+    let found = readme
+        .find(BEGIN)
+        .zip(readme.find(END))
+        .map(|(a, b)| &readme[a..b + END.len()]);
+    assert_eq!(
+        found,
+        Some(expected.as_str()),
+        "README.md's bad-input table differs from tests/bad_input/rows.rs; replace the block \
+         between the markers with:\n\n{expected}\n"
+    );
+}
