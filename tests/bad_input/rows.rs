@@ -9,14 +9,18 @@
 
 use glam::Vec3;
 use prepass::depth;
+use prepass::linear_depth as ld;
+use prepass::position as pos;
 use prepass::precision::inputs::{self, ChannelError};
 use prepass::precision::metrics;
+use prepass::projection::{DepthConvention, Projection};
 
 /// A value in the table: an argument or a result.
 #[derive(Clone, Copy, Debug)]
 pub enum V {
     F32(f32),
     U32(u32),
+    Vec2([f32; 2]),
     Vec3([f32; 3]),
     Vec4([f32; 4]),
     F64(f64),
@@ -28,6 +32,8 @@ pub enum V {
     OptI64(Option<i64>),
     OptU64(Option<u64>),
     Channel(ChannelError),
+    /// A Rust-only result described in words (e.g. which field a builder rejects).
+    Text(&'static str),
 }
 
 impl V {
@@ -73,6 +79,12 @@ impl V {
             v => panic!("{v:?} is not a ChannelError"),
         }
     }
+    pub fn vec2(self) -> glam::Vec2 {
+        match self {
+            V::Vec2(x) => glam::Vec2::from(x),
+            v => panic!("{v:?} is not a vec2"),
+        }
+    }
     pub fn vec3(self) -> Vec3 {
         match self {
             V::Vec3(x) => Vec3::from(x),
@@ -89,6 +101,27 @@ pub struct Func {
     pub wgsl: Option<(&'static str, &'static str)>,
     /// The Rust twin.
     pub twin: fn(&[V]) -> V,
+}
+
+/// `world_ray` takes a `mat3x3`, which the harness cannot feed: a wrapper builds it from columns.
+const WORLD_RAY_WGSL: &str = concat!(
+    include_str!("../../wgsl/position.wgsl"),
+    "\nfn bad_input_world_ray(ray: vec3<f32>, c0: vec3<f32>, c1: vec3<f32>, c2: vec3<f32>) -> vec3<f32> {\n",
+    "    return world_ray(ray, mat3x3<f32>(c0, c1, c2));\n}\n"
+);
+
+/// `Projection::new` as a table value: `Ok` or the rejected field.
+fn projection_new(a: &[V]) -> V {
+    let conv = if a[2].bool() {
+        DepthConvention::Reversed
+    } else {
+        DepthConvention::Standard
+    };
+    match Projection::new(a[0].f32(), a[1].f32(), conv) {
+        Ok(_) => V::Text("Ok"),
+        Err(e) if e.field == "near" => V::Text("Err(near)"),
+        Err(_) => V::Text("Err(far)"),
+    }
 }
 
 /// WGSL's builtin `unpack4x8unorm` (twin: `depth::unpack4x8unorm`) behind a callable name.
@@ -193,11 +226,148 @@ pub const FUNCS: &[Func] = &[
             ))
         },
     },
+    Func {
+        name: "linear_depth::view_z_from_depth24",
+        wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth24")),
+        twin: |a| V::F32(ld::view_z_from_depth24(a[0].u32(), a[1].f32(), a[2].f32())),
+    },
+    Func {
+        name: "linear_depth::view_z_from_depth24_consts",
+        wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth24_consts")),
+        twin: |a| {
+            V::F32(ld::view_z_from_depth24_consts(
+                a[0].u32(),
+                a[1].vec2().to_array(),
+            ))
+        },
+    },
+    Func {
+        name: "linear_depth::view_z_from_depth",
+        wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth")),
+        twin: |a| V::F32(ld::view_z_from_depth(a[0].f32(), a[1].f32(), a[2].f32())),
+    },
+    Func {
+        name: "linear_depth::view_z_from_depth_consts",
+        wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth_consts")),
+        twin: |a| {
+            V::F32(ld::view_z_from_depth_consts(
+                a[0].f32(),
+                a[1].vec3().to_array(),
+            ))
+        },
+    },
+    Func {
+        name: "linear_depth::view_z_from_reversed_depth",
+        wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_reversed_depth")),
+        twin: |a| {
+            V::F32(ld::view_z_from_reversed_depth(
+                a[0].f32(),
+                a[1].f32(),
+                a[2].f32(),
+            ))
+        },
+    },
+    Func {
+        name: "linear_depth::view_z_from_reversed_depth_consts",
+        wgsl: Some((
+            prepass::wgsl::LINEAR_DEPTH,
+            "view_z_from_reversed_depth_consts",
+        )),
+        twin: |a| {
+            V::F32(ld::view_z_from_reversed_depth_consts(
+                a[0].f32(),
+                a[1].vec3().to_array(),
+            ))
+        },
+    },
+    Func {
+        name: "projection::Projection::new",
+        wgsl: None,
+        twin: projection_new,
+    },
+    Func {
+        name: "position::frustum_ray",
+        wgsl: Some((prepass::wgsl::POSITION, "frustum_ray")),
+        twin: |a| V::Vec3(pos::frustum_ray(a[0].vec2(), a[1].vec2()).to_array()),
+    },
+    Func {
+        name: "position::frustum_ray_rh",
+        wgsl: Some((prepass::wgsl::POSITION, "frustum_ray_rh")),
+        twin: |a| V::Vec3(pos::frustum_ray_rh(a[0].vec2(), a[1].vec2()).to_array()),
+    },
+    Func {
+        name: "position::view_position",
+        wgsl: Some((prepass::wgsl::POSITION, "view_position")),
+        twin: |a| V::Vec3(pos::view_position(a[0].vec3(), a[1].f32()).to_array()),
+    },
+    Func {
+        name: "position::fullscreen_triangle_ndc",
+        wgsl: Some((prepass::wgsl::POSITION, "fullscreen_triangle_ndc")),
+        twin: |a| V::Vec2(pos::fullscreen_triangle_ndc(a[0].u32()).to_array()),
+    },
+    Func {
+        name: "position::fullscreen_triangle_ray",
+        wgsl: Some((prepass::wgsl::POSITION, "fullscreen_triangle_ray")),
+        twin: |a| V::Vec3(pos::fullscreen_triangle_ray(a[0].u32(), a[1].vec2()).to_array()),
+    },
+    Func {
+        name: "position::fullscreen_triangle_ray_rh",
+        wgsl: Some((prepass::wgsl::POSITION, "fullscreen_triangle_ray_rh")),
+        twin: |a| V::Vec3(pos::fullscreen_triangle_ray_rh(a[0].u32(), a[1].vec2()).to_array()),
+    },
+    Func {
+        name: "position::ndc_from_uv",
+        wgsl: Some((prepass::wgsl::POSITION, "ndc_from_uv")),
+        twin: |a| V::Vec2(pos::ndc_from_uv(a[0].vec2()).to_array()),
+    },
+    Func {
+        name: "position::world_ray",
+        wgsl: Some((WORLD_RAY_WGSL, "bad_input_world_ray")),
+        twin: |a| {
+            let m = glam::Mat3::from_cols(a[1].vec3(), a[2].vec3(), a[3].vec3());
+            V::Vec3(pos::world_ray(a[0].vec3(), m).to_array())
+        },
+    },
+    Func {
+        name: "position::camera_relative_position",
+        wgsl: Some((prepass::wgsl::POSITION, "camera_relative_position")),
+        twin: |a| V::Vec3(pos::camera_relative_position(a[0].vec3(), a[1].f32()).to_array()),
+    },
+    Func {
+        name: "position::world_position",
+        wgsl: Some((prepass::wgsl::POSITION, "world_position")),
+        twin: |a| V::Vec3(pos::world_position(a[0].vec3(), a[1].f32(), a[2].vec3()).to_array()),
+    },
 ];
 
 /// WGSL functions in `wgsl/` that are not public API (private helpers a file needs), exempt
 /// from "every WGSL function has rows". Each needs a reason.
-pub const WGSL_HELPERS: &[(&str, &str)] = &[];
+pub const WGSL_HELPERS: &[(&str, &str)] = &[
+    (
+        "ld_is_nan",
+        "private to linear_depth.wgsl: NaN test on bits, exercised by every NaN row",
+    ),
+    (
+        "ld_is_inf",
+        "private to linear_depth.wgsl: infinite-far test, exercised by the far = +Inf rows",
+    ),
+    (
+        "ld_positive_inf",
+        "private to linear_depth.wgsl: builds +Inf from bits for the far-plane rows",
+    ),
+    (
+        "ld_nan",
+        "private to linear_depth.wgsl: builds NaN from bits for the NaN rows",
+    ),
+    (
+        "ld_near_over_far",
+        "private to linear_depth.wgsl: n/f, 0 when far = +Inf (infinite-far rows)",
+    ),
+    (
+        "ld_divide_or_inf",
+        "private to linear_depth.wgsl: n/s, +Inf at s = 0 (far-plane rows)",
+    ),
+];
 
 /// One documented answer.
 pub struct Row {
@@ -248,6 +418,50 @@ pub const ROWS: &[Row] = &[
     // unpack4x8unorm: every u32 is four valid bytes.
     Row { func: "depth::unpack4x8unorm", case: "all ones", args: &[V::U32(u32::MAX)], expect: V::Vec4([1.0; 4]), why: "255/255 = 1 exactly" },
     Row { func: "depth::unpack4x8unorm", case: "zero", args: &[V::U32(0)], expect: V::Vec4([0.0; 4]), why: "+0.0 lanes" },
+    // Linear depth (near 1, far 2 unless stated: every expected value below is exact in f32).
+    Row { func: "linear_depth::view_z_from_depth24", case: "out-of-range code 2^24", args: &[V::U32(MAX24 + 1), V::F32(1.0), V::F32(2.0)], expect: V::F32(2.0), why: "saturates to the far plane" },
+    Row { func: "linear_depth::view_z_from_depth24", case: "out-of-range code, far +Inf", args: &[V::U32(u32::MAX), V::F32(1.0), V::F32(INF)], expect: V::F32(INF), why: "far code of an infinite projection → +Inf" },
+    Row { func: "linear_depth::view_z_from_depth24", case: "zero", args: &[V::U32(0), V::F32(1.0), V::F32(2.0)], expect: V::F32(1.0), why: "code 0 = near plane" },
+    Row { func: "linear_depth::view_z_from_depth24_consts", case: "out-of-range code u32::MAX", args: &[V::U32(u32::MAX), V::Vec2([16_777_215.0, 0.5])], expect: V::F32(2.0), why: "saturates to the far plane" },
+    Row { func: "linear_depth::view_z_from_depth24_consts", case: "far +Inf (n/f = 0)", args: &[V::U32(MAX24), V::Vec2([16_777_215.0, 0.0])], expect: V::F32(INF), why: "far code → +Inf" },
+    Row { func: "linear_depth::view_z_from_depth", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(2.0)], expect: V::F32(NAN), why: "NaN (found from its bits)" },
+    Row { func: "linear_depth::view_z_from_depth", case: "+Inf", args: &[V::F32(INF), V::F32(1.0), V::F32(2.0)], expect: V::F32(2.0), why: "clamped to 1 = far" },
+    Row { func: "linear_depth::view_z_from_depth", case: "−Inf", args: &[V::F32(-INF), V::F32(1.0), V::F32(2.0)], expect: V::F32(1.0), why: "clamped to 0 = near" },
+    Row { func: "linear_depth::view_z_from_depth", case: "subnormal", args: &[V::F32(SUB_MAX), V::F32(1.0), V::F32(2.0)], expect: V::F32(1.0), why: "near, flushed or not" },
+    Row { func: "linear_depth::view_z_from_depth", case: "out of range", args: &[V::F32(1.5), V::F32(1.0), V::F32(INF)], expect: V::F32(INF), why: "clamped to 1; infinite far → +Inf" },
+    Row { func: "linear_depth::view_z_from_depth_consts", case: "NaN", args: &[V::F32(NAN), V::Vec3([1.0, 0.5, 0.5])], expect: V::F32(NAN), why: "NaN" },
+    Row { func: "linear_depth::view_z_from_depth_consts", case: "out of range", args: &[V::F32(-3.0), V::Vec3([1.0, 0.5, 0.5])], expect: V::F32(1.0), why: "clamped to 0 = near" },
+    Row { func: "linear_depth::view_z_from_reversed_depth", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(2.0)], expect: V::F32(NAN), why: "NaN" },
+    Row { func: "linear_depth::view_z_from_reversed_depth", case: "+Inf", args: &[V::F32(INF), V::F32(1.0), V::F32(2.0)], expect: V::F32(1.0), why: "clamped to 1 = near" },
+    Row { func: "linear_depth::view_z_from_reversed_depth", case: "−Inf", args: &[V::F32(-INF), V::F32(1.0), V::F32(2.0)], expect: V::F32(2.0), why: "clamped to 0 = far" },
+    Row { func: "linear_depth::view_z_from_reversed_depth", case: "subnormal", args: &[V::F32(SUB_MIN), V::F32(1.0), V::F32(2.0)], expect: V::F32(2.0), why: "far, flushed or not" },
+    Row { func: "linear_depth::view_z_from_reversed_depth", case: "zero, far +Inf (sky)", args: &[V::F32(0.0), V::F32(1.0), V::F32(INF)], expect: V::F32(INF), why: "the sky of reversed-infinite → +Inf" },
+    Row { func: "linear_depth::view_z_from_reversed_depth_consts", case: "NaN", args: &[V::F32(NAN), V::Vec3([1.0, 0.5, 0.5])], expect: V::F32(NAN), why: "NaN" },
+    Row { func: "linear_depth::view_z_from_reversed_depth_consts", case: "−0.0, infinite (k = (1, 1, 0))", args: &[V::F32(-0.0), V::Vec3([1.0, 1.0, 0.0])], expect: V::F32(INF), why: "the sky → +Inf" },
+    Row { func: "projection::Projection::new", case: "NaN near", args: &[V::F32(NAN), V::F32(1.0), V::Bool(false)], expect: V::Text("Err(near)"), why: "names the field" },
+    Row { func: "projection::Projection::new", case: "zero near", args: &[V::F32(0.0), V::F32(1.0), V::Bool(true)], expect: V::Text("Err(near)"), why: "near must be > 0" },
+    Row { func: "projection::Projection::new", case: "subnormal near", args: &[V::F32(SUB_MAX), V::F32(1.0), V::Bool(false)], expect: V::Text("Err(near)"), why: "near must be a normal float" },
+    Row { func: "projection::Projection::new", case: "+Inf near", args: &[V::F32(INF), V::F32(INF), V::Bool(false)], expect: V::Text("Err(near)"), why: "near must be finite" },
+    Row { func: "projection::Projection::new", case: "NaN far", args: &[V::F32(1.0), V::F32(NAN), V::Bool(false)], expect: V::Text("Err(far)"), why: "names the field" },
+    Row { func: "projection::Projection::new", case: "far ≤ near", args: &[V::F32(1.0), V::F32(1.0), V::Bool(false)], expect: V::Text("Err(far)"), why: "far must exceed near" },
+    Row { func: "projection::Projection::new", case: "+Inf far", args: &[V::F32(0.1), V::F32(INF), V::Bool(true)], expect: V::Text("Ok"), why: "infinite projection" },
+    // Position rebuild: plain products and sums; NaN and ±Inf propagate as IEEE arithmetic does.
+    Row { func: "position::frustum_ray", case: "NaN", args: &[V::Vec2([NAN, 0.5]), V::Vec2([1.0, 2.0])], expect: V::Vec3([NAN, 1.0, 1.0]), why: "propagates per lane; z stays 1" },
+    Row { func: "position::frustum_ray", case: "+Inf", args: &[V::Vec2([INF, -INF]), V::Vec2([1.0, 2.0])], expect: V::Vec3([INF, -INF, 1.0]), why: "propagates per lane" },
+    Row { func: "position::frustum_ray_rh", case: "zero vector", args: &[V::Vec2([0.0, 0.0]), V::Vec2([0.0, 0.0])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "the view axis" },
+    Row { func: "position::view_position", case: "+Inf view z (sky)", args: &[V::Vec3([0.5, 0.0, -1.0]), V::F32(INF)], expect: V::Vec3([INF, NAN, -INF]), why: "0·∞ = NaN: skip sky pixels" },
+    Row { func: "position::view_position", case: "NaN view z", args: &[V::Vec3([0.5, 0.0, 1.0]), V::F32(NAN)], expect: V::Vec3([NAN, NAN, NAN]), why: "propagates" },
+    Row { func: "position::fullscreen_triangle_ndc", case: "out-of-range index 3", args: &[V::U32(3)], expect: V::Vec2([3.0, 3.0]), why: "low two bits: off screen" },
+    Row { func: "position::fullscreen_triangle_ndc", case: "out-of-range index u32::MAX", args: &[V::U32(u32::MAX)], expect: V::Vec2([3.0, 3.0]), why: "low two bits" },
+    Row { func: "position::fullscreen_triangle_ray", case: "out-of-range index 6", args: &[V::U32(6), V::Vec2([1.0, 0.5])], expect: V::Vec3([-1.0, 1.5, 1.0]), why: "index 6 reads as 2" },
+    Row { func: "position::fullscreen_triangle_ray_rh", case: "NaN", args: &[V::U32(0), V::Vec2([NAN, 1.0])], expect: V::Vec3([NAN, -1.0, -1.0]), why: "propagates per lane" },
+    Row { func: "position::ndc_from_uv", case: "out of range", args: &[V::Vec2([2.0, -1.0])], expect: V::Vec2([3.0, 3.0]), why: "not clamped" },
+    Row { func: "position::ndc_from_uv", case: "NaN", args: &[V::Vec2([NAN, 0.25])], expect: V::Vec2([NAN, 0.5]), why: "propagates per lane" },
+    Row { func: "position::world_ray", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0]), V::Vec3([1.0, 0.0, 0.0]), V::Vec3([0.0, 1.0, 0.0]), V::Vec3([0.0, 0.0, 1.0])], expect: V::Vec3([NAN, NAN, NAN]), why: "0·NaN = NaN in every lane" },
+    Row { func: "position::world_ray", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0]), V::Vec3([1.0, 0.0, 0.0]), V::Vec3([0.0, 1.0, 0.0]), V::Vec3([0.0, 0.0, 1.0])], expect: V::Vec3([0.0, 0.0, 0.0]), why: "zero" },
+    Row { func: "position::camera_relative_position", case: "+Inf view z (sky)", args: &[V::Vec3([1.0, 0.0, -1.0]), V::F32(INF)], expect: V::Vec3([INF, NAN, -INF]), why: "0·∞ = NaN: skip sky pixels" },
+    Row { func: "position::world_position", case: "+Inf camera", args: &[V::Vec3([1.0, 0.0, 0.0]), V::F32(1.0), V::Vec3([INF, 0.0, 0.0])], expect: V::Vec3([INF, 0.0, 0.0]), why: "propagates" },
+    Row { func: "position::world_position", case: "NaN view z", args: &[V::Vec3([1.0, 0.0, 0.0]), V::F32(NAN), V::Vec3([1.0, 2.0, 3.0])], expect: V::Vec3([NAN, NAN, NAN]), why: "propagates" },
     // Exact references (Rust only).
     Row { func: "depth::exact::hyperbolic_depth", case: "out-of-range code 2^24", args: &[V::U32(MAX24 + 1)], expect: V::F64(1.0), why: "saturates like the twin" },
     Row { func: "depth::exact::hyperbolic_depth", case: "out-of-range code u32::MAX", args: &[V::U32(u32::MAX)], expect: V::F64(1.0), why: "saturates like the twin" },
