@@ -44,3 +44,20 @@ for c in CODES:
     write("differential", 0, words(c))
     for offs in (b"\x00\x00\x00", b"\x7f\x7f\x7f", b"\x80\x80\x80", b"\x7f\x80\x7f"):
         write("differential", 1, words(c) + offs)
+
+# differential (appended entries): 2 view_z_from_depth24 vs exact (code, near, far, convention byte),
+# 3 view_z_from_depth / _reversed_ vs exact (depth, near, far, convention byte)
+PROJ = [(f(1e-4), f(1e5)), (f(0.1), INF), (f(10.0), f(100.0)), (f(1.0), f(1e9)), (SUBMAX, f(1.0)),
+        (NAN, f(1.0)), (f(1e-4), f(1e36)), (f(1e32), INF)]
+for (n, fa) in PROJ:
+    for c in (0, 1, MAX24 - 1, MAX24, 0xFFFFFFFF):
+        write("differential", 2, words(c, n, fa) + bytes([0]))
+    for z in (PZ, SUB, f(0.5), 0x3F7FFFFF, f(1.0), INF, NINF):
+        for conv in (0, 1):
+            write("differential", 3, words(z, n, fa) + bytes([conv]))
+# builders: 0 Projection::new (near, far, convention byte), 1 Scene (choice byte, w, h, samples)
+for (n, fa) in PROJ + [(PZ, f(1.0)), (f(1.0), f(1.0)), (f(2.0), f(1.0)), (INF, INF), (f(1.0), NAN)]:
+    for conv in (0, 1):
+        write("builders", 0, words(n, fa) + bytes([conv]))
+for b in range(0, 128, 5):
+    write("builders", 1, bytes([b]) + words(0xFFFFFFFF, 0x12345678) + bytes([7]))

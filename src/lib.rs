@@ -35,6 +35,6 @@ pub mod sweep;
 pub mod wgsl;
 
 /// The README's code examples, compiled and run as doctests so they cannot rot.
-#[cfg(all(doctest, feature = "harness"))]
+#[cfg(all(doctest, feature = "harness", feature = "proptest"))]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;

@@ -44,9 +44,10 @@ pub struct Projection {
 }
 
 impl Projection {
-    /// Validate and build. Errors name the field: `near` must be finite and > 0 (a positive
-    /// normal float: subnormal near planes lose precision in every formula); `far` must be > near
-    /// (`+∞` allowed, for an infinite projection) and not NaN.
+    /// Validate and build. Errors name the field: `near` must be a positive normal float (subnormal
+    /// near planes lose precision in every formula) small enough that `near·(2^24 − 1)` is a
+    /// finite f32; `far` must be > near and not NaN, `+∞` allowed (infinite projection), and a
+    /// finite far must keep `near/far` a normal float (far/near ≤ 2^126).
     pub fn new(near: f32, far: f32, convention: DepthConvention) -> Result<Self, ProjectionError> {
         let bad = |field, reason: String| Err(ProjectionError { field, reason });
         if near.is_nan() {
@@ -58,11 +59,29 @@ impl Projection {
         if near.is_infinite() {
             return bad("near", "is infinite".into());
         }
+        // The 24-bit path scales near by 2^24 − 1 in f32: it must stay finite.
+        if f64::from(near) * f64::from(DEPTH24_MAX) > f64::from(f32::MAX) {
+            return bad(
+                "near",
+                format!("{near} is too large: near·(2^24 − 1) overflows f32"),
+            );
+        }
         if far.is_nan() {
             return bad("far", "is NaN".into());
         }
         if far <= near {
             return bad("far", format!("{far} is not greater than near = {near}"));
+        }
+        // n/f must be a normal float: a subnormal ratio loses its relative precision, and with it
+        // the error bound of every reconstruction. Such a far plane is infinite in all but name.
+        if far.is_finite() && f64::from(near) / f64::from(far) < f64::from(f32::MIN_POSITIVE) {
+            return bad(
+                "far",
+                format!(
+                    "far/near = {:e} exceeds 2^126: use an infinite far plane",
+                    f64::from(far) / f64::from(near)
+                ),
+            );
         }
         Ok(Projection {
             near,

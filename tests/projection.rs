@@ -31,13 +31,20 @@ proptest! {
     #[test]
     fn validation_never_panics_and_names_the_field(n in any::<u32>(), f in any::<u32>()) {
         let (near, far) = (f32::from_bits(n), f32::from_bits(f));
+        // The documented rules, restated: near a positive normal float with near·(2^24 − 1)
+        // finite in f32; far > near, and a finite far keeps near/far ≥ the smallest normal.
+        let (n64, f64_) = (f64::from(near), f64::from(far));
+        let near_ok = near >= f32::MIN_POSITIVE
+            && near.is_finite()
+            && n64 * 16_777_215.0 <= f64::from(f32::MAX);
+        let far_ok = far > near && (far.is_infinite() || n64 / f64_ >= f64::from(f32::MIN_POSITIVE));
         match Projection::new(near, far, DepthConvention::Standard) {
             Ok(p) => {
-                prop_assert!(near >= f32::MIN_POSITIVE && near.is_finite() && far > near);
+                prop_assert!(near_ok && far_ok);
                 prop_assert_eq!((p.near(), p.far()), (near, far));
             }
             Err(e) => {
-                let near_ok = near >= f32::MIN_POSITIVE && near.is_finite();
+                prop_assert!(!(near_ok && far_ok));
                 prop_assert_eq!(e.field, if near_ok { "far" } else { "near" });
                 prop_assert!(e.to_string().contains(e.field));
             }

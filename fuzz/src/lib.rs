@@ -16,7 +16,9 @@
 
 use glam::Vec3;
 use prepass::depth::{self, DEPTH24_MAX};
+use prepass::linear_depth as ld;
 use prepass::precision::metrics::ulp_error;
+use prepass::projection::{DepthConvention, Projection};
 
 /// The bytes of one fuzz input, read front to back; reads past the end give zeros, so every
 /// input is valid for every entry.
@@ -180,6 +182,15 @@ pub const ENCODERS: &[Entry] = &[
     },
 ];
 
+/// The documented error of a linear-depth twin against its exact f64 distance: within `bound`
+/// ULP, or `+Inf` exactly where the exact distance is beyond f32's range.
+fn distance_ok(got: f32, exact: f64, bound: f64) -> bool {
+    if (exact as f32).is_infinite() {
+        return got == f32::INFINITY;
+    }
+    ulp_error(got, exact) <= bound
+}
+
 /// Rust twins against their exact references, within the documented bound.
 pub const DIFFERENTIAL: &[Entry] = &[
     Entry {
@@ -207,10 +218,125 @@ pub const DIFFERENTIAL: &[Entry] = &[
             assert_eq!(got, code, "{rgb:?}");
         },
     },
+    Entry {
+        name: "linear_depth::view_z_from_depth24 vs exact (≤ 5 ULP: u·(3 + 2w), division correctly rounded)",
+        check: |i| {
+            let d = i.u32();
+            let Ok(p) = projection(i) else { return };
+            let got = ld::view_z_from_depth24(d, p.near(), p.far());
+            let e = ld::exact::view_z_from_depth24(d, p.near(), p.far());
+            assert!(distance_ok(got, e, 5.0), "{d:#x} {p:?}: {got} vs {e}");
+        },
+    },
+    Entry {
+        name: "linear_depth::view_z_from_depth / _reversed_ vs exact (≤ 4 ULP: u·(2 + 2w))",
+        check: |i| {
+            let z = i.f32();
+            let Ok(p) = projection(i) else { return };
+            if z.is_nan() {
+                return; // NaN → NaN is a decoder property, not an error bound
+            }
+            let (n, f) = (p.near(), p.far());
+            let (got, e) = match p.convention() {
+                DepthConvention::Standard => (
+                    ld::view_z_from_depth(z, n, f),
+                    ld::exact::view_z_from_depth(z, n, f),
+                ),
+                DepthConvention::Reversed => (
+                    ld::view_z_from_reversed_depth(z, n, f),
+                    ld::exact::view_z_from_reversed_depth(z, n, f),
+                ),
+            };
+            assert!(distance_ok(got, e, 4.0), "{z:?} {p:?}: {got} vs {e}");
+        },
+    },
+];
+
+/// Read a `Projection` from fuzz bytes: near/far bit patterns and a convention byte.
+fn projection(i: &mut Input) -> Result<Projection, prepass::projection::ProjectionError> {
+    let (near, far) = (i.f32(), i.f32());
+    let conv = if i.u8() & 1 == 1 {
+        DepthConvention::Reversed
+    } else {
+        DepthConvention::Standard
+    };
+    Projection::new(near, far, conv)
+}
+
+/// Builders: arbitrary input → `Ok` with usable constants, or an `Err` naming a field; never a
+/// panic.
+pub const BUILDERS: &[Entry] = &[
+    Entry {
+        name: "projection::Projection::new",
+        check: |i| match projection(i) {
+            Ok(p) => {
+                // Documented: every per-pixel constant is finite and n·(2^24 − 1), n/f are normal
+                // or zero (n/f = 0 exactly when far = +Inf).
+                let k24 = p.depth24_consts();
+                let k = p.depth_consts();
+                let kr = p.reversed_depth_consts();
+                for c in k24.iter().chain(&k).chain(&kr) {
+                    assert!(c.is_finite() && *c >= 0.0, "{p:?}: constant {c}");
+                }
+                assert!(k24[0].is_normal(), "{p:?}");
+                assert_eq!(k24[1] == 0.0, p.is_infinite(), "{p:?}");
+                assert!(k24[1] == 0.0 || k24[1].is_normal(), "{p:?}: n/f subnormal");
+            }
+            Err(e) => {
+                assert!(e.field == "near" || e.field == "far", "{e}");
+                assert!(e.to_string().contains(e.field));
+            }
+        },
+    },
+    Entry {
+        name: "scene::Scene::{roots, gbuffer}",
+        check: |i| {
+            use prepass::scene::{DepthChoice, DepthStorage, PositionChoice, Scene};
+            let b = i.u8();
+            let storage = [
+                DepthStorage::Float32,
+                DepthStorage::Code24,
+                DepthStorage::Code24Rgba8,
+            ][usize::from(b % 3)];
+            let convention = if b & 4 == 0 {
+                DepthConvention::Standard
+            } else {
+                DepthConvention::Reversed
+            };
+            let position = [
+                PositionChoice::None,
+                PositionChoice::View,
+                PositionChoice::World,
+                PositionChoice::CameraRelative,
+            ][usize::from((b >> 3) % 4)];
+            let scene = Scene {
+                depth: DepthChoice {
+                    storage,
+                    convention,
+                    infinite_far: b & 0x40 != 0,
+                },
+                position,
+            };
+            match (scene.roots(), scene.gbuffer()) {
+                (Ok(roots), Ok(g)) => {
+                    assert!(!roots.is_empty());
+                    let (w, h, s) = (
+                        u64::from(i.u32() >> 16),
+                        u64::from(i.u32() >> 16),
+                        u64::from(i.u8() % 8 + 1),
+                    );
+                    assert_eq!(g.memory_bytes(w, h, s), g.bytes_per_pixel() * w * h * s);
+                }
+                (Err(e), Err(_)) => assert!(!e.fields.is_empty(), "{e}"),
+                (r, g) => panic!("roots and gbuffer disagree on validity: {r:?} / {g:?}"),
+            }
+        },
+    },
 ];
 
 /// Every table with the name of its fuzz target (`fuzz_targets/<name>.rs`, `corpus/<name>/`).
 pub const TABLES: &[(&str, &[Entry])] = &[
+    ("builders", BUILDERS),
     ("decoders", DECODERS),
     ("encoders", ENCODERS),
     ("differential", DIFFERENTIAL),
@@ -241,7 +367,14 @@ mod tests {
         let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
         let mut files: Vec<String> = std::fs::read_dir(root.join("fuzz_targets"))
             .unwrap()
-            .map(|e| e.unwrap().path().file_stem().unwrap().to_string_lossy().into_owned())
+            .map(|e| {
+                e.unwrap()
+                    .path()
+                    .file_stem()
+                    .unwrap()
+                    .to_string_lossy()
+                    .into_owned()
+            })
             .collect();
         files.sort();
         let mut names: Vec<String> = TABLES.iter().map(|(n, _)| n.to_string()).collect();

@@ -444,6 +444,8 @@ pub const ROWS: &[Row] = &[
     Row { func: "projection::Projection::new", case: "+Inf near", args: &[V::F32(INF), V::F32(INF), V::Bool(false)], expect: V::Text("Err(near)"), why: "near must be finite" },
     Row { func: "projection::Projection::new", case: "NaN far", args: &[V::F32(1.0), V::F32(NAN), V::Bool(false)], expect: V::Text("Err(far)"), why: "names the field" },
     Row { func: "projection::Projection::new", case: "far ≤ near", args: &[V::F32(1.0), V::F32(1.0), V::Bool(false)], expect: V::Text("Err(far)"), why: "far must exceed near" },
+    Row { func: "projection::Projection::new", case: "out of range: near·(2^24 − 1) overflows", args: &[V::F32(1e32), V::F32(INF), V::Bool(false)], expect: V::Text("Err(near)"), why: "the 24-bit path would overflow" },
+    Row { func: "projection::Projection::new", case: "out of range: far/near > 2^126", args: &[V::F32(1e-4), V::F32(1e36), V::Bool(false)], expect: V::Text("Err(far)"), why: "n/f would be subnormal: use +Inf" },
     Row { func: "projection::Projection::new", case: "+Inf far", args: &[V::F32(0.1), V::F32(INF), V::Bool(true)], expect: V::Text("Ok"), why: "infinite projection" },
     // Position rebuild: plain products and sums; NaN and ±Inf propagate as IEEE arithmetic does.
     Row { func: "position::frustum_ray", case: "NaN", args: &[V::Vec2([NAN, 0.5]), V::Vec2([1.0, 2.0])], expect: V::Vec3([NAN, 1.0, 1.0]), why: "propagates per lane; z stays 1" },
