@@ -21,7 +21,7 @@ mod linear_depth;
 mod plot;
 
 use ctx::{Ctx, Options};
-use prepass::harness::{Gpu, NO_ADAPTER_FIX};
+use prepass::harness::Gpu;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -88,12 +88,13 @@ fn run(ctx: &mut Ctx) -> Result<(), String> {
             s
         }
         Err(e) => format!(
-            "- Adapter: **none** ({e}).\n\n\
+            "- Adapter: **none** — {e}\n\n\
              **Columns and tables marked \"{}\" were not computed**: the adapter-side error of \
              every WGSL function, the code-recovery tables, and GPU time per evaluation. \
              Everything computed on the CPU is here: the Rust twins' errors and ns/call, the \
              SPIR-V instruction counts, depth resolution and the CPU linear-depth curves. \
-             To get an adapter: {NO_ADAPTER_FIX}. Then run `bash .ci/errplot` again.",
+             To fill them in, get an adapter (the fix above; `bash .ci/setup-adapter` installs \
+             lavapipe on Debian/Ubuntu) and run `bash .ci/errplot` again.",
             ctx::NEEDS_ADAPTER
         ),
     };
