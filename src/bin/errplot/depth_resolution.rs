@@ -134,7 +134,9 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     ctx.line(format!(
         "Distance between neighbouring stored depth values, mapped back to view space, near = \
          {NEAR} m, far = {FAR} m (the infinite projection has no far plane). Exact projection \
-         maths in f64; no adapter involved. Data: `depth_resolution.csv`."
+         maths in f64; no adapter involved. Data: `depth_resolution.csv`. Away from the near \
+         plane the three standard/unorm curves coincide (a unorm step and an f32 ULP near 1 are \
+         both about 2^-24): only a float buffer with reversed Z gains."
     ));
     ctx.line("");
     let at = |layout: Layout, z: f64| crate::ctx::num(layout.resolution(z));

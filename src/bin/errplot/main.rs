@@ -25,9 +25,12 @@ use prepass::harness::Gpu;
 use std::path::PathBuf;
 use std::time::Instant;
 
+/// A section of the report: writes into the context, or fails with a message.
+type Section = fn(&mut Ctx) -> Result<(), String>;
+
 /// The report's sections in order; each writes its Markdown, CSV and plots and registers its
 /// encoding variants. The cost table (which measures the registered variants) comes last.
-const SECTIONS: &[(&str, fn(&mut Ctx) -> Result<(), String>)] = &[
+const SECTIONS: &[(&str, Section)] = &[
     ("depth resolution", depth_resolution::section),
     ("linear depth", linear_depth::section),
     ("24-bit depth", depth24::section),

@@ -101,6 +101,9 @@ pub struct ErrorImage {
     pub extent: [(f64, f64); 2],
 }
 
+/// One histogram bin: `(lower edge, upper edge, count)`.
+pub type Bin = (f64, f64, u64);
+
 /// A histogram with a logarithmic count axis.
 #[derive(Clone, Debug)]
 #[allow(dead_code)] // first user: the normal-encoding section (error histograms)
@@ -109,8 +112,8 @@ pub struct Histogram {
     pub title: String,
     /// x-axis label, with units.
     pub x_label: String,
-    /// Named series of `(bin lower edge, bin upper edge, count)`.
-    pub series: Vec<(String, Vec<(f64, f64, u64)>)>,
+    /// Named series of bins.
+    pub series: Vec<(String, Vec<Bin>)>,
 }
 
 /// Anything the report draws.
@@ -220,6 +223,7 @@ fn lines<DB: DrawingBackend>(c: &LineChart, root: &DrawingArea<DB, Shift>) -> Dr
     let mut chart = ChartBuilder::on(root)
         .caption(&c.title, (FAMILY, 22))
         .margin(14)
+        .margin_right(40)
         .x_label_area_size(50)
         .y_label_area_size(80)
         .build_cartesian_2d((xs.0..xs.1).log_scale(), (ys.0..ys.1).log_scale())?;
@@ -264,6 +268,7 @@ fn scatter<DB: DrawingBackend>(c: &Scatter, root: &DrawingArea<DB, Shift>) -> Dr
     let mut chart = ChartBuilder::on(root)
         .caption(&c.title, (FAMILY, 22))
         .margin(14)
+        .margin_right(40)
         .x_label_area_size(50)
         .y_label_area_size(80)
         .build_cartesian_2d(
@@ -346,6 +351,7 @@ fn image<DB: DrawingBackend>(c: &ErrorImage, root: &DrawingArea<DB, Shift>) -> D
     let mut chart = ChartBuilder::on(&main)
         .caption(&c.title, (FAMILY, 22))
         .margin(14)
+        .margin_right(40)
         .x_label_area_size(50)
         .y_label_area_size(70)
         .build_cartesian_2d(x0..x1, y0..y1)?;
@@ -406,6 +412,7 @@ fn histogram<DB: DrawingBackend>(c: &Histogram, root: &DrawingArea<DB, Shift>) -
     let mut chart = ChartBuilder::on(root)
         .caption(&c.title, (FAMILY, 22))
         .margin(14)
+        .margin_right(40)
         .x_label_area_size(50)
         .y_label_area_size(80)
         .build_cartesian_2d(x0..x1, (0.5..top).log_scale())?;
