@@ -84,6 +84,15 @@ struct Costs {
     spirv: Option<usize>,
 }
 
+/// A CSV field, quoted (RFC 4180) when it holds a comma, a quote or a line break.
+pub fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
 /// Measure every registered variant and write the table, `error_vs_cost.csv` and the Pareto
 /// plots.
 pub fn section(ctx: &mut Ctx) -> Result<(), String> {
@@ -220,14 +229,14 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         let _ = writeln!(
             csv,
             "{},{},{},{},{},{},{},{},{},{},{},{},{}",
-            v.family,
-            v.name,
+            csv_field(v.family),
+            csv_field(&v.name),
             v.bits,
-            v.unit,
+            csv_field(v.unit),
             opt(e.map(|e| e.max)),
             opt(e.map(|e| e.mean())),
             opt(e.map(|e| e.rms())),
-            v.error_from,
+            csv_field(&v.error_from),
             opt(c.gpu_ns),
             opt(c.gpu_gross_ns),
             method.map_or(String::new(), |m| format!("{m}")),
@@ -277,7 +286,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
                 let x = pick(c)?;
                 Some(Labelled {
                     label: if y == 0.0 {
-                        format!("{} (exact: drawn at {})", v.name, num(floor))
+                        format!("{} (max error 0, drawn at {})", v.name, num(floor))
                     } else {
                         v.name.clone()
                     },

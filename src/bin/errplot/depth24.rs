@@ -92,7 +92,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             name: f.into(),
             bits: 24,
             error: ctx.gpu().map(|_| stats),
-            error_from: format!("adapter, 2^24 codes × {} channel cases", cases.len()),
+            error_from: format!("adapter: 2^24 codes × {} channel cases", cases.len()),
             wgsl: Some(Wgsl {
                 source: src.clone(),
                 function: f.into(),
@@ -184,9 +184,9 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
                 .map(|h| h.ulps)
                 .or_else(|| (f == "hyperbolic_depth_from_depth24").then_some(twin.ulps)),
             error_from: if h.is_none() && f == "hyperbolic_depth_from_depth24" {
-                "Rust twin (CPU), all 2^24 codes".into()
+                "Rust twin (CPU): all 2^24 codes".into()
             } else {
-                "adapter, all 2^24 codes".into()
+                "adapter: all 2^24 codes".into()
             },
             wgsl: Some(Wgsl {
                 source: src.clone(),

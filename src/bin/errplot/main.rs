@@ -8,9 +8,15 @@
 //! Output goes to `errplot-out/` by default: `report.md` (tables, plots embedded), one CSV per
 //! sweep (columns documented in `report.md`'s "Files" section), each plot as SVG and PNG.
 //!
-//! One file per section. A new module adds its section as a file here, one line in [`SECTIONS`],
-//! and its encoding variants with `ctx.variants.push(..)` (see `cost.rs`): the cost table and
-//! Pareto plots pick them up.
+//! One file per section. A new module joins the report with:
+//! 1. a file here with `pub fn section(ctx: &mut Ctx) -> Result<(), String>` that runs its sweeps
+//!    (from `src/sweep/<topic>.rs`), writes Markdown (`ctx.line`), CSV (`ctx.csv`) and charts
+//!    (`ctx.chart` with a `plot::Chart`), marking adapter-only cells `NEEDS_ADAPTER` when
+//!    `ctx.gpu()` is `None`;
+//! 2. one line in [`SECTIONS`] (before the cost section);
+//! 3. one `ctx.variants.push(cost::Variant { .. })` per encoding variant (its error, the WGSL and
+//!    timing arguments, the twin's timer): the cost table and the Pareto plots pick them up;
+//! 4. one line per CSV file in `files.rs` documenting its columns.
 
 mod cost;
 mod ctx;
