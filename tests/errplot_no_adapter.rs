@@ -43,13 +43,10 @@ fn errplot_without_adapter_writes_cpu_results_and_names_the_fix() {
 
     // Cost rows: SPIR-V counts for every variant, CPU ns/call for each twin, no GPU time.
     let csv = std::fs::read_to_string(out.join("error_vs_cost.csv")).unwrap();
-    let header: Vec<&str> = csv.lines().next().unwrap().split(',').collect();
-    let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
-    let rows: Vec<Vec<&str>> = csv
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').collect())
-        .collect();
+    let header = split_csv(csv.lines().next().unwrap());
+    let col = |name: &str| header.iter().position(|h| h == name).unwrap();
+    let rows: Vec<Vec<String>> = csv.lines().skip(1).map(split_csv).collect();
+    assert!(rows.iter().all(|r| r.len() == header.len()), "{csv}");
     assert!(rows.len() >= 5, "{csv}");
     for r in &rows {
         assert!(
