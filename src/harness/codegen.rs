@@ -121,7 +121,7 @@ pub fn entry_point(sig: &Signature, feeds: &[Feed]) -> String {
 /// What a timing entry point computes per invocation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum TimedBody {
-    /// Call the function, as [`entry_point`] does.
+    /// Call the function, as the harness's ordinary entry point does.
     Function,
     /// The empty-kernel baseline: load every argument exactly as [`TimedBody::Function`] does and
     /// store one word derived from them (XOR of their first lanes) in every result lane, without
