@@ -338,7 +338,9 @@ fn ramp(t: f64) -> RGBColor {
 }
 
 fn image<DB: DrawingBackend>(c: &ErrorImage, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
-    let (main, bar) = root.split_horizontally(SIZE.0 - 150);
+    // A near-square image panel (octahedral maps are square), the colour bar beside it.
+    let (main, rest) = root.split_horizontally(SIZE.1 + 80);
+    let (bar, _) = rest.split_horizontally(170);
     let finite = || c.values.iter().copied().filter(|v| v.is_finite());
     let lo = finite().fold(f64::INFINITY, f64::min);
     let hi = finite().fold(f64::NEG_INFINITY, f64::max);
@@ -445,4 +447,63 @@ fn histogram<DB: DrawingBackend>(c: &Histogram, root: &DrawingArea<DB, Shift>) -
         .border_style(BLACK)
         .draw()?;
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The chart types the next sections will use render to real SVG and PNG files.
+    #[test]
+    fn image_and_histogram_render() {
+        init().unwrap();
+        let dir = std::env::temp_dir().join(format!("errplot-plot-test-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let (w, h) = (64, 64);
+        let values: Vec<f64> = (0..w * h)
+            .map(|k| {
+                let (x, y) = (
+                    (k % w) as f64 / w as f64 * 2.0 - 1.0,
+                    (k / w) as f64 / h as f64 * 2.0 - 1.0,
+                );
+                if x.abs() + y.abs() > 1.9 {
+                    f64::NAN
+                } else {
+                    (x * x + y * y).sqrt() * 0.01
+                }
+            })
+            .collect();
+        let image = Chart::Image(ErrorImage {
+            title: "test image".into(),
+            x_label: "u".into(),
+            y_label: "v".into(),
+            value_label: "error (degrees)".into(),
+            width: w,
+            height: h,
+            values,
+            extent: [(-1.0, 1.0), (-1.0, 1.0)],
+        });
+        let hist = Chart::Histogram(Histogram {
+            title: "test histogram".into(),
+            x_label: "error (degrees)".into(),
+            series: vec![(
+                "a".into(),
+                (0..20)
+                    .map(|k| (k as f64 * 0.1, (k + 1) as f64 * 0.1, 1u64 << k))
+                    .collect(),
+            )],
+        });
+        for (chart, stem) in [(image, "image"), (hist, "hist")] {
+            save(&chart, &dir, stem).unwrap();
+            let png = std::fs::read(dir.join(format!("{stem}.png"))).unwrap();
+            assert_eq!(&png[..4], b"\x89PNG");
+            let svg = std::fs::read_to_string(dir.join(format!("{stem}.svg"))).unwrap();
+            assert!(svg.contains("error (degrees)"));
+        }
+        if std::env::var_os("ERRPLOT_KEEP_TEST_PLOTS").is_none() {
+            std::fs::remove_dir_all(&dir).unwrap();
+        } else {
+            eprintln!("kept {}", dir.display());
+        }
+    }
 }
