@@ -23,7 +23,6 @@ pub enum TimedArg {
     /// `start + i` as the parameter's bits.
     Index(u32),
     /// The same value everywhere.
-    #[allow(dead_code)] // first users: functions with uniform parameters (linear depth)
     Splat([u32; 4]),
     /// A tile of values (power-of-two count), as raw words.
     Column(Vec<u32>),

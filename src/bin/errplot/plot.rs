@@ -240,7 +240,7 @@ fn lines<DB: DrawingBackend>(c: &LineChart, root: &DrawingArea<DB, Shift>) -> Dr
     for (k, s) in c.series.iter().enumerate() {
         let col = colour(k);
         // Earlier series are drawn wider, so a later one lying exactly on top leaves them visible.
-        let width = 2 + (n - 1 - k) as u32 * 2;
+        let width = (2 + (n - 1 - k) as u32).min(7);
         let pts: Vec<(f64, f64)> = s
             .points
             .iter()
