@@ -249,7 +249,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     // One Pareto plot per family: max error against the best cost measure available.
     let mut families: Vec<&str> = variants.iter().map(|v| v.family).collect();
     families.dedup();
-    for (k, family) in families.iter().enumerate() {
+    for family in &families {
         let members: Vec<(&Variant, &Costs)> = variants
             .iter()
             .zip(&costs)
@@ -307,7 +307,22 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             y_label: format!("max error ({unit}, log scale)"),
             points,
         });
-        ctx.chart(&chart, &format!("pareto_{k}"), &format!("Pareto: {family}"))?;
+        // Named after the family, so a family's file keeps its name as others are added.
+        let slug: String = family
+            .chars()
+            .map(|c| {
+                if c.is_ascii_alphanumeric() {
+                    c.to_ascii_lowercase()
+                } else {
+                    '_'
+                }
+            })
+            .collect();
+        ctx.chart(
+            &chart,
+            &format!("pareto_{slug}"),
+            &format!("Pareto: {family}"),
+        )?;
     }
     Ok(())
 }
