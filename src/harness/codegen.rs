@@ -117,3 +117,61 @@ pub fn entry_point(sig: &Signature, feeds: &[Feed]) -> String {
     );
     s
 }
+
+/// What a timing entry point computes per invocation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TimedBody {
+    /// Call the function, as the harness's ordinary entry point does.
+    Function,
+    /// The empty-kernel baseline: load every argument exactly as [`TimedBody::Function`] does and
+    /// store one word derived from them (XOR of their first lanes) in every result lane, without
+    /// calling the function — same loads, same stores, no arithmetic.
+    Baseline,
+}
+
+/// WGSL of a timing entry point: like [`entry_point`], but columns and the output are tiles of
+/// `pad0 + 1` values (a power of two) indexed by `i & pad0`, so a dispatch of 2^24 invocations
+/// needs only a tile of memory and its loads stay in cache. Invocations that share a slot
+/// race on the store; nobody reads it back (WGSL makes the stored value indeterminate, nothing
+/// worse).
+pub fn timing_entry_point(sig: &Signature, feeds: &[Feed], body_kind: TimedBody) -> String {
+    let plain = entry_point(sig, feeds);
+    // Every buffer index in the body is `[i]` or `[i * W + k]` (columns and the output): read
+    // and write the tile slot `t` instead. `i` itself still feeds `Arg::Index`.
+    let mut s = plain
+        .replace(
+            "let i = gid.y * prepass_h_params.row_stride + gid.x;",
+            "let i = gid.y * prepass_h_params.row_stride + gid.x;\n    let t = i & prepass_h_params.pad0;",
+        )
+        .replace("[i]", "[t]")
+        .replace("[i * ", "[t * ");
+    if body_kind == TimedBody::Function {
+        return s;
+    }
+    // Baseline: replace the call with a word folded from the arguments' first lanes.
+    let call = format!("{}(", sig.function);
+    let line_start = s
+        .find(&format!(
+            "let r = bitcast<{}>({call}",
+            sig.result.wgsl_bits()
+        ))
+        .expect("entry_point always emits the call line");
+    let line_end = line_start + s[line_start..].find('\n').expect("line ends");
+    let mut fold = String::from("0u");
+    for (k, p) in sig.params.iter().enumerate() {
+        let first = if p.ty.lanes == 1 {
+            format!("a{k}")
+        } else {
+            format!("a{k}.x")
+        };
+        let bits = if p.ty.scalar == Scalar::U32 {
+            first
+        } else {
+            format!("bitcast<u32>({first})")
+        };
+        fold = format!("({fold} ^ {bits})");
+    }
+    let replacement = format!("let r = {}({fold});", sig.result.wgsl_bits());
+    s.replace_range(line_start..line_end, &replacement);
+    s
+}

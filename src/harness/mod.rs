@@ -18,9 +18,11 @@
 
 mod codegen;
 mod signature;
+mod timing;
 
-pub use codegen::{Feed, WORKGROUP_SIZE};
+pub use codegen::{Feed, TimedBody, WORKGROUP_SIZE};
 pub use signature::{Param, Scalar, Signature, SignatureError, ValueType};
+pub use timing::{DEFAULT_TIMING_TILE, MIN_TIMED_INVOCATIONS, Timing, TimingMethod};
 
 use crate::wgsl::parse_and_validate;
 use std::sync::Mutex;
@@ -532,16 +534,23 @@ impl Kernel<'_> {
             return Ok(p.clone());
         }
         let source = self.generated_source(args);
+        let pipeline = self.compile(&source, &self.signature.function)?;
+        cache.push((feeds, pipeline.clone()));
+        Ok(pipeline)
+    }
+
+    /// Validate `source` with naga, then build its generated entry point as a compute pipeline.
+    fn compile(&self, source: &str, label: &str) -> Result<wgpu::ComputePipeline, HarnessError> {
         // naga first: its messages point at the offending line, and wgpu would otherwise panic.
-        parse_and_validate(&source).map_err(|e| HarnessError::Shader(e.to_string()))?;
+        parse_and_validate(source).map_err(|e| HarnessError::Shader(e.to_string()))?;
         let device = &self.gpu.device;
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some(&self.signature.function),
+            label: Some(label),
             source: wgpu::ShaderSource::Wgsl(source.into()),
         });
         let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some(&self.signature.function),
+            label: Some(label),
             layout: None,
             module: &module,
             entry_point: Some(codegen::ENTRY),
@@ -551,7 +560,6 @@ impl Kernel<'_> {
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(HarnessError::Shader(e.to_string()));
         }
-        cache.push((feeds, pipeline.clone()));
         Ok(pipeline)
     }
 }

@@ -6,9 +6,13 @@
 #[cfg(feature = "validate")]
 mod naga_check;
 #[cfg(feature = "validate")]
+mod spirv_cost;
+#[cfg(feature = "validate")]
 pub use naga_check::{
     CALL_ALL_ENTRY, Checked, Translations, WgslError, parse_and_validate, translate_all,
 };
+#[cfg(feature = "validate")]
+pub use spirv_cost::{SpirvCost, spirv_instruction_count};
 
 /// One shipped WGSL file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

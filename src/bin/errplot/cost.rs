@@ -1,0 +1,328 @@
+//! The registry of encoding variants and the error-against-run-time table and Pareto plots.
+//!
+//! A section registers each variant it measured ([`Ctx::variants`]): its error, the WGSL to time
+//! on the adapter and the Rust twin to time on the CPU. This module then measures every
+//! variant's cost three ways in one run:
+//! - GPU ns per evaluation: [`prepass::harness::Kernel::time`] over one dispatch of 2^24
+//!   invocations, minus its empty-kernel baseline;
+//! - Rust twin ns per call: a batch loop over `black_box`ed inputs, fastest of several batches,
+//!   minus the same loop around an identity function;
+//! - SPIR-V instructions: [`prepass::wgsl::spirv_instruction_count`] (callees included).
+
+use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
+use crate::plot::{Chart, Labelled, Scatter};
+use prepass::harness::{Arg, MIN_TIMED_INVOCATIONS, TimingMethod};
+use prepass::precision::metrics::ErrorStats;
+use std::fmt::Write as _;
+use std::hint::black_box;
+use std::time::Instant;
+
+/// How one argument of a timed WGSL function is fed (owned form of [`Arg`]).
+#[derive(Clone, Debug)]
+pub enum TimedArg {
+    /// `start + i` as the parameter's bits.
+    Index(u32),
+    /// The same value everywhere.
+    Splat([u32; 4]),
+    /// A tile of values (power-of-two count), as raw words.
+    Column(Vec<u32>),
+}
+
+/// The WGSL side of a variant.
+pub struct Wgsl {
+    /// Source, valid on its own.
+    pub source: String,
+    /// Function name in it.
+    pub function: String,
+    /// Arguments for the timed dispatch.
+    pub args: Vec<TimedArg>,
+}
+
+/// Times `calls` calls of a Rust twin and returns the elapsed nanoseconds.
+pub type TwinTimer = Box<dyn Fn(usize) -> f64>;
+
+/// A timer for `f` over `inputs` (a power-of-two count, cycled): the loop is monomorphised for
+/// `f`, so the call inlines as it would in a user's loop; `black_box` on each input and result
+/// keeps the compiler from hoisting or dropping the work.
+pub fn twin_timer<I: Copy + 'static, O>(inputs: Vec<I>, f: impl Fn(I) -> O + 'static) -> TwinTimer {
+    assert!(inputs.len().is_power_of_two());
+    let mask = inputs.len() - 1;
+    Box::new(move |calls| {
+        let t = Instant::now();
+        for k in 0..calls {
+            black_box(f(black_box(inputs[k & mask])));
+        }
+        t.elapsed().as_secs_f64() * 1e9
+    })
+}
+
+/// One encoding variant: a row of the cost table, a point of its family's Pareto plot.
+pub struct Variant {
+    /// Variants compared with each other (one Pareto plot per family); names the quantity.
+    pub family: &'static str,
+    /// Unit of the error columns.
+    pub unit: &'static str,
+    /// Function name.
+    pub name: String,
+    /// Bits stored per value (the encoding's size), or 0 when it stores nothing.
+    pub bits: u32,
+    /// Error statistics, or `None` where they need an adapter and there is none.
+    pub error: Option<ErrorStats>,
+    /// Where and over what the error was measured.
+    pub error_from: String,
+    /// The WGSL to time and count (None for CPU-only variants).
+    pub wgsl: Option<Wgsl>,
+    /// The Rust twin's timer, if the variant has a twin.
+    pub twin: Option<TwinTimer>,
+}
+
+struct Costs {
+    gpu_ns: Option<f64>,
+    gpu_gross_ns: Option<f64>,
+    cpu_ns: Option<f64>,
+    spirv: Option<usize>,
+}
+
+/// A CSV field, quoted (RFC 4180) when it holds a comma, a quote or a line break.
+pub fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+/// Measure every registered variant and write the table, `error_vs_cost.csv` and the Pareto
+/// plots.
+pub fn section(ctx: &mut Ctx) -> Result<(), String> {
+    let quick = ctx.opts.quick;
+    let repeats = if quick { 1 } else { 5 };
+    let calls: usize = if quick { 1 << 20 } else { 1 << 23 };
+    let variants = std::mem::take(&mut ctx.variants);
+    let bar = ctx.progress(variants.len() as u64, "run-time costs");
+    let empty = twin_timer(vec![0u32; 1 << 12], |x| x);
+    let cpu_best = |t: &TwinTimer| {
+        (0..repeats + 1)
+            .map(|_| t(calls))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let loop_ns = cpu_best(&empty) / calls as f64;
+    let mut method = None;
+    let mut costs = Vec::new();
+    for v in &variants {
+        bar.set_message(v.name.clone());
+        let mut c = Costs {
+            gpu_ns: None,
+            gpu_gross_ns: None,
+            cpu_ns: None,
+            spirv: None,
+        };
+        if let Some(w) = &v.wgsl {
+            c.spirv = Some(
+                prepass::wgsl::spirv_instruction_count(&w.source, &w.function)
+                    .map_err(|e| format!("{}: {e}", w.function))?
+                    .total,
+            );
+            if let Some(gpu) = ctx.gpu() {
+                let args: Vec<Arg> = w
+                    .args
+                    .iter()
+                    .map(|a| match a {
+                        TimedArg::Index(s) => Arg::Index { start: *s },
+                        TimedArg::Splat(v) => Arg::Splat(*v),
+                        TimedArg::Column(words) => Arg::column(words),
+                    })
+                    .collect();
+                let t = gpu
+                    .kernel(&w.source, &w.function)
+                    .and_then(|k| k.time(&args, MIN_TIMED_INVOCATIONS, repeats))
+                    .map_err(|e| format!("timing {}: {e}", w.function))?;
+                method = Some(t.method);
+                c.gpu_ns = Some(t.ns_per_eval());
+                c.gpu_gross_ns = Some(t.gross_ns_per_eval());
+            }
+        }
+        if let Some(t) = &v.twin {
+            // The empty loop is re-measured beside each twin, so both see the same machine load.
+            let (mut best, mut base) = (f64::INFINITY, f64::INFINITY);
+            for _ in 0..repeats + 1 {
+                best = best.min(t(calls));
+                base = base.min(empty(calls));
+            }
+            c.cpu_ns = Some((best - base) / calls as f64);
+        }
+        costs.push(c);
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+
+    ctx.line("## Error against run time");
+    ctx.line("");
+    let adapter = ctx.gpu().map(|g| (g.adapter_info().name, g.is_software()));
+    match (adapter, method) {
+        (Some((adapter_name, software)), Some(m)) => {
+            ctx.line(format!(
+                "GPU ns/eval: {} over one dispatch of 2^24 invocations on {}, minus an \
+                 empty-kernel baseline that loads the same arguments and stores the same bytes \
+                 (fastest of {repeats}). gross = the function's kernel alone, per invocation.",
+                match m {
+                    TimingMethod::TimestampQuery => "the adapter's timestamp queries around the pass",
+                    TimingMethod::WallClock =>
+                        "wall time from submission to completion (the adapter has no timestamp queries)",
+                },
+                adapter_name
+            ));
+            if software {
+                ctx.line("");
+                ctx.line(
+                    "**This adapter is software (a CPU running the shaders): its timings rank \
+                     the functions on this CPU and say nothing about their speed on a GPU.** Run \
+                     errplot on a machine with a GPU for GPU timings.",
+                );
+            }
+        }
+        _ => ctx.line(format!(
+            "GPU ns/eval: **{NEEDS_ADAPTER}** — no adapter was found; see the note at the top."
+        )),
+    }
+    ctx.line("");
+    ctx.line(format!(
+        "CPU ns/call: the Rust twin in a loop of {calls} calls over `black_box`ed inputs, \
+         fastest of {} batches, minus the same loop around an identity function timed beside \
+         each twin (about {} ns/call). \
+         SPIR-V: instructions naga emits for the function and everything it calls (static count, \
+         device-independent).",
+        repeats + 1,
+        num(loop_ns)
+    ));
+    ctx.line("");
+    ctx.line("| family | variant | bits | max error | mean error | RMS error | unit | error measured | GPU ns/eval | GPU gross ns | CPU ns/call | SPIR-V instr. |");
+    ctx.line("|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let mut csv = String::from(
+        "family,variant,bits,unit,max_error,mean_error,rms_error,error_measured,gpu_ns_per_eval,gpu_gross_ns_per_eval,gpu_timing_method,cpu_ns_per_call,spirv_instructions\n",
+    );
+    let opt = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v}"));
+    for (v, c) in variants.iter().zip(&costs) {
+        let e = v.error.as_ref();
+        let cell = |x: Option<f64>, adapter: bool| match x {
+            Some(v) => num(v),
+            None if adapter && ctx.gpu().is_none() => NEEDS_ADAPTER.into(),
+            None => "—".into(),
+        };
+        let needs_gpu = v.wgsl.is_some();
+        ctx.line(format!(
+            "| {} | `{}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            v.family,
+            v.name,
+            v.bits,
+            cell(e.map(|e| e.max), true),
+            cell(e.map(|e| e.mean()), true),
+            cell(e.map(|e| e.rms()), true),
+            v.unit,
+            v.error_from,
+            cell(c.gpu_ns, needs_gpu),
+            cell(c.gpu_gross_ns, needs_gpu),
+            cell(c.cpu_ns, false),
+            c.spirv.map_or("—".into(), |s| s.to_string()),
+        ));
+        let _ = writeln!(
+            csv,
+            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            csv_field(v.family),
+            csv_field(&v.name),
+            v.bits,
+            csv_field(v.unit),
+            opt(e.map(|e| e.max)),
+            opt(e.map(|e| e.mean())),
+            opt(e.map(|e| e.rms())),
+            csv_field(&v.error_from),
+            opt(c.gpu_ns),
+            opt(c.gpu_gross_ns),
+            method.map_or(String::new(), |m| format!("{m}")),
+            opt(c.cpu_ns),
+            c.spirv.map_or(String::new(), |s| s.to_string()),
+        );
+    }
+    ctx.line("");
+    ctx.csv("error_vs_cost.csv", &csv)?;
+
+    // One Pareto plot per family: max error against the best cost measure available.
+    let mut families: Vec<&str> = variants.iter().map(|v| v.family).collect();
+    families.dedup();
+    for family in &families {
+        let members: Vec<(&Variant, &Costs)> = variants
+            .iter()
+            .zip(&costs)
+            .filter(|(v, _)| v.family == *family)
+            .collect();
+        let unit = members[0].0.unit;
+        let (x_label, pick): (&str, fn(&Costs) -> Option<f64>) = if ctx.gpu().is_some() {
+            ("GPU time per evaluation, gross (ns, log scale)", |c| {
+                c.gpu_gross_ns
+            })
+        } else {
+            (
+                "SPIR-V instructions (log scale; no adapter for GPU time)",
+                |c| c.spirv.map(|s| s as f64),
+            )
+        };
+        // A zero maximum (an exact variant) cannot sit on a log axis: it is drawn at a floor
+        // one decade below the smallest non-zero maximum, and its label says "exact".
+        let nonzero = members
+            .iter()
+            .filter_map(|(v, _)| v.error.map(|e| e.max))
+            .filter(|&m| m > 0.0)
+            .fold(f64::INFINITY, f64::min);
+        let floor = if nonzero.is_finite() {
+            nonzero / 10.0
+        } else {
+            1.0
+        };
+        let points: Vec<Labelled> = members
+            .iter()
+            .filter_map(|(v, c)| {
+                let y = v.error?.max;
+                let x = pick(c)?;
+                Some(Labelled {
+                    label: if y == 0.0 {
+                        format!("{} (max error 0, drawn at {})", v.name, num(floor))
+                    } else {
+                        v.name.clone()
+                    },
+                    x,
+                    y: if y == 0.0 { floor } else { y },
+                })
+            })
+            .collect();
+        if points.is_empty() {
+            ctx.line(format!(
+                "*Pareto plot for {family}: no points ({NEEDS_ADAPTER} for the error).*"
+            ));
+            ctx.line("");
+            continue;
+        }
+        let chart = Chart::Scatter(Scatter {
+            title: format!("Max error against cost: {family}"),
+            x_label: x_label.into(),
+            y_label: format!("max error ({unit}, log scale)"),
+            points,
+        });
+        // Named after the family, so a family's file keeps its name as others are added.
+        let slug: String = family
+            .chars()
+            .map(|c| {
+                if c.is_ascii_alphanumeric() {
+                    c.to_ascii_lowercase()
+                } else {
+                    '_'
+                }
+            })
+            .collect();
+        ctx.chart(
+            &chart,
+            &format!("pareto_{slug}"),
+            &format!("Pareto: {family}"),
+        )?;
+    }
+    Ok(())
+}

@@ -1,0 +1,105 @@
+//! What every section of the report shares: options, the adapter (if any), the Markdown being
+//! written, the CSV files, the charts and the registry of encoding variants.
+
+use crate::cost::Variant;
+use crate::plot::{self, Chart};
+use indicatif::{ProgressBar, ProgressStyle};
+use prepass::harness::Gpu;
+use std::path::PathBuf;
+
+/// Command-line options.
+pub struct Options {
+    /// Output folder.
+    pub out: PathBuf,
+    /// Small run (CI, notebooks): fewer cases and repeats; exhaustive sweeps stay exhaustive.
+    pub quick: bool,
+}
+
+/// The report being built.
+pub struct Ctx {
+    /// Options.
+    pub opts: Options,
+    /// The adapter, or `None` with the reason.
+    pub gpu: Result<Gpu, String>,
+    md: String,
+    /// Every encoding variant registered by the sections, for the cost table and Pareto plots.
+    pub variants: Vec<Variant>,
+    /// Files written, for the summary at the end.
+    pub written: Vec<PathBuf>,
+}
+
+/// The text put in a table cell that needs an adapter when there is none.
+pub const NEEDS_ADAPTER: &str = "needs adapter";
+
+impl Ctx {
+    /// A context writing into `opts.out`.
+    pub fn new(opts: Options, gpu: Result<Gpu, String>) -> Self {
+        Ctx {
+            opts,
+            gpu,
+            md: String::new(),
+            variants: Vec::new(),
+            written: Vec::new(),
+        }
+    }
+
+    /// The adapter, if there is one.
+    pub fn gpu(&self) -> Option<&Gpu> {
+        self.gpu.as_ref().ok()
+    }
+
+    /// Append one line of Markdown.
+    pub fn line(&mut self, s: impl AsRef<str>) {
+        self.md.push_str(s.as_ref());
+        self.md.push('\n');
+    }
+
+    /// The Markdown so far.
+    pub fn markdown(&self) -> &str {
+        &self.md
+    }
+
+    /// Write `name` (a CSV file) into the output folder.
+    pub fn csv(&mut self, name: &str, text: &str) -> Result<(), String> {
+        let path = self.opts.out.join(name);
+        std::fs::write(&path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        self.written.push(path);
+        Ok(())
+    }
+
+    /// Draw `chart` as `stem.svg` + `stem.png` and embed the PNG in the report under `alt`.
+    pub fn chart(&mut self, chart: &Chart, stem: &str, alt: &str) -> Result<(), String> {
+        let svg = plot::save(chart, &self.opts.out, stem)?;
+        self.written.push(svg);
+        self.written.push(self.opts.out.join(format!("{stem}.png")));
+        self.line(format!("![{alt}]({stem}.png) ([SVG]({stem}.svg))"));
+        self.line("");
+        Ok(())
+    }
+
+    /// A progress bar for `len` steps (drawn only when stderr is a terminal).
+    pub fn progress(&self, len: u64, what: &str) -> ProgressBar {
+        let bar = ProgressBar::new(len);
+        if let Ok(style) =
+            ProgressStyle::with_template("{prefix:>22} [{bar:30}] {pos}/{len} {msg} ({elapsed})")
+        {
+            bar.set_style(style.progress_chars("=> "));
+        }
+        bar.set_prefix(what.to_string());
+        bar
+    }
+}
+
+/// Format a float for a table: 4 significant digits, scientific outside [1e-3, 1e5).
+pub fn num(x: f64) -> String {
+    if x == 0.0 {
+        "0".into()
+    } else if !x.is_finite() {
+        format!("{x}")
+    } else if (1e-3..1e5).contains(&x.abs()) {
+        let digits = (3 - x.abs().log10().floor() as i32).max(0) as usize;
+        format!("{x:.digits$}")
+    } else {
+        format!("{x:.3e}")
+    }
+}

@@ -1,0 +1,54 @@
+//! The report's last section: every CSV file and its columns (the notebooks read these).
+
+use crate::ctx::Ctx;
+
+/// `(file, what one row is, columns)`. A section that writes a CSV adds its line here.
+pub const CSV_FILES: &[(&str, &str, &str)] = &[
+    (
+        "depth_resolution.csv",
+        "one distance for one depth format",
+        "format (d24, d32f), convention (standard, reversed, reversed_infinite), near_m, far_m \
+         (inf for the infinite projection), distance_m (view distance), resolution_m (distance \
+         to the neighbouring stored value further away)",
+    ),
+    (
+        "linear_depth_error.csv",
+        "one distance bin of one linear-depth form",
+        "form, where (cpu or adapter), near_m, far_m, distance_m (bin centre), \
+         max_relative_error (largest abs(z − z_exact)/z_exact of the codes in the bin)",
+    ),
+    (
+        "depth24_recovery.csv",
+        "one recovery function under one channel perturbation, all 2^24 codes",
+        "function, channel_error, flip (sign pattern complemented), codes, mismatches (codes \
+         not recovered exactly; empty without an adapter), max_code_error (codes)",
+    ),
+    (
+        "depth24_hyperbolic.csv",
+        "one formulation of d/(2^24−1), all 2^24 codes",
+        "function, where (adapter or Rust twin), max_ulp, mean_ulp, rms_ulp (f32 ULPs against \
+         the exact quotient), exact_roundtrip_failures, f32_roundtrip_failures, collisions",
+    ),
+    (
+        "error_vs_cost.csv",
+        "one encoding variant",
+        "family, variant, bits (stored per value), unit (of the error columns), max_error, \
+         mean_error, rms_error (empty when they need an adapter), error_measured (where, over \
+         what), gpu_ns_per_eval (net of the empty-kernel baseline), gpu_gross_ns_per_eval, \
+         gpu_timing_method, cpu_ns_per_call (Rust twin, net of an empty loop), \
+         spirv_instructions (naga SPIR-V, callees included)",
+    ),
+];
+
+/// The table of files and columns.
+pub fn section(ctx: &mut Ctx) -> Result<(), String> {
+    ctx.line("## Files");
+    ctx.line("");
+    ctx.line("| file | one row is | columns |");
+    ctx.line("|---|---|---|");
+    for (file, row, columns) in CSV_FILES {
+        ctx.line(format!("| [`{file}`]({file}) | {row} | {columns} |"));
+    }
+    ctx.line("");
+    Ok(())
+}

@@ -1,0 +1,177 @@
+//! errplot — the crate's report: every paired function's precision sweep on the available
+//! adapter, the Rust twins on the CPU, each encoding variant's cost measured three ways, and
+//! the plots, tables and CSV files that show them.
+//!
+//! ```text
+//! cargo run --release --all-features --bin errplot -- [--out DIR] [--quick]
+//! ```
+//! Output goes to `errplot-out/` by default: `report.md` (tables, plots embedded), one CSV per
+//! sweep (columns documented in `report.md`'s "Files" section), each plot as SVG and PNG.
+//!
+//! One file per section. A new module joins the report with:
+//! 1. a file here with `pub fn section(ctx: &mut Ctx) -> Result<(), String>` that runs its sweeps
+//!    (from `src/sweep/<topic>.rs`), writes Markdown (`ctx.line`), CSV (`ctx.csv`) and charts
+//!    (`ctx.chart` with a `plot::Chart`), marking adapter-only cells `NEEDS_ADAPTER` when
+//!    `ctx.gpu()` is `None`;
+//! 2. one line in [`SECTIONS`] (before the cost section);
+//! 3. one `ctx.variants.push(cost::Variant { .. })` per encoding variant (its error, the WGSL and
+//!    timing arguments, the twin's timer): the cost table and the Pareto plots pick them up;
+//! 4. one line per CSV file in `files.rs` documenting its columns.
+
+mod cost;
+mod ctx;
+mod depth24;
+mod depth_resolution;
+mod files;
+mod linear_depth;
+mod plot;
+
+use ctx::{Ctx, Options};
+use prepass::harness::Gpu;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// A section of the report: writes into the context, or fails with a message.
+type Section = fn(&mut Ctx) -> Result<(), String>;
+
+/// The report's sections in order; each writes its Markdown, CSV and plots and registers its
+/// encoding variants. The cost table (which measures the registered variants) comes last.
+const SECTIONS: &[(&str, Section)] = &[
+    ("depth resolution", depth_resolution::section),
+    ("linear depth", linear_depth::section),
+    ("24-bit depth", depth24::section),
+    ("error against run time", cost::section),
+    ("files", files::section),
+];
+
+fn parse_args() -> Result<Options, String> {
+    let mut o = Options {
+        out: PathBuf::from("errplot-out"),
+        quick: false,
+    };
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--out" => o.out = args.next().ok_or("--out needs a directory")?.into(),
+            "--quick" => o.quick = true,
+            "-h" | "--help" => {
+                println!(
+                    "usage: errplot [--out DIR] [--quick]\n\n\
+                     Writes report.md, CSV files and SVG/PNG plots into DIR (default errplot-out).\n\
+                     --quick: fewer channel cases and timing repeats (CI, notebooks).\n\
+                     PREPASS_ADAPTER=NAME picks an adapter by name; WGPU_BACKEND restricts backends."
+                );
+                std::process::exit(0);
+            }
+            other => return Err(format!("unknown argument {other:?} (try --help)")),
+        }
+    }
+    Ok(o)
+}
+
+fn cpu_name() -> String {
+    std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| {
+            s.lines()
+                .find(|l| l.starts_with("model name"))
+                .and_then(|l| l.split(':').nth(1))
+                .map(|s| s.trim().to_string())
+        })
+        .unwrap_or_else(|| std::env::consts::ARCH.to_string())
+}
+
+fn run(ctx: &mut Ctx) -> Result<(), String> {
+    let started = Instant::now();
+    ctx.line("# prepass error report");
+    ctx.line("");
+    let header = match &ctx.gpu {
+        Ok(g) => {
+            let mut s = format!("- Adapter: {}", g.describe());
+            if g.is_software() {
+                s.push_str(
+                    "\n  — a software adapter: its rounding is measured like any adapter's, its \
+                     timings measure this CPU and say nothing about a GPU.",
+                );
+            }
+            s
+        }
+        Err(e) => format!(
+            "- Adapter: **none** — {e}\n\n\
+             **Columns and tables marked \"{}\" were not computed**: the adapter-side error of \
+             every WGSL function, the code-recovery tables, and GPU time per evaluation. \
+             Everything computed on the CPU is here: the Rust twins' errors and ns/call, the \
+             SPIR-V instruction counts, depth resolution and the CPU linear-depth curves. \
+             To fill them in, get an adapter (the fix above; `bash .ci/setup-adapter` installs \
+             lavapipe on Debian/Ubuntu) and run `bash .ci/errplot` again.",
+            ctx::NEEDS_ADAPTER
+        ),
+    };
+    ctx.line(header);
+    ctx.line(format!(
+        "- CPU: {} ({} threads)",
+        cpu_name(),
+        std::thread::available_parallelism().map_or(1, |n| n.get())
+    ));
+    ctx.line(format!(
+        "- Mode: {}",
+        if ctx.opts.quick {
+            "quick (`--quick`)"
+        } else {
+            "full"
+        }
+    ));
+    ctx.line(
+        "- Regenerate: `bash .ci/errplot` (= `cargo run --release --all-features --bin errplot`)",
+    );
+    ctx.line("");
+    for (name, section) in SECTIONS {
+        let t = Instant::now();
+        section(ctx).map_err(|e| format!("section {name}: {e}"))?;
+        eprintln!("errplot: {name} ({:.1} s)", t.elapsed().as_secs_f64());
+    }
+    ctx.line(format!(
+        "Generated in {:.1} s.",
+        started.elapsed().as_secs_f64()
+    ));
+    Ok(())
+}
+
+fn main() {
+    let opts = match parse_args() {
+        Ok(o) => o,
+        Err(e) => {
+            eprintln!("errplot: {e}");
+            std::process::exit(2);
+        }
+    };
+    if let Err(e) = std::fs::create_dir_all(&opts.out)
+        .map_err(|e| e.to_string())
+        .and_then(|()| plot::init())
+    {
+        eprintln!("errplot: cannot start: {e}");
+        std::process::exit(1);
+    }
+    let gpu = Gpu::new().map_err(|e| e.to_string());
+    if let Err(e) = &gpu {
+        eprintln!("errplot: no adapter — writing the CPU-side results only. {e}");
+    }
+    let mut ctx = Ctx::new(opts, gpu);
+    let result = run(&mut ctx);
+    let path = ctx.opts.out.join("report.md");
+    // Write what was gathered even when a section failed, so the failure can be read in context.
+    if let Err(e) = std::fs::write(&path, ctx.markdown()) {
+        eprintln!("errplot: cannot write {}: {e}", path.display());
+        std::process::exit(1);
+    }
+    if let Err(e) = result {
+        eprintln!("errplot: {e}");
+        std::process::exit(1);
+    }
+    eprintln!(
+        "errplot: wrote {} and {} data/plot files in {}",
+        path.display(),
+        ctx.written.len(),
+        ctx.opts.out.display()
+    );
+}
