@@ -14,8 +14,16 @@ pub const CSV_FILES: &[(&str, &str, &str)] = &[
     (
         "linear_depth_error.csv",
         "one distance bin of one linear-depth form",
-        "form, where (cpu or adapter), near_m, far_m, distance_m (bin centre), \
-         max_relative_error (largest abs(z − z_exact)/z_exact of the codes in the bin)",
+        "form (stable, textbook), where (cpu or adapter), near_m, far_m, distance_m (bin \
+         centre), max_relative_error (largest abs(z − z_exact)/z_exact of the codes in the bin)",
+    ),
+    (
+        "linear_depth_grid.csv",
+        "one depth path (D24 code, float standard, float reversed) at one stiff case",
+        "path, near_m, far_over_near (inf = infinite projection), stable_max_ulp, \
+         consts_max_ulp (f32 ULPs of the exact distance), stable_max_relative, \
+         textbook_max_relative, b_over_z_minus_a_max_relative (inf: wrong-signed or infinite \
+         result where the distance is finite)",
     ),
     (
         "depth24_recovery.csv",

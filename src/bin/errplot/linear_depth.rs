@@ -1,36 +1,46 @@
-//! Arithmetic error of linear (view) depth against distance.
-//!
-//! [`chart`] takes any number of series of `(view distance in m, max relative error)`; the
-//! section feeds it the textbook standard-Z form `1/(w·a + b)` evaluated in f32 on the CPU and
-//! (with an adapter) in WGSL on the adapter, and registers it as a cost-table variant. The
-//! stable forms of `wgsl/depth.wgsl` (linear-depth issue) add their series the same way:
-//! compute them with the sweep in `src/sweep/`, bin them with [`max_per_bin`], push a
-//! [`Series`] and a `Variant` in the same family.
+//! View distance from stored depth (`wgsl/linear_depth.wgsl`) against the textbook baselines
+//! (`tests/baselines/linear_depth.wgsl`): error against distance, the stiff-grid table, and the
+//! cost-table variants.
 
 use crate::cost::{TimedArg, Variant, Wgsl, twin_timer};
-use crate::ctx::Ctx;
+use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
 use crate::plot::{Chart, LineChart, Series};
-use prepass::depth::{DEPTH24_MAX, hyperbolic_depth_from_depth24};
+use prepass::depth::DEPTH24_MAX;
 use prepass::harness::Arg;
-use prepass::precision::metrics::ErrorStats;
+use prepass::linear_depth as ld;
+use prepass::precision::metrics::{ErrorStats, relative_error};
+use prepass::projection::DepthConvention;
+use prepass::sweep::linear_depth::{
+    GridRow, NEARS, StiffCase, codes_sweep, grid_table, stiff_grid, textbook_consts,
+};
 use std::fmt::Write as _;
 
-/// Near plane of every configuration here, metres.
-pub const NEAR: f64 = 0.1;
+/// The textbook forms the stable ones are compared with (test baselines, not public API).
+const BASELINES: &str = include_str!("../../../tests/baselines/linear_depth.wgsl");
+
+/// Near plane of the error-against-distance chart, metres.
+pub const NEAR: f32 = 0.1;
 
 /// far/near ratios plotted.
 pub const RATIOS: [f64; 3] = [1e3, 1e5, 1e7];
 
-/// The far/near ratio whose textbook form enters the cost table.
+/// The far/near ratio whose forms enter the cost table.
 pub const VARIANT_RATIO: f64 = 1e5;
 
 /// Bins per curve (log-spaced in distance).
 pub const BINS: usize = 120;
 
+/// Values per timing tile.
+const TILE: u32 = 1 << 16;
+
+fn source() -> String {
+    format!("{}\n{BASELINES}", prepass::wgsl::LINEAR_DEPTH)
+}
+
 /// The chart of error against distance for the given series.
 pub fn chart(series: Vec<Series>) -> Chart {
     Chart::Lines(LineChart {
-        title: format!("Linear depth from a D24 code: arithmetic error, near {NEAR} m"),
+        title: format!("View distance from a D24 code: arithmetic error, near {NEAR} m"),
         x_label: "view distance (m, log scale)".into(),
         y_label: "max relative error |z − z_exact| / z_exact (log scale)".into(),
         series,
@@ -60,125 +70,253 @@ pub fn max_per_bin(
         .collect()
 }
 
-/// Exact view distance of a 24-bit standard-Z code, f64.
-fn exact_view(code: u32, near: f64, far: f64) -> f64 {
-    let w = f64::from(code) / f64::from(DEPTH24_MAX);
-    near * far / (far - w * (far - near))
+/// The talk's textbook form in f32 on the CPU, exactly as the baseline WGSL spells it.
+fn textbook_cpu(d: u32, ab: [f32; 2]) -> f32 {
+    let zw = d as f32 * (1.0 / DEPTH24_MAX as f32);
+    1.0 / (zw * ab[0] + ab[1])
 }
 
-/// The textbook form in WGSL, measured on the adapter beside its f32 CPU evaluation. Kept in
-/// errplot (not `wgsl/`): it is the baseline the crate's stable forms are compared with.
-pub const TEXTBOOK_WGSL: &str = "fn errplot_textbook_linear_depth(w: f32, a: f32, b: f32) -> f32 {\n\
-    return 1.0 / (w * a + b);\n}\n";
+/// One plotted form: label, WGSL function, its arguments after the code, its CPU evaluation.
+type Form<'a> = (
+    &'static str,
+    &'static str,
+    Vec<Arg<'a>>,
+    Box<dyn Fn(u32) -> f32>,
+);
 
-/// The textbook `z = 1 / (w·a + b)` with `a = 1/f − 1/n`, `b = 1/n` (standard Z) in f32.
-fn textbook_uniforms(far: f64) -> (f32, f32) {
-    ((1.0 / far - 1.0 / NEAR) as f32, (1.0 / NEAR) as f32)
+/// Codes spread over the whole range, as a timing tile.
+fn timing_codes() -> Vec<u32> {
+    (0..TILE)
+        .map(|k| k.wrapping_mul(0x9e37_79b1) & DEPTH24_MAX)
+        .collect()
 }
 
-/// `(exact distance, relative error)` of `got[code]` for every code.
-fn errors(got: impl Fn(u32) -> f32, far: f64) -> impl Iterator<Item = (f64, f64)> {
-    (0..=DEPTH24_MAX).map(move |code| {
-        let exact = exact_view(code, NEAR, far);
-        (exact, (f64::from(got(code)) - exact).abs() / exact)
-    })
-}
-
-/// The plot, its CSV, and the textbook variant for the cost table.
+/// The chart, the grid table, their CSV files, and the variants for the cost table.
 pub fn section(ctx: &mut Ctx) -> Result<(), String> {
-    let steps = RATIOS.len() as u64 * if ctx.gpu().is_some() { 2 } else { 1 };
-    let bar = ctx.progress(steps, "linear depth");
+    let src = source();
+    let place = if ctx.gpu().is_some() {
+        "adapter"
+    } else {
+        "cpu"
+    };
+    let bar = ctx.progress(RATIOS.len() as u64 * 2, "linear depth");
     let mut series = Vec::new();
     let mut csv = String::from("form,where,near_m,far_m,distance_m,max_relative_error\n");
-    let w_of: Vec<f32> = (0..=DEPTH24_MAX)
-        .map(hyperbolic_depth_from_depth24)
-        .collect();
-    let mut variant_error = None;
+    let mut variant_errors: Vec<(&str, ErrorStats)> = Vec::new();
     for ratio in RATIOS {
-        let far = NEAR * ratio;
-        let (a, b) = textbook_uniforms(far);
-        let mut sides = vec![(
-            "cpu",
-            "f32 CPU",
-            errors(|c| 1.0f32 / (w_of[c as usize] * a + b), far).collect::<Vec<_>>(),
-        )];
-        bar.inc(1);
-        if let Some(g) = ctx.gpu() {
-            let out = g
-                .kernel(TEXTBOOK_WGSL, "errplot_textbook_linear_depth")
-                .and_then(|k| {
-                    k.run(
-                        &[Arg::column(&w_of), Arg::splat_f32(a), Arg::splat_f32(b)],
-                        w_of.len() as u64,
-                    )
+        let case = StiffCase {
+            near: NEAR,
+            far: (f64::from(NEAR) * ratio) as f32,
+            ratio,
+        };
+        let (near, far) = (case.near, case.far);
+        let ab = textbook_consts(case, DepthConvention::Standard);
+        let k24 = case.projection(DepthConvention::Standard).depth24_consts();
+        let forms: [Form; 3] = [
+            (
+                "stable",
+                "view_z_from_depth24",
+                vec![Arg::splat_f32(near), Arg::splat_f32(far)],
+                Box::new(move |d| ld::view_z_from_depth24(d, near, far)),
+            ),
+            (
+                "stable_consts",
+                "view_z_from_depth24_consts",
+                vec![Arg::splat_vec(&k24)],
+                Box::new(move |d| ld::view_z_from_depth24_consts(d, k24)),
+            ),
+            (
+                "textbook",
+                "baseline_view_z_textbook24",
+                vec![Arg::splat_vec(&ab)],
+                Box::new(move |d| textbook_cpu(d, ab)),
+            ),
+        ];
+        for (form, function, extra, cpu) in forms {
+            // On the adapter when there is one; otherwise the same arithmetic on the CPU.
+            let values: Vec<f32> = match ctx.gpu() {
+                Some(g) => {
+                    codes_sweep(g, &src, function, &extra, case, None)
+                        .map_err(|e| e.to_string())?
+                        .1
+                }
+                None => (0..=DEPTH24_MAX).map(&*cpu).collect(),
+            };
+            let samples: Vec<(f64, f64)> = values
+                .iter()
+                .enumerate()
+                .map(|(d, &v)| {
+                    let exact = ld::exact::view_z_from_depth24(d as u32, near, far);
+                    (exact, relative_error(f64::from(v), exact))
                 })
-                .map_err(|e| e.to_string())?;
-            let z = out.as_f32();
-            sides.push((
-                "adapter",
-                "adapter",
-                errors(|c| z[c as usize], far).collect(),
-            ));
-            bar.inc(1);
-        }
-        for (place, label, samples) in sides {
-            if ratio == VARIANT_RATIO && (place == "adapter" || ctx.gpu().is_none()) {
+                .collect();
+            if ratio == VARIANT_RATIO {
                 let mut stats = ErrorStats::default();
                 for (k, &(_, e)) in samples.iter().enumerate() {
                     stats.add(k as u64, e);
                 }
-                variant_error = Some((stats, place));
+                variant_errors.push((function, stats));
             }
-            let points = max_per_bin(NEAR, far, samples.into_iter());
+            if form == "stable_consts" {
+                continue; // plotted curve would coincide with `stable`
+            }
+            let points = max_per_bin(f64::from(near), f64::from(far), samples.into_iter());
             for &(z, e) in &points {
-                let _ = writeln!(csv, "textbook_f32,{place},{NEAR},{far},{z},{e}");
+                let _ = writeln!(csv, "{form},{place},{near},{far},{z},{e}");
             }
+            let label = match form {
+                "stable" => "stable view_z_from_depth24",
+                _ => "textbook 1/(zw·a+b)",
+            };
             series.push(Series {
-                label: format!("textbook 1/(w·a+b), {label}, far/near = {ratio:.0e}"),
+                label: format!("{label}, far/near = {ratio:.0e} ({place})"),
                 points,
             });
+            bar.inc(1);
         }
     }
     bar.finish_and_clear();
     ctx.csv("linear_depth_error.csv", &csv)?;
-    let (a, b) = textbook_uniforms(NEAR * VARIANT_RATIO);
-    let tile: Vec<u32> = (0..1u32 << 16)
-        .map(|k| w_of[(k.wrapping_mul(0x9e37_79b1) & DEPTH24_MAX) as usize].to_bits())
-        .collect();
-    let twin_inputs: Vec<f32> = tile.iter().map(|&w| f32::from_bits(w)).collect();
-    ctx.variants.push(Variant {
-        family: "view depth from a standard-Z D24 code, far/near 1e5",
-        unit: "relative",
-        name: "errplot_textbook_linear_depth".into(),
-        bits: 24,
-        error: variant_error.map(|(s, _)| s),
-        error_from: match variant_error {
-            Some((_, "adapter")) => "adapter: all 2^24 codes".into(),
-            _ => "f32 on the CPU: all 2^24 codes".into(),
-        },
-        wgsl: Some(Wgsl {
-            source: TEXTBOOK_WGSL.into(),
-            function: "errplot_textbook_linear_depth".into(),
-            args: vec![
-                TimedArg::Column(tile),
-                TimedArg::Splat([a.to_bits(), 0, 0, 0]),
-                TimedArg::Splat([b.to_bits(), 0, 0, 0]),
-            ],
-        }),
-        twin: Some(twin_timer(twin_inputs, move |w: f32| 1.0f32 / (w * a + b))),
-    });
-    ctx.line("## Arithmetic error of linear depth");
+
+    ctx.line("## View distance from depth");
     ctx.line("");
-    ctx.line(
-        "Relative error of view depth computed from every standard-Z D24 code (hyperbolic depth \
-         correctly rounded to f32), maximum per distance bin, against the exact f64 distance of \
-         the code. The textbook form loses about (far/near)·2^-24 near the far plane through \
-         cancellation in `w·a + b`. Data: `linear_depth_error.csv`.",
-    );
+    ctx.line(format!(
+        "Relative error of view distance from every standard-Z D24 code, maximum per distance \
+         bin, against the exact f64 distance of the code, computed on the {place}. The textbook \
+         form `1/(zw·a + b)` cancels near the far plane and loses about (far/near)·2^-24; the \
+         stable form (`n·D / ((D − d) + d·n/f)`) stays within a few ULP everywhere. Data: \
+         `linear_depth_error.csv`."
+    ));
     ctx.line("");
     ctx.chart(
         &chart(series),
         "linear_depth_error",
-        "linear depth error against distance",
-    )
+        "view distance error against distance",
+    )?;
+
+    grid_section(ctx)?;
+
+    // Cost-table variants, far/near 1e5.
+    let case = StiffCase {
+        near: NEAR,
+        far: (f64::from(NEAR) * VARIANT_RATIO) as f32,
+        ratio: VARIANT_RATIO,
+    };
+    let (near, far) = (case.near, case.far);
+    let ab = textbook_consts(case, DepthConvention::Standard);
+    let k24 = case.projection(DepthConvention::Standard).depth24_consts();
+    let tile = timing_codes();
+    for (function, stats) in variant_errors {
+        let (args, twin) = match function {
+            "view_z_from_depth24" => (
+                vec![
+                    TimedArg::Column(tile.clone()),
+                    TimedArg::Splat([near.to_bits(), 0, 0, 0]),
+                    TimedArg::Splat([far.to_bits(), 0, 0, 0]),
+                ],
+                twin_timer(tile.clone(), move |d| ld::view_z_from_depth24(d, near, far)),
+            ),
+            "view_z_from_depth24_consts" => (
+                vec![
+                    TimedArg::Column(tile.clone()),
+                    TimedArg::Splat([k24[0].to_bits(), k24[1].to_bits(), 0, 0]),
+                ],
+                twin_timer(tile.clone(), move |d| {
+                    ld::view_z_from_depth24_consts(d, k24)
+                }),
+            ),
+            _ => (
+                vec![
+                    TimedArg::Column(tile.clone()),
+                    TimedArg::Splat([ab[0].to_bits(), ab[1].to_bits(), 0, 0]),
+                ],
+                twin_timer(tile.clone(), move |d| textbook_cpu(d, ab)),
+            ),
+        };
+        ctx.variants.push(Variant {
+            family: "view distance from a standard-Z D24 code, far/near 1e5",
+            unit: "relative",
+            name: function.into(),
+            bits: 24,
+            error: Some(stats),
+            error_from: format!("{place}: all 2^24 codes, near {NEAR} m"),
+            wgsl: Some(Wgsl {
+                source: src.clone(),
+                function: function.into(),
+                args,
+            }),
+            twin: Some(twin),
+        });
+    }
+    Ok(())
+}
+
+fn max_ulp(s: &prepass::sweep::linear_depth::LinearStats) -> String {
+    num(s.ulps.max)
+}
+
+fn max_rel(s: &prepass::sweep::linear_depth::LinearStats) -> String {
+    num(s.relative.max)
+}
+
+/// The stiff grid: every depth path × near × far/near, stable forms beside both baselines.
+fn grid_section(ctx: &mut Ctx) -> Result<(), String> {
+    let quick = ctx.opts.quick;
+    // Quick runs: near 0.1 only, 2^16 float depths; full runs: all 25 cases, 2^22 floats
+    // (the tests run 2^24 per case and assert the bound).
+    let cases: Vec<StiffCase> = stiff_grid()
+        .into_iter()
+        .filter(|c| !quick || c.near == NEARS[2])
+        .collect();
+    let float_count = if quick { 1 << 16 } else { 1 << 22 };
+    ctx.line("### Stiff projections: max error per depth path and case");
+    ctx.line("");
+    let Some(g) = ctx.gpu() else {
+        ctx.line(format!("The grid runs the WGSL: {NEEDS_ADAPTER}."));
+        ctx.line("");
+        return Ok(());
+    };
+    let bar = ctx.progress(cases.len() as u64 * 3, "linear depth grid");
+    let rows: Vec<GridRow> =
+        grid_table(g, BASELINES, &cases, float_count, |_| bar.inc(1)).map_err(|e| e.to_string())?;
+    bar.finish_and_clear();
+    ctx.line(format!(
+        "On the adapter. D24: all 2^24 codes; float: {float_count} depths spread in ULP space \
+         over (0, 1] plus the 64 next to 0 and to 1. Stable forms in f32 ULPs of the exact \
+         distance; baselines as relative error (∞: a result of the wrong sign or infinite where \
+         the distance is finite). Data: `linear_depth_grid.csv`."
+    ));
+    ctx.line("");
+    ctx.line("| depth | near (m) | far/near | stable (ULP) | `_consts` (ULP) | textbook 1/(z·a+b) (relative) | B/(z−A) (relative) |");
+    ctx.line("|---|---|---|---|---|---|---|");
+    let mut csv = String::from(
+        "path,near_m,far_over_near,stable_max_ulp,consts_max_ulp,stable_max_relative,\
+         textbook_max_relative,b_over_z_minus_a_max_relative\n",
+    );
+    for r in &rows {
+        ctx.line(format!(
+            "| {} | {} | {:e} | {} | {} | {} | {} |",
+            r.path.label(),
+            r.case.near,
+            r.case.ratio,
+            max_ulp(&r.stable),
+            max_ulp(&r.stable_consts),
+            max_rel(&r.textbook),
+            max_rel(&r.b_over_z_minus_a)
+        ));
+        let _ = writeln!(
+            csv,
+            "{},{},{},{},{},{},{},{}",
+            r.path.label(),
+            r.case.near,
+            r.case.ratio,
+            r.stable.ulps.max,
+            r.stable_consts.ulps.max,
+            r.stable.relative.max,
+            r.textbook.relative.max,
+            r.b_over_z_minus_a.relative.max
+        );
+    }
+    ctx.line("");
+    ctx.csv("linear_depth_grid.csv", &csv)
 }
