@@ -22,8 +22,17 @@ pub struct WgslFile {
 /// `wgsl/depth.wgsl`: 24-bit depth codes in RGBA8 texels (twin: [`crate::depth`]).
 pub const DEPTH: &str = include_str!("../../wgsl/depth.wgsl");
 
+/// `wgsl/roughness.wgsl`: specular exponent in log range (twin: [`crate::roughness`]).
+pub const ROUGHNESS: &str = include_str!("../../wgsl/roughness.wgsl");
+
 /// Every shipped WGSL file. `tests/wgsl_validate.rs` checks this list against the directory.
-pub const FILES: &[WgslFile] = &[WgslFile {
-    name: "depth.wgsl",
-    source: DEPTH,
-}];
+pub const FILES: &[WgslFile] = &[
+    WgslFile {
+        name: "depth.wgsl",
+        source: DEPTH,
+    },
+    WgslFile {
+        name: "roughness.wgsl",
+        source: ROUGHNESS,
+    },
+];
