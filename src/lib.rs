@@ -9,6 +9,7 @@
 //! |---|---|---|
 //! | [`depth`] | `wgsl/depth.wgsl` | 24-bit depth codes in RGBA8 texels, hyperbolic depth |
 //! | [`roughness`] | `wgsl/roughness.wgsl` | specular exponent in log range, 8 bits; normal + roughness RGBA8 texel |
+//! | [`lighting`] | `wgsl/lighting.wgsl`, `wgsl/aggregate_lights.wgsl`, `wgsl/light_volumes.wgsl` | light pre-pass P/C and specular reconstruction, aggregate vertex lights, light volumes and depth bounds |
 //! | [`precision`] | — | error metrics (ULP, relative, angular, mismatches) and test inputs |
 //! | [`wgsl`] | all | embedded sources; naga validation/translation (feature `validate`) |
 //! | `harness` | any | run any WGSL function on a wgpu adapter (feature `harness`) |
@@ -21,6 +22,7 @@
 pub mod depth;
 #[cfg(feature = "harness")]
 pub mod harness;
+pub mod lighting;
 pub mod precision;
 pub mod roughness;
 #[cfg(feature = "harness")]

@@ -3,3 +3,4 @@
 
 pub mod depth24;
 pub mod roughness;
+pub mod lighting;
