@@ -13,7 +13,7 @@
 //
 // Bad input (same on both sides): a light with any NaN/Inf input, or closer to the vertex than
 // 2^-64 in every coordinate (its direction is undefined), is skipped (acc unchanged); weights
-// are clamped to [0, 2^40] (negative intensities add nothing); colours to [0, 65504]. When the
+// and colours are clamped to [0, 2^40] (negative intensities add nothing). When the
 // weighted directions cancel (largest component of acc.xyz zero or subnormal) the direction is
 // zero, so every colour term is zero, and the position is the vertex itself; per pixel, a zero-length
 // P_agg − p, a bad normal or non-finite input gives 0.
@@ -86,7 +86,7 @@ fn aggregate_light_accumulate_colour(colour_acc: vec3<f32>, vertex: vec3<f32>,
         return colour_acc;
     }
     let l = aggregate_light_unit(rel, 0x1f800000u);
-    let c = clamp(colour, vec3<f32>(0.0), vec3<f32>(65504.0));
+    let c = clamp(colour, vec3<f32>(0.0), vec3<f32>(AGGREGATE_LIGHT_WEIGHT_MAX));
     return colour_acc + c * dot(l, aggregate_direction);
 }
 

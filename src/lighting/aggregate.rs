@@ -16,14 +16,14 @@
 //! **Twins** use the same `f32` formulas; not bit-identical to an adapter (`inverseSqrt`, `/`).
 //!
 //! **Bad input (both sides):** a light with NaN/Inf input, or within `2^-64` of the vertex in
-//! every coordinate, is skipped; weights clamp to `[0, 2^40]`, colours to `[0, 65504]`. When the
+//! every coordinate, is skipped; weights and colours clamp to `[0, 2^40]`. When the
 //! weighted directions cancel (largest component of `acc.xyz` zero or subnormal) the direction
 //! is zero, every colour term zero and the position `V`. Per pixel: a zero-length `P_agg − p`,
 //! a bad normal or non-finite input gives 0, and channels are clamped at 0.
 
 use glam::{Vec3, Vec4};
 
-/// Largest weight accepted, `2^40` (intensities 1e-6 … 1e6 and far beyond fit).
+/// Largest weight or colour channel accepted, `2^40` (intensities 1e-6 … 1e6 and far beyond).
 pub const WEIGHT_MAX: f32 = 1_099_511_627_776.0;
 /// Lights closer than this to the vertex in every coordinate are skipped (`2^-64`).
 pub const AT_VERTEX: f32 = 5.421_011e-20;
@@ -102,7 +102,7 @@ pub fn accumulate_colour(
         return colour_acc;
     }
     let l = unit(rel, AT_VERTEX.to_bits());
-    let c = colour.clamp(Vec3::ZERO, Vec3::splat(65504.0));
+    let c = colour.clamp(Vec3::ZERO, Vec3::splat(WEIGHT_MAX));
     colour_acc + c * l.dot(aggregate_direction)
 }
 
