@@ -193,7 +193,10 @@ fn boundary_bits(j: u32, l: u32) -> u32 {
 pub fn encode_log_roughness(power: f32, max_power: f32) -> u32 {
     let b = power.to_bits();
     let r = range(max_power);
-    if r == Range::Degenerate || (b & 0x7fff_ffff) > 0x7f80_0000 || (b >> 31) != 0 || b <= 0x3f80_0000
+    if r == Range::Degenerate
+        || (b & 0x7fff_ffff) > 0x7f80_0000
+        || (b >> 31) != 0
+        || b <= 0x3f80_0000
     {
         return 0;
     }

@@ -104,10 +104,10 @@ impl Run<'_> {
         let slot = |j: usize| -> (Vec<[f32; 3]>, Vec<f32>) {
             sets.iter()
                 .map(|s| {
-                    s.lights.get(j).copied().unwrap_or((
-                        [s.vertex[0] + 1.0, s.vertex[1], s.vertex[2]],
-                        0.0,
-                    ))
+                    s.lights
+                        .get(j)
+                        .copied()
+                        .unwrap_or(([s.vertex[0] + 1.0, s.vertex[1], s.vertex[2]], 0.0))
                 })
                 .unzip()
         };
@@ -232,7 +232,11 @@ fn the_luminance_identity_holds_within_the_derived_budget() {
             .collect();
         let (pos, col) = aggregate::aggregate(Vec3::from(set.vertex), &lights);
         let twin = aggregate::diffuse(Vec3::from(set.normal), Vec3::from(set.vertex), pos, col);
-        assert!((f64::from(twin.x) - want).abs() <= b, "twin: {} vs {want}", twin.x);
+        assert!(
+            (f64::from(twin.x) - want).abs() <= b,
+            "twin: {} vs {want}",
+            twin.x
+        );
         worst = worst.max(err / b);
         worst_rel_s = worst_rel_s.max(err / s);
     }
@@ -279,8 +283,15 @@ fn a_light_at_the_vertex_is_skipped_and_cancelling_lights_stay_finite() {
     ];
     let got = Run::new().at_vertex(&sets);
     assert!(got.iter().all(|g| g.is_finite()));
-    assert_eq!(got[0].to_bits(), got[1].to_bits(), "light at the vertex must add nothing");
-    assert_eq!(got[2], 0.0, "exactly cancelling lights give zero direction and colour");
+    assert_eq!(
+        got[0].to_bits(),
+        got[1].to_bits(),
+        "light at the vertex must add nothing"
+    );
+    assert_eq!(
+        got[2], 0.0,
+        "exactly cancelling lights give zero direction and colour"
+    );
     for (set, &g) in sets.iter().zip(&got).skip(3) {
         let (want, s, _) = exact(set);
         // The nearly cancelling set: |X| is tiny, so R = X/W is tiny and the position term of
@@ -292,12 +303,23 @@ fn a_light_at_the_vertex_is_skipped_and_cancelling_lights_stay_finite() {
             "{g} vs {want}"
         );
     }
-    eprintln!("light at vertex: {} (= {}), cancelling: {}, nearly cancelling: {}", got[0], got[1], got[2], got[3]);
+    eprintln!(
+        "light at vertex: {} (= {}), cancelling: {}, nearly cancelling: {}",
+        got[0], got[1], got[2], got[3]
+    );
 }
 
 #[test]
 fn bad_input_is_skipped_identically_on_both_sides() {
-    let specials = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -1.0, 0.0, 1e30, 3e38];
+    let specials = [
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        -1.0,
+        0.0,
+        1e30,
+        3e38,
+    ];
     let mut acc = Vec::new();
     let mut vertex = Vec::new();
     let mut pos = Vec::new();
@@ -343,7 +365,10 @@ fn bad_input_is_skipped_identically_on_both_sides() {
         let skipped = Vec4::from(acc[i]);
         // Skipped on one side ⇔ skipped on the other (same bit tests); otherwise equal to ~8u.
         assert_eq!(Vec4::from(*got) == skipped, twin == skipped, "row {i}");
-        assert!((Vec4::from(*got) - twin).abs().max_element() <= 1e-6 * twin.abs().max_element().max(1.0));
+        assert!(
+            (Vec4::from(*got) - twin).abs().max_element()
+                <= 1e-6 * twin.abs().max_element().max(1.0)
+        );
         if w[i] < 0.0 {
             assert_eq!(Vec4::from(*got), skipped, "negative weight adds nothing");
         }
@@ -358,4 +383,3 @@ fn bad_input_is_skipped_identically_on_both_sides() {
     assert_eq!(aggregate::direction(Vec4::ZERO), Vec3::ZERO);
     assert_eq!(aggregate::position(Vec4::ZERO, Vec3::ONE), Vec3::ONE);
 }
-

@@ -46,8 +46,16 @@ fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
     // att, light exponent n (integer 1..128), material exponent m (integer 1..16): n·m exact.
     let params: Vec<[f32; 3]> = (0..n)
         .map(|i| {
-            let att = if i % 97 == 0 { 0.0 } else { rng.range(0.01, 1.0) };
-            [att, rng.range(1.0, 128.0).round(), rng.range(1.0, 16.0).round()]
+            let att = if i % 97 == 0 {
+                0.0
+            } else {
+                rng.range(0.01, 1.0)
+            };
+            [
+                att,
+                rng.range(1.0, 128.0).round(),
+                rng.range(1.0, 16.0).round(),
+            ]
         })
         .collect();
     let out = gpu()
@@ -75,7 +83,11 @@ fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
         let [att, ln, m] = params[i].map(f64::from);
         if nl == 0.0 || att == 0.0 || nh == 0.0 {
             // N·L = 0, attenuation 0 or N·H = 0: nothing is divided, both are exactly zero.
-            assert_eq!((v[0], v[1]), (0.0, 0.0), "input {i}: N·L {nl}, att {att}, N·H {nh}");
+            assert_eq!(
+                (v[0], v[1]),
+                (0.0, 0.0),
+                "input {i}: N·L {nl}, att {att}, N·H {nh}"
+            );
             zeros += 1;
             continue;
         }
@@ -89,14 +101,15 @@ fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
         let r = nh.powf(ln);
         if r < 2f64.powi(-120) {
             // The light's own (N·H)^n is at f32's underflow cutoff: both results are (near) 0.
-            assert!(rec <= 2f64.powi(-100) && dir <= 2f64.powi(-100), "input {i}");
+            assert!(
+                rec <= 2f64.powi(-100) && dir <= 2f64.powi(-100),
+                "input {i}"
+            );
             zeros += 1;
             continue;
         }
-        let budget = m * (pow_bound(nh, ln) + 13.0 * U)
-            + pow_bound(r, m)
-            + pow_bound(nh, ln * m)
-            + 8.0 * U;
+        let budget =
+            m * (pow_bound(nh, ln) + 13.0 * U) + pow_bound(r, m) + pow_bound(nh, ln * m) + 8.0 * U;
         // Results below 2^-126 are flushed to 0 by lpp_pow_cosine's cutoff on either side.
         let floor = 2f64.powi(-120);
         let err = (rec - dir).abs();
@@ -118,7 +131,9 @@ fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
 
 #[test]
 fn many_lights_error_is_measured_and_never_non_finite() {
-    eprintln!("| lights | pixels | max rel | mean rel | rms rel | max |err|/diffuse lum | ratio > 1 (clamped) |");
+    eprintln!(
+        "| lights | pixels | max rel | mean rel | rms rel | max |err|/diffuse lum | ratio > 1 (clamped) |"
+    );
     for lights in [1, 2, 4, 8, 16, 32, 64] {
         let r = multi_light_reconstruction(gpu(), lights, 2048, 11 + lights as u64).unwrap();
         assert_eq!(r.non_finite, 0);
@@ -176,7 +191,11 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
         let mut nv = rng.hemisphere(0.2);
         let mut ev = rng.hemisphere(0.1);
         let mut lv = rng.hemisphere(-0.3);
-        let mut cv = [rng.range(0.0, 2.0), rng.range(0.0, 2.0), rng.range(0.0, 2.0)];
+        let mut cv = [
+            rng.range(0.0, 2.0),
+            rng.range(0.0, 2.0),
+            rng.range(0.0, 2.0),
+        ];
         let mut a = rng.range(0.0, 1.0);
         let mut p = rng.range(1.0, 64.0);
         match i % 7 {
@@ -227,8 +246,12 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
                 att[i],
                 power[i],
             );
-            let bad = !(normal[i].iter().chain(&eye[i]).chain(&light[i]).chain(&colour[i]))
-                .all(|x| x.is_finite())
+            let bad = !(normal[i]
+                .iter()
+                .chain(&eye[i])
+                .chain(&light[i])
+                .chain(&colour[i]))
+            .all(|x| x.is_finite())
                 || !att[i].is_finite()
                 || !power[i].is_finite();
             if bad {
@@ -248,7 +271,11 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
             // covers the 2^-126 cutoff (lum ≤ 65504²).
             let y = f64::from(power[i].clamp(0.0, 65504.0));
             let lum_rgb = f64::from(lpp::luminance(twin.truncate()));
-            let cy = if lum_rgb > 0.0 { f64::from(twin.w) / lum_rgb } else { 0.0 };
+            let cy = if lum_rgb > 0.0 {
+                f64::from(twin.w) / lum_rgb
+            } else {
+                0.0
+            };
             let spec_tol = if cy > 0.0 && cy < 1.0 && y > 0.0 {
                 2.0 * pow_bound(cy.powf(1.0 / y), y) + 64.0 * U
             } else {
@@ -292,7 +319,10 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
         let lum = lpp::luminance(Vec3::new(t[0], t[1], t[2]).max(Vec3::ZERO));
         if lum.is_finite() {
             // Never above lum(rgb): the ratio is clamped before the exponent.
-            assert!(f64::from(v) <= f64::from(lum) * (1.0 + 1e-6), "{t:?}: {v} > {lum}");
+            assert!(
+                f64::from(v) <= f64::from(lum) * (1.0 + 1e-6),
+                "{t:?}: {v} > {lum}"
+            );
         }
         assert!(
             (f64::from(v) - f64::from(twin)).abs() <= 1e-4 * f64::from(twin.abs()) + 1e-30,
@@ -342,4 +372,109 @@ fn two_buffer_layout_and_combination_agree_with_the_one_buffer_layout() {
         worst = worst.max(f64::from(d));
     }
     eprintln!("one-buffer vs two-buffer C for one light: max |difference| {worst:.3e}");
+}
+
+#[test]
+fn point_and_spot_lights_match_their_twins_and_stay_finite() {
+    let mut rng = SplitMix(33);
+    let n = 4096;
+    let s = specials();
+    let mut normals = Vec::new();
+    let mut eyes = Vec::new();
+    let mut to_light = Vec::new();
+    let mut colour_radius = Vec::new();
+    let mut axis = Vec::new();
+    let mut inner = Vec::new();
+    let mut power = Vec::new();
+    for i in 0..n {
+        normals.push(rng.hemisphere(0.2));
+        eyes.push(rng.hemisphere(0.1));
+        let l = rng.hemisphere(-0.2);
+        let d = rng.range(0.1, 6.0);
+        to_light.push(l.map(|x| x * d));
+        let mut cr = [
+            rng.range(0.0, 2.0),
+            rng.range(0.0, 2.0),
+            rng.range(0.0, 2.0),
+            rng.range(0.5, 5.0),
+        ];
+        let a = rng.hemisphere(-1.0);
+        let outer = rng.range(0.2, 0.9);
+        let mut ax = [-a[0], -a[1], -a[2], outer];
+        let mut inn = outer + rng.range(-0.1, 0.1);
+        if i % 5 == 0 {
+            // one special value in the radius, the cone or the inner cosine
+            let x = s[(rng.next_u64() % s.len() as u64) as usize];
+            match i % 3 {
+                0 => cr[3] = x,
+                1 => ax[3] = x,
+                _ => inn = x,
+            }
+        }
+        colour_radius.push(cr);
+        axis.push(ax);
+        inner.push(inn);
+        power.push(rng.range(1.0, 64.0));
+    }
+    let g = gpu();
+    let point = g
+        .kernel(LIGHTING, "lpp_point_light")
+        .unwrap()
+        .run(
+            &[
+                Arg::column(&normals),
+                Arg::column(&eyes),
+                Arg::column(&to_light),
+                Arg::column(&colour_radius),
+                Arg::column(&power),
+            ],
+            n as u64,
+        )
+        .unwrap();
+    let spot = g
+        .kernel(LIGHTING, "lpp_spot_light")
+        .unwrap()
+        .run(
+            &[
+                Arg::column(&normals),
+                Arg::column(&eyes),
+                Arg::column(&to_light),
+                Arg::column(&colour_radius),
+                Arg::column(&axis),
+                Arg::column(&inner),
+                Arg::column(&power),
+            ],
+            n as u64,
+        )
+        .unwrap();
+    let (mut worst, mut lit) = (0.0f64, 0);
+    for i in 0..n {
+        let (nv, ev, lv) = (
+            Vec3::from(normals[i]),
+            Vec3::from(eyes[i]),
+            Vec3::from(to_light[i]),
+        );
+        let cr = Vec4::from(colour_radius[i]);
+        let tp = lpp::point_light(nv, ev, lv, cr, power[i]);
+        let ts = lpp::spot_light(nv, ev, lv, cr, Vec4::from(axis[i]), inner[i], power[i]);
+        for (got, twin) in [(point.as_vec4()[i], tp), (spot.as_vec4()[i], ts)] {
+            assert!(got.iter().all(|x| x.is_finite()), "row {i}: {got:?}");
+            // Same formulas; the attenuations are smooth in their inputs except at the spot's
+            // edges, so compare with a tolerance of 1e-4 of the colour scale (a few ULP of the
+            // cosines through slopes ≤ 1/(cos_inner − cos_outer) ≤ 1e4·…) plus 1e-6 absolute.
+            let d = (Vec4::from(got) - twin).abs().max_element();
+            assert!(
+                f64::from(d) <= 1e-4 * f64::from(twin.abs().max_element()) + 1e-4,
+                "row {i}: {got:?} vs twin {twin}"
+            );
+            worst = worst.max(f64::from(d));
+            if got[0] + got[1] + got[2] > 0.0 {
+                lit += 1;
+            }
+        }
+    }
+    eprintln!(
+        "point/spot P: {lit} of {} lit, max |adapter − twin| {worst:.3e}",
+        2 * n
+    );
 }

@@ -26,8 +26,15 @@ fn draw<S: Strategy>(s: &S, n: usize) -> Vec<S::Value> {
 /// (center_z, radius, near, far (+Inf one time in four), reversed): near 1e-4…10, far/near
 /// 10…1e9, spheres anywhere from in front of near to beyond far.
 fn bounds_case() -> impl Strategy<Value = (f32, f32, f32, f32, u32)> {
-    (-4.0f64..1.0, 1.0f64..9.0, 0.0f64..1.0, -3.0f64..0.5, 0u32..2, 0u32..4).prop_map(
-        |(log_near, log_ratio, pos, log_r, reversed, inf)| {
+    (
+        -4.0f64..1.0,
+        1.0f64..9.0,
+        0.0f64..1.0,
+        -3.0f64..0.5,
+        0u32..2,
+        0u32..4,
+    )
+        .prop_map(|(log_near, log_ratio, pos, log_r, reversed, inf)| {
             let near = 10f64.powf(log_near);
             let far = near * 10f64.powf(log_ratio);
             // centre spread log-uniformly between near/2 and 2·far
@@ -35,8 +42,7 @@ fn bounds_case() -> impl Strategy<Value = (f32, f32, f32, f32, u32)> {
             let radius = cz * 10f64.powf(log_r);
             let far = if inf == 0 { f64::INFINITY } else { far };
             (cz as f32, radius as f32, near as f32, far as f32, reversed)
-        },
-    )
+        })
 }
 
 fn convention(r: u32) -> DepthConvention {
@@ -50,7 +56,8 @@ fn convention(r: u32) -> DepthConvention {
 #[test]
 fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
     let cases = draw(&bounds_case(), 4096);
-    let col = |f: fn(&(f32, f32, f32, f32, u32)) -> f32| -> Vec<f32> { cases.iter().map(f).collect() };
+    let col =
+        |f: fn(&(f32, f32, f32, f32, u32)) -> f32| -> Vec<f32> { cases.iter().map(f).collect() };
     let (cz, r, n, f) = (col(|c| c.0), col(|c| c.1), col(|c| c.2), col(|c| c.3));
     let rev: Vec<u32> = cases.iter().map(|c| c.4).collect();
     let args = [
@@ -89,7 +96,11 @@ fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
         let conv = convention(rev[i]);
         assert!(b[0].is_finite() && b[1].is_finite());
         let twin = volumes::sphere_depth_bounds(cz[i], r[i], n[i], f[i], conv);
-        let k = if fi.is_infinite() { 1.0 } else { fi / (fi - ni) };
+        let k = if fi.is_infinite() {
+            1.0
+        } else {
+            fi / (fi - ni)
+        };
         let eps = 16.0 * U * (1.0 + k);
         let lo = (czi - ri).max(ni);
         let hi = (czi + ri).min(fi);
@@ -120,7 +131,10 @@ fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
                 cases[i]
             );
             let code = (z * D24).round() as u32;
-            assert!(c[0] <= code && code <= c[1], "case {i}: code {code} outside {c:?}");
+            assert!(
+                c[0] <= code && code <= c[1],
+                "case {i}: code {code} outside {c:?}"
+            );
             points += 1;
         }
         // Tightness: the float range is within the widening eps plus the evaluation error
@@ -140,10 +154,7 @@ fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
             "case {i}: loose by {dl:e}/{dh:e}, eps {eps:e}"
         );
         // Codes: one more code each side at most beyond the float range.
-        let (cl, ch) = (
-            emin * D24 - f64::from(c[0]),
-            f64::from(c[1]) - emax * D24,
-        );
+        let (cl, ch) = (emin * D24 - f64::from(c[0]), f64::from(c[1]) - emax * D24);
         assert!(cl <= (2.0 * eps + U) * D24 + 1.0 && ch <= (2.0 * eps + U) * D24 + 1.0);
         loose_u = loose_u.max(dl.max(dh) / U);
         loose_codes = loose_codes.max(cl.max(ch));
@@ -212,7 +223,11 @@ fn sphere_stencil_choice_is_conservative() {
             "case {i}: twin differs"
         );
         if touches {
-            assert_eq!(got, 1, "case {i}: {:?} touches the near rectangle", cases[i]);
+            assert_eq!(
+                got, 1,
+                "case {i}: {:?} touches the near rectangle",
+                cases[i]
+            );
             needed += 1;
         } else if got == 1 {
             extra += 1;
@@ -269,7 +284,9 @@ fn cone_stencil_choice_is_conservative() {
         let inside = |p: [f64; 3]| {
             let q = [p[0] - a64[0], p[1] - a64[1], p[2] - a64[2]];
             let tt = q[0] * d64[0] + q[1] * d64[1] + q[2] * d64[2];
-            let ss = (q.iter().map(|x| x * x).sum::<f64>() - tt * tt).max(0.0).sqrt();
+            let ss = (q.iter().map(|x| x * x).sum::<f64>() - tt * tt)
+                .max(0.0)
+                .sqrt();
             tt >= 0.0 && tt <= f64::from(h) && ss <= f64::from(k) * tt
         };
         // The eye and a 17×17 grid over the near rectangle: any of them inside the cone means
@@ -284,7 +301,11 @@ fn cone_stencil_choice_is_conservative() {
             }
         }
         if touches {
-            assert_eq!(got, 1, "case {i}: {:?} reaches the near rectangle", cases[i]);
+            assert_eq!(
+                got, 1,
+                "case {i}: {:?} reaches the near rectangle",
+                cases[i]
+            );
             needed += 1;
         }
         flagged += got;
@@ -295,7 +316,10 @@ fn cone_stencil_choice_is_conservative() {
         }
     }
     // The twin may differ only for cones within the rounding margin of the threshold.
-    assert!(twin_diff * 1000 <= cases.len(), "{twin_diff} twin differences");
+    assert!(
+        twin_diff * 1000 <= cases.len(),
+        "{twin_diff} twin differences"
+    );
     eprintln!(
         "cone volumes: {} cases, {needed} reach the near rectangle (all flagged), {flagged} \
          flagged in all, twin differs in {twin_diff}",
@@ -327,7 +351,10 @@ fn bad_input_answers_depth_fail_and_the_full_range() {
         // −1 is a valid centre coordinate (|c| = 5.1 > r + rho: depth-pass); bad elsewhere.
         let first = if x == -1.0 { 0 } else { 1 };
         assert_eq!(out.as_u32(), &[first, 1, 1], "bad {x}");
-        assert_eq!(volumes::sphere_needs_depth_fail(Vec3::new(x, 0.0, 5.0), 1.0, 0.1), first);
+        assert_eq!(
+            volumes::sphere_needs_depth_fail(Vec3::new(x, 0.0, 5.0), 1.0, 0.1),
+            first
+        );
         // center, radius, near, far bad in turn (far = +Inf is valid: infinite far plane).
         let rows: [[f32; 4]; 4] = [
             [x, 1.0, 0.1, 100.0],
@@ -349,10 +376,20 @@ fn bad_input_answers_depth_fail_and_the_full_range() {
                 )
                 .unwrap();
             // A centre at −1 is valid: the sphere [−2, 0] lies in front of near, the empty range.
-            let want = if row[0] == -1.0 { [0xff_ffff, 0] } else { [0, 0xff_ffff] };
+            let want = if row[0] == -1.0 {
+                [0xff_ffff, 0]
+            } else {
+                [0, 0xff_ffff]
+            };
             assert_eq!(out.as_u32(), &want, "{row:?}");
             assert_eq!(
-                volumes::sphere_depth_bounds24(row[0], row[1], row[2], row[3], DepthConvention::Standard),
+                volumes::sphere_depth_bounds24(
+                    row[0],
+                    row[1],
+                    row[2],
+                    row[3],
+                    DepthConvention::Standard
+                ),
                 want
             );
         }

@@ -160,10 +160,36 @@ fn general_ranges_stay_within_their_derived_bound() {
             }
         }
         assert!(worst <= bound, "max {max}: {worst} > {bound}");
-        assert!(worst >= limit * 0.99, "max {max}: sweep too sparse ({worst})");
+        // Every code's decoded value against the exact max^(k/255): within the decode part of
+        // the bound above.
+        let d = decode_all_codes(gpu(), max).unwrap();
+        let dec_rel = d
+            .values
+            .iter()
+            .enumerate()
+            .map(|(k, &v)| {
+                let e = roughness::exact::decode(k as u32, f64::from(max));
+                (f64::from(v) - e).abs() / e
+            })
+            .fold(0.0, f64::max);
+        assert!(
+            dec_rel <= dec + U,
+            "max {max}: decode {dec_rel} > {}",
+            dec + U
+        );
+        eprintln!(
+            "general range {max}: decode of every code max {:.2} ULP ({dec_rel:.2e} relative, \
+             derived bound {:.2e})",
+            d.ulps.max,
+            dec + U
+        );
+        assert!(
+            worst >= limit * 0.99,
+            "max {max}: sweep too sparse ({worst})"
+        );
         eprintln!(
             "general range {max}: {} sampled powers, max rel {worst:.7} (limit {limit:.7}, bound \
-             {bound:.7}); Rust twin differs in {code_diff} codes and {value_diff} decoded values",
+             {bound:.7}); Rust twin differs in {code_diff} codes and {value_diff} decoded values (of the sampled round trips)",
             ps.len()
         );
     }

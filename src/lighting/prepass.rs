@@ -164,7 +164,14 @@ pub fn point_light(
     power: f32,
 ) -> Vec4 {
     let att = point_attenuation(to_light.length(), colour_radius.w);
-    blinn_phong_light(normal, to_eye, to_light, colour_radius.truncate(), att, power)
+    blinn_phong_light(
+        normal,
+        to_eye,
+        to_light,
+        colour_radius.truncate(),
+        att,
+        power,
+    )
 }
 
 /// P of a spot light: point falloff times [`spot_attenuation`] of the angle between the spot
@@ -181,7 +188,14 @@ pub fn spot_light(
     let cos_angle = direction(axis_cos_outer.truncate()).dot(-direction(to_light));
     let att = point_attenuation(to_light.length(), colour_radius.w)
         * spot_attenuation(cos_angle, axis_cos_outer.w, cos_inner);
-    blinn_phong_light(normal, to_eye, to_light, colour_radius.truncate(), att, power)
+    blinn_phong_light(
+        normal,
+        to_eye,
+        to_light,
+        colour_radius.truncate(),
+        att,
+        power,
+    )
 }
 
 /// P for the two-buffer layout's specular target: `N·L·att·colour·(N·H)^power`.
@@ -228,7 +242,13 @@ pub fn reconstruct_specular(light: Vec4, material_power: f32) -> f32 {
 
 /// Clamp to `[0, 65504]`, NaN to 0.
 pub fn clamp_colour(c: Vec3) -> Vec3 {
-    let f = |x: f32| if x.is_nan() { 0.0 } else { x.clamp(0.0, COLOUR_MAX) };
+    let f = |x: f32| {
+        if x.is_nan() {
+            0.0
+        } else {
+            x.clamp(0.0, COLOUR_MAX)
+        }
+    };
     Vec3::new(f(c.x), f(c.y), f(c.z))
 }
 
@@ -266,12 +286,15 @@ pub mod exact {
         (nl, dot(n, h).clamp(0.0, 1.0))
     }
 
+    /// One light for [`multi_light_specular`]: `(to_light, lum(colour), attenuation, n)`.
+    pub type Light = ([f64; 3], f64, f64, f64);
+
     /// Blinn-Phong specular of several lights, evaluated per light as a forward renderer would:
     /// `Σ_i N·L_i·att_i·lum(c_i)·(N·H_i)^(n_i·m)`.
     pub fn multi_light_specular(
         normal: [f64; 3],
         to_eye: [f64; 3],
-        lights: &[([f64; 3], f64, f64, f64)],
+        lights: &[Light],
         material_power: f64,
     ) -> f64 {
         lights

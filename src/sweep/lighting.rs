@@ -79,7 +79,7 @@ pub fn multi_light_reconstruction(
     let material: Vec<f32> = (0..pixels).map(|_| rng.range(1.0, 8.0).round()).collect();
     let mut sum = vec![[0.0f32; 4]; pixels];
     // (to_light, lum(colour), att, n) per pixel per light, for the exact reference.
-    let mut per_pixel: Vec<Vec<([f64; 3], f64, f64, f64)>> = vec![Vec::new(); pixels];
+    let mut per_pixel: Vec<Vec<exact::Light>> = vec![Vec::new(); pixels];
     for _ in 0..lights {
         let to_light: Vec<[f32; 3]> = (0..pixels).map(|_| rng.hemisphere(-0.3)).collect();
         let colour: Vec<[f32; 3]> = (0..pixels)
@@ -142,7 +142,8 @@ pub fn multi_light_reconstruction(
             r.absolute_vs_diffuse
                 .add(i as u64, (f64::from(got) - want).abs() / diffuse_lum);
             if want >= 1e-6 * diffuse_lum {
-                r.relative.add(i as u64, relative_error(f64::from(got), want));
+                r.relative
+                    .add(i as u64, relative_error(f64::from(got), want));
             }
         }
     }

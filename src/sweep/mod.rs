@@ -2,5 +2,5 @@
 //! (feature `harness`). The tests assert on their results; `errplot` tabulates them.
 
 pub mod depth24;
-pub mod roughness;
 pub mod lighting;
+pub mod roughness;
