@@ -7,7 +7,8 @@ use common::gpu;
 use prepass::harness::Arg;
 use prepass::roughness::{self, quantisation_limit};
 use prepass::sweep::roughness::{
-    ONE_BITS, decode_all_codes, log_roughness_all_powers, powers_in, roundtrip_all_powers,
+    ONE_BITS, decode_all_codes, log_roughness_all_powers, powers_in, profile_bin_start,
+    roundtrip_all_powers,
 };
 use prepass::wgsl::ROUGHNESS;
 
@@ -35,6 +36,23 @@ fn every_power_up_to_8192_round_trips_at_the_quantisation_limit() {
         f32::from_bits(ONE_BITS + r.relative.argmax as u32)
     );
     assert_eq!(r.relative.nan_count, 0);
+    // Constant relative precision: no bin exceeds the limit, and every bin that holds a code
+    // boundary (a half-integer of t = 255·log2(p)/13) reaches it, as low powers do.
+    assert_eq!(r.profile.len(), 13 * 16);
+    let mut with_boundary = 0;
+    for (b, &(max, _)) in r.profile.iter().enumerate() {
+        let (lo, hi) = (profile_bin_start(b), profile_bin_start(b + 1));
+        let t = |p: f64| 255.0 * p.log2() / 13.0 - 0.5;
+        assert!(max <= limit + 3.0 * U, "bin {b} (from p = {lo}): max {max}");
+        if t(hi).floor() > t(lo).floor() && t(hi).fract() > 1e-3 {
+            assert!(
+                max >= limit - 2e-7 - 3.0 * U,
+                "bin {b} (from p = {lo}): max {max}"
+            );
+            with_boundary += 1;
+        }
+    }
+    assert!(with_boundary > 150, "{with_boundary}");
     // Exact encoder and exact table decoder: the twins must agree bit for bit, and the codes
     // must be the exact nearest codes in log range.
     assert_eq!(r.twin_code_mismatches, Some(0));

@@ -30,6 +30,20 @@ pub struct RoundTrip {
     pub exact_code_mismatches: Option<u64>,
     /// Number of powers swept.
     pub count: u64,
+    /// Error against power for plots: bin `b = 16e + s` covers the powers
+    /// `[2^e(1 + s/16), 2^e(1 + (s+1)/16))` (the top four significand bits: sixteen equal
+    /// steps per octave) and holds `(max, mean)` relative error of its powers; the last bin
+    /// also holds `p = max_power`.
+    pub profile: Vec<(f64, f64)>,
+}
+
+/// Bins per octave of [`RoundTrip::profile`].
+pub const PROFILE_BINS_PER_OCTAVE: u32 = 16;
+
+/// The lower edge (a power) of profile bin `b`.
+pub fn profile_bin_start(b: usize) -> f64 {
+    let per = PROFILE_BINS_PER_OCTAVE as usize;
+    ((b / per) as f64).exp2() * (1.0 + (b % per) as f64 / per as f64)
 }
 
 /// A pair of Rust twins to compare the adapter's codes and values with.
@@ -68,6 +82,9 @@ pub fn roundtrip_all_powers(
         ..Default::default()
     };
     let m64 = f64::from(max_power);
+    let bins = ((max_power.to_bits() - ONE_BITS) >> (23 - PROFILE_BINS_PER_OCTAVE.trailing_zeros()))
+        .max(1) as usize;
+    let mut sums = vec![(0.0f64, 0.0f64, 0u64); bins];
     kernel.run_chunks(
         &[Arg::Index { start: ONE_BITS }, Arg::splat_f32(max_power)],
         n,
@@ -79,6 +96,12 @@ pub fn roundtrip_all_powers(
                 let value = table[code.min(255) as usize];
                 let rel = relative_error(f64::from(value), f64::from(p));
                 stats.add(i, rel);
+                // Exponent and top four significand bits: the bin, exactly.
+                let b = ((i as u32) >> (23 - PROFILE_BINS_PER_OCTAVE.trailing_zeros())) as usize;
+                let bin = &mut sums[b.min(bins - 1)];
+                bin.0 = bin.0.max(rel);
+                bin.1 += rel;
+                bin.2 += 1;
                 if i == 0 {
                     r.at_one = rel;
                 }
@@ -98,6 +121,10 @@ pub fn roundtrip_all_powers(
             Ok(())
         },
     )?;
+    r.profile = sums
+        .iter()
+        .map(|&(max, sum, n)| (max, if n > 0 { sum / n as f64 } else { 0.0 }))
+        .collect();
     Ok(r)
 }
 
