@@ -12,6 +12,8 @@
 //! | [`projection`] | — | `Projection`: near/far/convention, per-pixel constants, exact forward maps |
 //! | [`position`] | `wgsl/position.wgsl` | frustum rays, view/world/camera-relative position rebuild |
 //! | [`scene`] | composed | scene declaration → minimal WGSL module + G-buffer layout |
+//! | [`roughness`] | `wgsl/roughness.wgsl` | specular exponent in log range, 8 bits; normal + roughness RGBA8 texel |
+//! | [`lighting`] | `wgsl/lighting.wgsl`, `wgsl/aggregate_lights.wgsl`, `wgsl/light_volumes.wgsl` | light pre-pass P/C and specular reconstruction, aggregate vertex lights, light volumes and depth bounds |
 //! | [`precision`] | — | error metrics (ULP, relative, angular, mismatches) and test inputs |
 //! | `precision::strategies`, `precision::check` | any | proptest strategies with adversarial cases; batched checks of any WGSL against a Rust reference, shrinking on the adapter (features `proptest`; `check` also `harness`) |
 //! | [`wgsl`] | all | embedded sources; naga validation/translation (feature `validate`) |
@@ -25,10 +27,12 @@
 pub mod depth;
 #[cfg(feature = "harness")]
 pub mod harness;
+pub mod lighting;
 pub mod linear_depth;
 pub mod position;
 pub mod precision;
 pub mod projection;
+pub mod roughness;
 pub mod scene;
 #[cfg(feature = "harness")]
 pub mod sweep;

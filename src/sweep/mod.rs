@@ -2,4 +2,6 @@
 //! (feature `harness`). The tests assert on their results; `errplot` tabulates them.
 
 pub mod depth24;
+pub mod lighting;
 pub mod linear_depth;
+pub mod roughness;

@@ -32,11 +32,37 @@ pub const LINEAR_DEPTH: &str = include_str!("../../wgsl/linear_depth.wgsl");
 /// `wgsl/position.wgsl`: frustum rays and position rebuild (twin: [`crate::position`]).
 pub const POSITION: &str = include_str!("../../wgsl/position.wgsl");
 
+/// `wgsl/roughness.wgsl`: specular exponent in log range (twin: [`crate::roughness`]).
+pub const ROUGHNESS: &str = include_str!("../../wgsl/roughness.wgsl");
+
+/// `wgsl/lighting.wgsl`: light pre-pass P/C, Engel's reconstruction (twin:
+/// [`crate::lighting::prepass`]).
+pub const LIGHTING: &str = include_str!("../../wgsl/lighting.wgsl");
+
+/// `wgsl/aggregate_lights.wgsl`: aggregate vertex lights (twin: [`crate::lighting::aggregate`]).
+pub const AGGREGATE_LIGHTS: &str = include_str!("../../wgsl/aggregate_lights.wgsl");
+
+/// `wgsl/light_volumes.wgsl`: light volumes and depth bounds (twin:
+/// [`crate::lighting::volumes`]).
+pub const LIGHT_VOLUMES: &str = include_str!("../../wgsl/light_volumes.wgsl");
+
 /// Every shipped WGSL file. `tests/wgsl_validate.rs` checks this list against the directory.
 pub const FILES: &[WgslFile] = &[
     WgslFile {
+        name: "aggregate_lights.wgsl",
+        source: AGGREGATE_LIGHTS,
+    },
+    WgslFile {
         name: "depth.wgsl",
         source: DEPTH,
+    },
+    WgslFile {
+        name: "light_volumes.wgsl",
+        source: LIGHT_VOLUMES,
+    },
+    WgslFile {
+        name: "lighting.wgsl",
+        source: LIGHTING,
     },
     WgslFile {
         name: "linear_depth.wgsl",
@@ -45,5 +71,9 @@ pub const FILES: &[WgslFile] = &[
     WgslFile {
         name: "position.wgsl",
         source: POSITION,
+    },
+    WgslFile {
+        name: "roughness.wgsl",
+        source: ROUGHNESS,
     },
 ];

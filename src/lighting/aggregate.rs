@@ -1,0 +1,130 @@
+//! God of War III's aggregate vertex lights (seed `001`) — Rust twins of
+//! `wgsl/aggregate_lights.wgsl`.
+//!
+//! Per vertex `V`, lights `i` (position `P_i`, weight `W_i` = its intensity at `V`) fold into
+//! one aggregate light:
+//! `acc.xyz = Σ W_i·L_i` with `L_i = (P_i − V)/|P_i − V|`, `acc.w = Σ W_i/|P_i − V|`;
+//! position `P_agg = V + acc.xyz/acc.w`, direction `L_agg = acc.xyz/|acc.xyz|`, colour
+//! `C_agg = Σ C_i (L_i·L_agg)`. Per pixel the interpolated `P_agg` gives
+//! `C_agg·max(N·normalize(P_agg − p), 0)`.
+//!
+//! **Why it is exact for luminance** (the talk's proof): with scalar luminances `l_i`,
+//! `X = Σ l_i L_i`, `L_agg = X/|X|` and `l_agg = Σ l_i (L_i·L_agg) = X·L_agg = |X|`, so
+//! `(N·L_agg)·l_agg = N·X = Σ l_i (N·L_i)` — the per-light sum whenever every `N·L_i ≥ 0`.
+//! `tests/lighting_aggregate.rs` checks it on the adapter within a derived rounding budget.
+//!
+//! **Twins** use the same `f32` formulas; not bit-identical to an adapter (`inverseSqrt`, `/`).
+//!
+//! **Bad input (both sides):** a light with NaN/Inf input, or within `2^-64` of the vertex in
+//! every coordinate, is skipped; weights and colours clamp to `[0, 2^40]`. When the
+//! weighted directions cancel (largest component of `acc.xyz` zero or subnormal) the direction
+//! is zero, every colour term zero and the position `V`. Per pixel: a zero-length `P_agg − p`,
+//! a bad normal or non-finite input gives 0, and channels are clamped at 0.
+
+use glam::{Vec3, Vec4};
+
+/// Largest weight or colour channel accepted, `2^40` (intensities 1e-6 … 1e6 and far beyond).
+pub const WEIGHT_MAX: f32 = 1_099_511_627_776.0;
+/// Lights closer than this to the vertex in every coordinate are skipped (`2^-64`).
+pub const AT_VERTEX: f32 = 5.421_011e-20;
+
+fn finite3(v: Vec3) -> bool {
+    v.to_array()
+        .iter()
+        .all(|x| (x.to_bits() & 0x7fff_ffff) < 0x7f80_0000)
+}
+
+fn unit(v: Vec3, smallest: u32) -> Vec3 {
+    let m = v.abs().max_element();
+    if !finite3(v) || m.to_bits() < smallest {
+        return Vec3::ZERO;
+    }
+    let s = v / m;
+    s * (1.0 / s.dot(s).sqrt())
+}
+
+/// Fold a light into a vertex's accumulator (start from `Vec4::ZERO`):
+/// `acc + (W·L_i, W/|P_i − V|)`.
+pub fn accumulate(acc: Vec4, vertex: Vec3, light_position: Vec3, weight: f32) -> Vec4 {
+    let rel = light_position - vertex;
+    let m = rel.abs().max_element();
+    if !finite3(vertex)
+        || !finite3(light_position)
+        || !finite3(rel)
+        || (weight.to_bits() & 0x7fff_ffff) >= 0x7f80_0000
+        || m.to_bits() < AT_VERTEX.to_bits()
+    {
+        return acc;
+    }
+    let w = weight.clamp(0.0, WEIGHT_MAX);
+    let s = rel / m;
+    let inv = 1.0 / s.dot(s).sqrt();
+    acc + (w * (s * inv)).extend(w * inv / m)
+}
+
+/// The aggregate direction `L_agg` (zero when the weighted directions cancel).
+pub fn direction(acc: Vec4) -> Vec3 {
+    unit(acc.truncate(), 0x0080_0000)
+}
+
+/// The aggregate position `V + acc.xyz/acc.w` (`V` when nothing accumulated or they cancel).
+pub fn position(acc: Vec4, vertex: Vec3) -> Vec3 {
+    let x = acc.truncate();
+    let m = x.abs().max_element();
+    if !finite3(x)
+        || (acc.w.to_bits() & 0x7fff_ffff) >= 0x7f80_0000
+        || m.to_bits() < 0x0080_0000
+        || acc.w.is_nan()
+        || acc.w <= 0.0
+    {
+        return vertex;
+    }
+    vertex + x / acc.w
+}
+
+/// Fold a light's colour into `C_agg`: `colour_acc + C_i (L_i·L_agg)` (unclamped, as the talk).
+pub fn accumulate_colour(
+    colour_acc: Vec3,
+    vertex: Vec3,
+    light_position: Vec3,
+    colour: Vec3,
+    aggregate_direction: Vec3,
+) -> Vec3 {
+    let rel = light_position - vertex;
+    let m = rel.abs().max_element();
+    if !finite3(vertex)
+        || !finite3(light_position)
+        || !finite3(rel)
+        || !finite3(colour)
+        || !finite3(aggregate_direction)
+        || m.to_bits() < AT_VERTEX.to_bits()
+    {
+        return colour_acc;
+    }
+    let l = unit(rel, AT_VERTEX.to_bits());
+    let c = colour.clamp(Vec3::ZERO, Vec3::splat(WEIGHT_MAX));
+    colour_acc + c * l.dot(aggregate_direction)
+}
+
+/// Per pixel: `max(C_agg·max(N·normalize(P_agg − p), 0), 0)`.
+pub fn diffuse(normal: Vec3, position: Vec3, aggregate_position: Vec3, colour: Vec3) -> Vec3 {
+    if !finite3(position) || !finite3(aggregate_position) || !finite3(colour) {
+        return Vec3::ZERO;
+    }
+    let n = unit(normal, 0x0080_0000);
+    let l = unit(aggregate_position - position, 0x0080_0000);
+    (colour * n.dot(l).max(0.0)).max(Vec3::ZERO)
+}
+
+/// Whole-vertex convenience (CPU side): fold `(position, weight, colour)` lights at `vertex`
+/// into `(P_agg, C_agg)`.
+pub fn aggregate(vertex: Vec3, lights: &[(Vec3, f32, Vec3)]) -> (Vec3, Vec3) {
+    let acc = lights
+        .iter()
+        .fold(Vec4::ZERO, |a, &(p, w, _)| accumulate(a, vertex, p, w));
+    let dir = direction(acc);
+    let colour = lights.iter().fold(Vec3::ZERO, |c, &(p, _, col)| {
+        accumulate_colour(c, vertex, p, col, dir)
+    });
+    (position(acc, vertex), colour)
+}

@@ -1,0 +1,308 @@
+//! The light pre-pass factorisation `result = C(mp, Σ P(l_i, gp))` (seed `000`, Resistance 2) and
+//! Engel's specular reconstruction (seed `002`) — Rust twins of `wgsl/lighting.wgsl`.
+//!
+//! P runs once per light and is summed by additive blending into a light buffer:
+//! - one RGBA buffer (Engel): `rgb = N·L·att·colour`, `a = N·L·att·lum(colour)·(N·H)^n`;
+//! - two buffers (Resistance 2): diffuse `N·L·att·colour`, specular `N·L·att·colour·(N·H)^n`.
+//!
+//! C runs with the material: `albedo·diffuse + gloss·specular`; the one-buffer layout first
+//! recovers the specular as `(a / lum(rgb))^m · lum(rgb)` — `N·H^n` divided back out by the
+//! luminance of the diffuse sum, the material exponent `m` on top of the light's `n`. For one
+//! white light this equals Blinn-Phong with exponent `n·m` (up to rounding, bounded in
+//! `tests/lighting_prepass.rs`); for several it is an approximation whose error the tests and
+//! `errplot` measure.
+//!
+//! **Twins:** these use the same formulas in `f32`; they are not bit-identical to an adapter
+//! (WGSL allows `inverseSqrt` 2 ULP, `/` 2.5 ULP, `log2`/`exp2` several, and fusing), so the
+//! tests measure the difference.
+//!
+//! **Bad input (both sides):** any NaN/±Inf input, or a normal, `to_light` or `to_eye` whose
+//! largest component is zero or subnormal, gives zero light. Colours clamp to `[0, 65504]`,
+//! attenuation to `[0, 1]`, powers to `[0, 65504]`; `x^0 = 1` for `x > 0`, `0^y = 0`.
+
+use glam::{Vec3, Vec4};
+
+/// Rec. 709 luminance weights used to turn the light buffer's diffuse rgb into `N·L·att`.
+pub const LUMINANCE: Vec3 = Vec3::new(0.2126, 0.7152, 0.0722);
+/// Largest colour, attenuation-free power and exponent accepted (fp16 max).
+pub const COLOUR_MAX: f32 = 65504.0;
+
+fn finite(x: f32) -> bool {
+    (x.to_bits() & 0x7fff_ffff) < 0x7f80_0000
+}
+
+fn finite3(v: Vec3) -> bool {
+    finite(v.x) && finite(v.y) && finite(v.z)
+}
+
+/// `v/|v|`, or zero when `v` is non-finite or its largest component is zero or subnormal.
+/// Scales by the largest component first so `|v|²` cannot overflow. Error ≈ 3 ULP per
+/// component on a conforming adapter (division 2.5 ULP, `inverseSqrt` 2 ULP, products).
+pub fn direction(v: Vec3) -> Vec3 {
+    let m = v.abs().max_element();
+    if !finite3(v) || m.to_bits() < 0x0080_0000 {
+        return Vec3::ZERO;
+    }
+    let s = v / m;
+    s * (1.0 / s.dot(s).sqrt())
+}
+
+/// Luminance `0.2126 r + 0.7152 g + 0.0722 b`.
+pub fn luminance(rgb: Vec3) -> f32 {
+    rgb.dot(LUMINANCE)
+}
+
+/// `x^y` for a cosine `x` and exponent `y ≥ 0`, computed as `exp2(y·log2 x)`: 0 for `x ≤ 0`
+/// (NaN included) or when `y·log2 x < −126`; 1 for `x ≥ 1` or `y = 0`. Error: WGSL's
+/// `log2`/`exp2` allowances, `≤ (3 + 2|t|)·2^-23 + ln2·Δt` relative with `t = y·log2 x`.
+pub fn pow_cosine(x: f32, y: f32) -> f32 {
+    if x.is_nan() || x <= 0.0 {
+        return 0.0;
+    }
+    if x >= 1.0 || y == 0.0 {
+        return 1.0;
+    }
+    let t = y * x.log2();
+    if t < -126.0 { 0.0 } else { t.exp2() }
+}
+
+/// Windowed point-light falloff `(1 − (d/r)²)²`, 0 for `d ≥ r`. Bad input: NaN/Inf or `r ≤ 0`
+/// → 0; `d < 0` counts as 0.
+pub fn point_attenuation(distance: f32, radius: f32) -> f32 {
+    if !finite(distance) || !finite(radius) || radius.is_nan() || radius <= 0.0 {
+        return 0.0;
+    }
+    let x = (distance.max(0.0) / radius).clamp(0.0, 1.0);
+    let w = 1.0 - x * x;
+    w * w
+}
+
+/// Spot cone factor: 0 below `cos_outer`, 1 above `cos_inner`, linear in the cosine between;
+/// `cos_inner ≤ cos_outer` gives a hard edge. NaN/Inf → 0.
+pub fn spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+    if !finite(cos_angle) || !finite(cos_outer) || !finite(cos_inner) {
+        return 0.0;
+    }
+    if cos_inner <= cos_outer {
+        return if cos_angle >= cos_outer { 1.0 } else { 0.0 };
+    }
+    ((cos_angle - cos_outer) / (cos_inner - cos_outer)).clamp(0.0, 1.0)
+}
+
+/// `(N·L, specular cosine)`: `N·H` (Blinn-Phong) or `R·V` (Phong), each clamped to `[0, 1]`;
+/// zeros for a bad `to_eye`, specular 0 when `N·L = 0`.
+pub fn cosines(normal: Vec3, to_eye: Vec3, to_light: Vec3, phong: bool) -> (f32, f32) {
+    let n = direction(normal);
+    let l = direction(to_light);
+    let v = direction(to_eye);
+    let n_dot_l = n.dot(l).max(0.0);
+    if v == Vec3::ZERO {
+        return (0.0, 0.0);
+    }
+    if n_dot_l.is_nan() || n_dot_l <= 0.0 {
+        return (n_dot_l, 0.0);
+    }
+    let spec = if phong {
+        let r = 2.0 * n.dot(l) * n - l;
+        r.dot(v)
+    } else {
+        n.dot(direction(l + v))
+    };
+    (n_dot_l, spec.clamp(0.0, 1.0))
+}
+
+fn light(
+    normal: Vec3,
+    to_eye: Vec3,
+    to_light: Vec3,
+    colour: Vec3,
+    attenuation: f32,
+    power: f32,
+    phong: bool,
+) -> Vec4 {
+    if !finite3(colour) || !finite(attenuation) || !finite(power) {
+        return Vec4::ZERO;
+    }
+    let c = colour.clamp(Vec3::ZERO, Vec3::splat(COLOUR_MAX));
+    let (n_dot_l, s) = cosines(normal, to_eye, to_light, phong);
+    let d = n_dot_l * attenuation.clamp(0.0, 1.0);
+    let s = pow_cosine(s, power.clamp(0.0, COLOUR_MAX));
+    (d * c).extend(d * luminance(c) * s)
+}
+
+/// P for the one-buffer layout with Blinn-Phong specular:
+/// `(N·L·att·colour, N·L·att·lum(colour)·(N·H)^power)`.
+pub fn blinn_phong_light(
+    normal: Vec3,
+    to_eye: Vec3,
+    to_light: Vec3,
+    colour: Vec3,
+    attenuation: f32,
+    power: f32,
+) -> Vec4 {
+    light(normal, to_eye, to_light, colour, attenuation, power, false)
+}
+
+/// P for the one-buffer layout with Phong specular: `(…, N·L·att·lum(colour)·(R·V)^power)`.
+pub fn phong_light(
+    normal: Vec3,
+    to_eye: Vec3,
+    to_light: Vec3,
+    colour: Vec3,
+    attenuation: f32,
+    power: f32,
+) -> Vec4 {
+    light(normal, to_eye, to_light, colour, attenuation, power, true)
+}
+
+/// P of a point light (`colour_radius` = colour, radius) with Blinn-Phong specular.
+pub fn point_light(
+    normal: Vec3,
+    to_eye: Vec3,
+    to_light: Vec3,
+    colour_radius: Vec4,
+    power: f32,
+) -> Vec4 {
+    let att = point_attenuation(to_light.length(), colour_radius.w);
+    blinn_phong_light(
+        normal,
+        to_eye,
+        to_light,
+        colour_radius.truncate(),
+        att,
+        power,
+    )
+}
+
+/// P of a spot light: point falloff times [`spot_attenuation`] of the angle between the spot
+/// axis (`axis_cos_outer.xyz`, any length) and the light-to-surface direction.
+pub fn spot_light(
+    normal: Vec3,
+    to_eye: Vec3,
+    to_light: Vec3,
+    colour_radius: Vec4,
+    axis_cos_outer: Vec4,
+    cos_inner: f32,
+    power: f32,
+) -> Vec4 {
+    let cos_angle = direction(axis_cos_outer.truncate()).dot(-direction(to_light));
+    let att = point_attenuation(to_light.length(), colour_radius.w)
+        * spot_attenuation(cos_angle, axis_cos_outer.w, cos_inner);
+    blinn_phong_light(
+        normal,
+        to_eye,
+        to_light,
+        colour_radius.truncate(),
+        att,
+        power,
+    )
+}
+
+/// P for the two-buffer layout's specular target: `N·L·att·colour·(N·H)^power`.
+pub fn blinn_phong_specular_rgb(
+    normal: Vec3,
+    to_eye: Vec3,
+    to_light: Vec3,
+    colour: Vec3,
+    attenuation: f32,
+    power: f32,
+) -> Vec3 {
+    if !finite3(colour) || !finite(attenuation) || !finite(power) {
+        return Vec3::ZERO;
+    }
+    let c = colour.clamp(Vec3::ZERO, Vec3::splat(COLOUR_MAX));
+    let (n_dot_l, s) = cosines(normal, to_eye, to_light, false);
+    let d = n_dot_l * attenuation.clamp(0.0, 1.0);
+    d * pow_cosine(s, power.clamp(0.0, COLOUR_MAX)) * c
+}
+
+/// Engel's reconstruction from an accumulated one-buffer texel: `(a / lum(rgb))^m · lum(rgb)`.
+///
+/// The ratio is `N·H^n` for one light; for several lights it is a luminance-weighted mix that
+/// can exceed 1 (the blog comments' worry): it is clamped to `[0, 1]` before the exponent, so the
+/// result never exceeds `lum(rgb)` and never overflows. Guards: a non-finite channel,
+/// `lum(rgb) < 2^-126` or `a ≤ 0` → 0; the division runs only when `a < lum`. `material_power`
+/// clamps to `[0, 65504]`; NaN/Inf → 0.
+///
+/// **Error bound** (one white light, against Blinn-Phong with exponent `n·m` on the same
+/// adapter): `m·(ε_pow(n) + 13u) + ε_pow(m) + ε_pow(nm) + 8u` relative, derived in
+/// `tests/lighting_prepass.rs`.
+pub fn reconstruct_specular(light: Vec4, material_power: f32) -> f32 {
+    if !finite3(light.truncate()) || !finite(light.w) || !finite(material_power) {
+        return 0.0;
+    }
+    let rgb = light.truncate().max(Vec3::ZERO);
+    let lum = luminance(rgb);
+    if lum.to_bits() < 0x0080_0000 || light.w.is_nan() || light.w <= 0.0 {
+        return 0.0;
+    }
+    let ratio = if light.w < lum { light.w / lum } else { 1.0 };
+    pow_cosine(ratio, material_power.clamp(0.0, COLOUR_MAX)) * lum
+}
+
+/// Clamp to `[0, 65504]`, NaN to 0.
+pub fn clamp_colour(c: Vec3) -> Vec3 {
+    let f = |x: f32| {
+        if x.is_nan() {
+            0.0
+        } else {
+            x.clamp(0.0, COLOUR_MAX)
+        }
+    };
+    Vec3::new(f(c.x), f(c.y), f(c.z))
+}
+
+/// C for the one-buffer layout: `albedo·rgb + gloss·reconstruct_specular(light, m)`.
+pub fn combine(albedo: Vec3, gloss: Vec3, light: Vec4, material_power: f32) -> Vec3 {
+    let spec = reconstruct_specular(light, material_power);
+    clamp_colour(albedo) * clamp_colour(light.truncate()) + clamp_colour(gloss) * spec
+}
+
+/// C for the two-buffer layout: `albedo·diffuse + gloss·specular` (Resistance 2's `C = mp·P`).
+pub fn combine_two_buffers(albedo: Vec3, gloss: Vec3, diffuse: Vec3, specular: Vec3) -> Vec3 {
+    clamp_colour(albedo) * clamp_colour(diffuse) + clamp_colour(gloss) * clamp_colour(specular)
+}
+
+/// Exact references in f64.
+pub mod exact {
+    /// Unit vector in f64 (zero for a zero vector).
+    pub fn unit(v: [f64; 3]) -> [f64; 3] {
+        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        if l == 0.0 { [0.0; 3] } else { v.map(|x| x / l) }
+    }
+
+    fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+        a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    }
+
+    /// `(N·L, N·H)` in f64, both clamped at 0 (N·H 0 when N·L = 0).
+    pub fn cosines(normal: [f64; 3], to_eye: [f64; 3], to_light: [f64; 3]) -> (f64, f64) {
+        let (n, l, v) = (unit(normal), unit(to_light), unit(to_eye));
+        let nl = dot(n, l).max(0.0);
+        if nl <= 0.0 {
+            return (0.0, 0.0);
+        }
+        let h = unit([l[0] + v[0], l[1] + v[1], l[2] + v[2]]);
+        (nl, dot(n, h).clamp(0.0, 1.0))
+    }
+
+    /// One light for [`multi_light_specular`]: `(to_light, lum(colour), attenuation, n)`.
+    pub type Light = ([f64; 3], f64, f64, f64);
+
+    /// Blinn-Phong specular of several lights, evaluated per light as a forward renderer would:
+    /// `Σ_i N·L_i·att_i·lum(c_i)·(N·H_i)^(n_i·m)`.
+    pub fn multi_light_specular(
+        normal: [f64; 3],
+        to_eye: [f64; 3],
+        lights: &[Light],
+        material_power: f64,
+    ) -> f64 {
+        lights
+            .iter()
+            .map(|&(to_light, lum, att, n)| {
+                let (nl, nh) = cosines(normal, to_eye, to_light);
+                nl * att * lum * nh.powf(n * material_power)
+            })
+            .sum()
+    }
+}

@@ -1,0 +1,254 @@
+//! Stencil light volumes and depth bounds (seeds `000`, `004`) — Rust twins of
+//! `wgsl/light_volumes.wgsl`.
+//!
+//! View space: the camera at the origin looking down `+z`; a point's view depth `vz` is its
+//! `z`; `near`, `far` are positive view depths, `far` may be `+∞`.
+//!
+//! **Depth-pass or depth-fail.** Depth-pass stenciling breaks when the near plane clips the
+//! volume's front faces. Every point of the near-plane rectangle lies within
+//! `ρ = near·√(1 + tan²(fov_x/2) + tan²(fov_y/2))` of the eye (the corners are exactly that
+//! far), so a volume farther than `ρ` from the eye cannot reach it (triangle inequality) and
+//! depth-pass is safe; otherwise use depth-fail. That is the talk's "fudge factor", derived:
+//! [`near_corner_distance`]. The comparisons are widened by their own rounding: for the sphere,
+//! `|c|²` and `(r + ρ)²` (after scaling by the largest magnitude) are each within `≈ 6u`
+//! relative (`u = 2^-24`: three products, two sums, one scaling division of 2.5 ULP), so the
+//! right side is enlarged by `16u` relative, which can only add depth-fail cases.
+//!
+//! **Depth bounds.** A sphere of view depth `c` and radius `r` covers view depths
+//! `[c − r, c + r] ∩ [near, far]`; window depth is monotonic in `vz`, so its range is the
+//! window depth of the ends: standard `z = f(vz − n)/((f − n)vz)` (evaluated as
+//! `(f/(f − n))(1 − n/vz)`), reversed `1 − z = (n/(f − n))(f/vz − 1)`, infinite far
+//! `1 − n/vz` and `n/vz`. Evaluation error (WGSL: `/` 2.5 ULP ≤ 5u relative, others 0.5 ULP):
+//! with `k = f/(f − n)`, standard `|Δz| ≤ k·(5u + u + u) + z·(6u + u) ≤ 8u·(1 + k)` and
+//! reversed likewise with `m = k − 1`, so both are widened by `ε = 16u·(1 + k)` (`32u` for
+//! infinite far). 24-bit codes take the floor of the minimum and the ceiling of the maximum
+//! times `2^24 − 1`; each product rounds by at most half a code (values `≤ 2^24`), so the code
+//! nearest any depth inside the float range lies inside the code range.
+//!
+//! **Bad input (both sides):** NaN/Inf, negative radius, `near ≤ 0`, `far ≤ near` → depth-fail
+//! (1) and the full depth range `[0, 1]` / codes `[0, 2^24 − 1]`; a sphere wholly outside
+//! `[near, far]` gives the empty range `(1, 0)` / codes `(2^24 − 1, 0)`.
+//!
+//! **Twins** are the same `f32` formulas, not bit-identical (division, `sqrt`); the tests check
+//! the conservative property on both sides.
+
+use glam::{Vec2, Vec3};
+
+/// Unit roundoff of `f32`, `2^-24`.
+pub const U: f32 = 5.960_464_5e-8;
+const DEPTH24_MAX: f32 = 16_777_215.0;
+
+/// Which window-depth convention a depth buffer uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DepthConvention {
+    /// near → 0, far → 1.
+    Standard,
+    /// near → 1, far → 0.
+    Reversed,
+}
+
+impl DepthConvention {
+    /// The `u32` the WGSL takes: 0 standard, 1 reversed.
+    pub fn wgsl(self) -> u32 {
+        match self {
+            Self::Standard => 0,
+            Self::Reversed => 1,
+        }
+    }
+}
+
+fn finite(x: f32) -> bool {
+    (x.to_bits() & 0x7fff_ffff) < 0x7f80_0000
+}
+
+fn finite3(v: Vec3) -> bool {
+    finite(v.x) && finite(v.y) && finite(v.z)
+}
+
+/// `ρ = near·√(1 + tan_x² + tan_y²)`: distance from the eye to the near-plane rectangle's
+/// corners. Bad input (NaN/Inf, negative) → `3.4e38` (every volume then needs depth-fail).
+pub fn near_corner_distance(near: f32, tan_half_fov_x: f32, tan_half_fov_y: f32) -> f32 {
+    if !finite(near)
+        || !finite(tan_half_fov_x)
+        || !finite(tan_half_fov_y)
+        || near < 0.0
+        || tan_half_fov_x < 0.0
+        || tan_half_fov_y < 0.0
+    {
+        return 3.4e38;
+    }
+    near * (1.0 + tan_half_fov_x * tan_half_fov_x + tan_half_fov_y * tan_half_fov_y).sqrt()
+}
+
+/// 1 when a sphere volume (view-space `center`, `radius`) may touch the eye's `ρ`-ball (use
+/// depth-fail), 0 when depth-pass is safe: `|c|² ≤ (r + ρ)²·(1 + 16u)` after scaling.
+pub fn sphere_needs_depth_fail(center: Vec3, radius: f32, near_corner_distance: f32) -> u32 {
+    if !finite3(center)
+        || !finite(radius)
+        || !finite(near_corner_distance)
+        || radius < 0.0
+        || near_corner_distance < 0.0
+    {
+        return 1;
+    }
+    let s = center
+        .abs()
+        .max_element()
+        .max(radius + near_corner_distance);
+    if s == 0.0 || s.to_bits() < 0x0080_0000 {
+        return 1;
+    }
+    let c = center / s;
+    let reach = (radius + near_corner_distance) / s;
+    u32::from(c.dot(c) <= reach * reach * (1.0 + 16.0 * U))
+}
+
+/// 1 when a cone volume (apex, axis of any length, `range_tan = (length, tan half-angle)`,
+/// flat cap) may touch the eye's `ρ`-ball, 0 when depth-pass is safe. Distance from the eye
+/// to the solid cone in the axis plane, compared with `ρ + 16u·(|apex| + h(1 + tan) + ρ)`.
+pub fn cone_needs_depth_fail(
+    apex: Vec3,
+    axis: Vec3,
+    range_tan: Vec2,
+    near_corner_distance: f32,
+) -> u32 {
+    let (h, k) = (range_tan.x, range_tan.y);
+    let am = axis.abs().max_element();
+    if !finite3(apex)
+        || !finite3(axis)
+        || !finite(h)
+        || !finite(k)
+        || !finite(near_corner_distance)
+        || h < 0.0
+        || k < 0.0
+        || near_corner_distance < 0.0
+        || am.to_bits() < 0x0080_0000
+    {
+        return 1;
+    }
+    let a = axis / am;
+    let d = a * (1.0 / a.dot(a).sqrt());
+    let p = -apex;
+    let t = p.dot(d);
+    let s = (p - t * d).length();
+    let base = h * k;
+    let mut dist = 0.0;
+    if !(t >= 0.0 && t <= h && s <= k * t) {
+        let e = Vec2::new(h, base);
+        let q = Vec2::new(t, s);
+        let ee = e.dot(e);
+        let u = if ee > 0.0 {
+            (q.dot(e) / ee).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let d_slant = (q - u * e).length();
+        let d_cap = (q - Vec2::new(h, s.clamp(0.0, base))).length();
+        let d_axis = (q - Vec2::new(t.clamp(0.0, h), 0.0)).length();
+        dist = d_slant.min(d_cap).min(d_axis);
+    }
+    let margin = 16.0 * U * (apex.length() + h * (1.0 + k) + near_corner_distance);
+    u32::from(dist <= near_corner_distance + margin)
+}
+
+/// Window depth of view depth `vz` (see the module docs for the forms); `far = +∞` allowed.
+pub fn window_depth(vz: f32, near: f32, far: f32, convention: DepthConvention) -> f32 {
+    let infinite = far == f32::INFINITY;
+    match (convention, infinite) {
+        (DepthConvention::Standard, true) => 1.0 - near / vz,
+        (DepthConvention::Standard, false) => (far / (far - near)) * (1.0 - near / vz),
+        (DepthConvention::Reversed, true) => near / vz,
+        (DepthConvention::Reversed, false) => (near / (far - near)) * (far / vz - 1.0),
+    }
+}
+
+/// Depth-bounds range `(min, max)` of window depth containing every point of a sphere light
+/// (view depth `center_z`, `radius`), widened by `ε = 16u(1 + f/(f − n))` and clamped to
+/// `[0, 1]`; `(1, 0)` when the sphere lies wholly outside `[near, far]`.
+pub fn sphere_depth_bounds(
+    center_z: f32,
+    radius: f32,
+    near: f32,
+    far: f32,
+    convention: DepthConvention,
+) -> Vec2 {
+    let infinite = far == f32::INFINITY;
+    if !finite(center_z)
+        || !finite(radius)
+        || !finite(near)
+        || !(finite(far) || infinite)
+        || radius < 0.0
+        || near.is_nan()
+        || near <= 0.0
+        || far.is_nan()
+        || far <= near
+    {
+        return Vec2::new(0.0, 1.0);
+    }
+    let lo = (center_z - radius).max(near);
+    let sum = center_z + radius;
+    let sum_finite = finite(sum);
+    let mut hi = sum;
+    if !infinite && (!sum_finite || sum > far) {
+        hi = far;
+    }
+    let hi_at_infinity = infinite && !sum_finite;
+    if !hi_at_infinity && lo > hi {
+        return Vec2::new(1.0, 0.0);
+    }
+    let k = if infinite { 1.0 } else { far / (far - near) };
+    let eps = 16.0 * U * (1.0 + k);
+    let reversed = convention == DepthConvention::Reversed;
+    let mut z_lo = window_depth(lo, near, far, convention);
+    let mut z_hi = if reversed { 0.0 } else { 1.0 };
+    if !hi_at_infinity {
+        z_hi = window_depth(hi, near, far, convention);
+    }
+    if reversed {
+        std::mem::swap(&mut z_lo, &mut z_hi);
+    }
+    Vec2::new((z_lo - eps).clamp(0.0, 1.0), (z_hi + eps).clamp(0.0, 1.0))
+}
+
+/// [`sphere_depth_bounds`] as 24-bit codes: `(floor(min·(2^24−1)), ceil(max·(2^24−1)))`;
+/// empty range → `(2^24 − 1, 0)`.
+pub fn sphere_depth_bounds24(
+    center_z: f32,
+    radius: f32,
+    near: f32,
+    far: f32,
+    convention: DepthConvention,
+) -> [u32; 2] {
+    let b = sphere_depth_bounds(center_z, radius, near, far, convention);
+    if b.x > b.y {
+        return [0x00ff_ffff, 0];
+    }
+    [
+        (b.x * DEPTH24_MAX).floor() as u32,
+        (b.y * DEPTH24_MAX).ceil() as u32,
+    ]
+}
+
+/// Exact references (f64).
+pub mod exact {
+    use super::DepthConvention;
+
+    /// Window depth in f64.
+    pub fn window_depth(vz: f64, near: f64, far: f64, convention: DepthConvention) -> f64 {
+        let z = if far.is_infinite() {
+            1.0 - near / vz
+        } else {
+            far * (vz - near) / ((far - near) * vz)
+        };
+        match convention {
+            DepthConvention::Standard => z,
+            DepthConvention::Reversed => {
+                if far.is_infinite() {
+                    near / vz
+                } else {
+                    near * (far - vz) / ((far - near) * vz)
+                }
+            }
+        }
+    }
+}

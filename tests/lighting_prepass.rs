@@ -1,0 +1,480 @@
+//! `wgsl/lighting.wgsl` on the adapter: the light pre-pass P/C and Engel's specular
+//! reconstruction against Blinn-Phong, the many-lights approximation measured, bad input.
+//! Twins: `src/lighting/prepass.rs`.
+
+mod common;
+
+use common::gpu;
+use glam::{Vec3, Vec4};
+use prepass::harness::Arg;
+use prepass::lighting::prepass as lpp;
+use prepass::precision::metrics::ulp_distance;
+use prepass::sweep::lighting::{SplitMix, multi_light_reconstruction};
+use prepass::wgsl::LIGHTING;
+
+const U: f64 = 1.0 / 16_777_216.0; // 2^-24
+
+/// Relative error bound of WGSL's `pow(x, y) = exp2(y·log2 x)` as `lpp_pow_cosine` computes it
+/// (x in (0, 1), y ≥ 0), first order, from the spec's allowances: log2 within 2^-21 absolute
+/// on [0.5, 2] and 3 ULP (≤ 6u relative) elsewhere; the product rounds (u); an absolute error
+/// Δt in t = y·log2 x becomes ln2·Δt relative after exp2, which itself adds (3 + 2|t|) ULP
+/// (≤ (3 + 2|t|)·2u relative).
+fn pow_bound(x: f64, y: f64) -> f64 {
+    let l = x.log2();
+    let dlog = if (0.5..=2.0).contains(&x) {
+        2f64.powi(-21)
+    } else {
+        6.0 * U * l.abs()
+    };
+    let t = (y * l).abs();
+    std::f64::consts::LN_2 * (y * dlog + t * U) + (3.0 + 2.0 * t) * 2.0 * U
+}
+
+#[test]
+fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
+    let src = format!(
+        "{LIGHTING}\nfn single(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, p: vec3<f32>) -> vec2<f32> {{\n\
+         let light = lpp_blinn_phong_light(normal, to_eye, to_light, vec3<f32>(1.0), p.x, p.y);\n\
+         let direct = lpp_blinn_phong_light(normal, to_eye, to_light, vec3<f32>(1.0), p.x, p.y * p.z).w;\n\
+         return vec2<f32>(lpp_reconstruct_specular(light, p.z), direct);\n}}"
+    );
+    let mut rng = SplitMix(5);
+    let n = 1 << 16;
+    let normals: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.2)).collect();
+    let eyes: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.05)).collect();
+    let lights: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(-0.4)).collect();
+    // att, light exponent n (integer 1..128), material exponent m (integer 1..16): n·m exact.
+    let params: Vec<[f32; 3]> = (0..n)
+        .map(|i| {
+            let att = if i % 97 == 0 {
+                0.0
+            } else {
+                rng.range(0.01, 1.0)
+            };
+            [
+                att,
+                rng.range(1.0, 128.0).round(),
+                rng.range(1.0, 16.0).round(),
+            ]
+        })
+        .collect();
+    let out = gpu()
+        .kernel(&src, "single")
+        .unwrap()
+        .run(
+            &[
+                Arg::column(&normals),
+                Arg::column(&eyes),
+                Arg::column(&lights),
+                Arg::column(&params),
+            ],
+            n as u64,
+        )
+        .unwrap();
+    let (mut worst_ratio, mut worst_ulps, mut zeros) = (0.0f64, 0u64, 0);
+    for (i, v) in out.as_vec2().iter().enumerate() {
+        let (rec, dir) = (f64::from(v[0]), f64::from(v[1]));
+        assert!(v[0].is_finite() && v[1].is_finite(), "input {i}");
+        let (nl, nh) = lpp::exact::cosines(
+            normals[i].map(f64::from),
+            eyes[i].map(f64::from),
+            lights[i].map(f64::from),
+        );
+        let [att, ln, m] = params[i].map(f64::from);
+        if nl == 0.0 || att == 0.0 || nh == 0.0 {
+            // N·L = 0, attenuation 0 or N·H = 0: nothing is divided, both are exactly zero.
+            assert_eq!(
+                (v[0], v[1]),
+                (0.0, 0.0),
+                "input {i}: N·L {nl}, att {att}, N·H {nh}"
+            );
+            zeros += 1;
+            continue;
+        }
+        // Derivation (relative, u = 2^-24; N·H and N·L·att are the same f32 in both paths):
+        // P: a = d·lum(1,1,1)·(N·H)^n, the light's pow within pow_bound(h, n), two products u
+        // each. C: lum(rgb) of (d, d, d) within 4u of d·Σw (three products, two sums), lum(c)
+        // in P within 2u of Σw, the division 2.5 ULP (5u): ratio = (N·H)^n·(1 + δ),
+        // |δ| ≤ 13u + pow_bound(h, n). The material exponent multiplies δ by m and adds its own
+        // pow_bound(r, m); the final product and lum add 5u. The direct value carries
+        // pow_bound(h, n·m) and 3u.
+        let r = nh.powf(ln);
+        if r < 2f64.powi(-120) {
+            // The light's own (N·H)^n is at f32's underflow cutoff: both results are (near) 0.
+            assert!(
+                rec <= 2f64.powi(-100) && dir <= 2f64.powi(-100),
+                "input {i}"
+            );
+            zeros += 1;
+            continue;
+        }
+        let budget =
+            m * (pow_bound(nh, ln) + 13.0 * U) + pow_bound(r, m) + pow_bound(nh, ln * m) + 8.0 * U;
+        // Results below 2^-126 are flushed to 0 by lpp_pow_cosine's cutoff on either side.
+        let floor = 2f64.powi(-120);
+        let err = (rec - dir).abs();
+        assert!(
+            err <= budget * dir.abs() + floor,
+            "input {i}: reconstructed {rec} vs direct {dir} (N·H {nh}, n {ln}, m {m}), budget {budget}"
+        );
+        if dir > floor {
+            worst_ratio = worst_ratio.max(err / (budget * dir));
+            worst_ulps = worst_ulps.max(ulp_distance(v[0], v[1]).unwrap());
+        }
+    }
+    eprintln!(
+        "one white light, {n} pixels ({zeros} with N·L = 0, att = 0 or (N·H)^n below 2^-120): max difference {worst_ulps} \
+         ULP, at most {:.3} of the derived budget",
+        worst_ratio
+    );
+}
+
+#[test]
+fn many_lights_error_is_measured_and_never_non_finite() {
+    eprintln!(
+        "| lights | pixels | max rel | mean rel | rms rel | max |err|/diffuse lum | ratio > 1 (clamped) |"
+    );
+    for lights in [1, 2, 4, 8, 16, 32, 64] {
+        let r = multi_light_reconstruction(gpu(), lights, 2048, 11 + lights as u64).unwrap();
+        assert_eq!(r.non_finite, 0);
+        // Derived: the reconstruction never exceeds lum(rgb) (ratio clamped to 1) and the
+        // exact specular never exceeds the diffuse luminance ((N·H)^k ≤ 1), both non-negative:
+        // the error is at most the diffuse luminance, up to f32 rounding of the sums (1e-5).
+        assert!(
+            r.absolute_vs_diffuse.max <= 1.0 + 1e-5,
+            "{lights} lights: {}",
+            r.absolute_vs_diffuse.max
+        );
+        eprintln!(
+            "| {lights} | {} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {} |",
+            r.pixels,
+            r.relative.max,
+            r.relative.mean(),
+            r.relative.rms(),
+            r.absolute_vs_diffuse.max,
+            r.ratio_above_one
+        );
+    }
+}
+
+fn specials() -> Vec<f32> {
+    vec![
+        f32::NAN,
+        f32::INFINITY,
+        f32::NEG_INFINITY,
+        0.0,
+        -0.0,
+        f32::from_bits(1),
+        -1.0,
+        0.5,
+        1.0,
+        3.0e38,
+        -3.0e38,
+        1e30,
+    ]
+}
+
+#[test]
+fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
+    let s = specials();
+    let mut rng = SplitMix(9);
+    // Each row: one argument taken from the specials, the others ordinary.
+    let rows = 4096;
+    let mut normal = Vec::new();
+    let mut eye = Vec::new();
+    let mut light = Vec::new();
+    let mut colour = Vec::new();
+    let mut att = Vec::new();
+    let mut power = Vec::new();
+    for i in 0..rows {
+        let pick = |rng: &mut SplitMix| s[(rng.next_u64() % s.len() as u64) as usize];
+        let mut nv = rng.hemisphere(0.2);
+        let mut ev = rng.hemisphere(0.1);
+        let mut lv = rng.hemisphere(-0.3);
+        let mut cv = [
+            rng.range(0.0, 2.0),
+            rng.range(0.0, 2.0),
+            rng.range(0.0, 2.0),
+        ];
+        let mut a = rng.range(0.0, 1.0);
+        let mut p = rng.range(1.0, 64.0);
+        match i % 7 {
+            0 => nv[(i / 7) % 3] = pick(&mut rng),
+            1 => ev[(i / 7) % 3] = pick(&mut rng),
+            2 => lv[(i / 7) % 3] = pick(&mut rng),
+            3 => cv[(i / 7) % 3] = pick(&mut rng),
+            4 => a = pick(&mut rng),
+            5 => p = pick(&mut rng),
+            _ => {
+                nv = [0.0; 3]; // zero-length normal
+                lv = if i % 2 == 0 { [0.0; 3] } else { lv };
+                ev = if i % 3 == 0 { [0.0; 3] } else { ev };
+            }
+        }
+        normal.push(nv);
+        eye.push(ev);
+        light.push(lv);
+        colour.push(cv);
+        att.push(a);
+        power.push(p);
+    }
+    let args = [
+        Arg::column(&normal),
+        Arg::column(&eye),
+        Arg::column(&light),
+        Arg::column(&colour),
+        Arg::column(&att),
+        Arg::column(&power),
+    ];
+    for f in ["lpp_blinn_phong_light", "lpp_phong_light"] {
+        let out = gpu()
+            .kernel(LIGHTING, f)
+            .unwrap()
+            .run(&args, rows as u64)
+            .unwrap();
+        for (i, v) in out.as_vec4().iter().enumerate() {
+            assert!(v.iter().all(|x| x.is_finite()), "{f} row {i}: {v:?}");
+            let twin = if f == "lpp_phong_light" {
+                lpp::phong_light
+            } else {
+                lpp::blinn_phong_light
+            }(
+                Vec3::from(normal[i]),
+                Vec3::from(eye[i]),
+                Vec3::from(light[i]),
+                Vec3::from(colour[i]),
+                att[i],
+                power[i],
+            );
+            let bad = !(normal[i]
+                .iter()
+                .chain(&eye[i])
+                .chain(&light[i])
+                .chain(&colour[i]))
+            .all(|x| x.is_finite())
+                || !att[i].is_finite()
+                || !power[i].is_finite();
+            if bad {
+                assert_eq!(*v, [0.0; 4], "{f} row {i}: non-finite input must give 0");
+            }
+            if twin == Vec4::ZERO {
+                // Zero exactly when a guard fires: the same guard on both sides.
+                assert!(
+                    v.iter().all(|&x| x == 0.0) || v.iter().all(|x| x.abs() < 1e-30),
+                    "{f} row {i}: {v:?} vs twin 0"
+                );
+            }
+            // Same formulas, not bit-identical (inverseSqrt, division, log2/exp2 may differ).
+            // Diffuse lanes: the directions and products differ by ≤ ~20u per side (64u).
+            // Specular lane: both sides within pow_bound of c^y, recovered from the twin as
+            // c^y = a/lum(rgb) (y the clamped power), plus 64u for the rest; an absolute 1e-30
+            // covers the 2^-126 cutoff (lum ≤ 65504²).
+            let y = f64::from(power[i].clamp(0.0, 65504.0));
+            let lum_rgb = f64::from(lpp::luminance(twin.truncate()));
+            let cy = if lum_rgb > 0.0 {
+                f64::from(twin.w) / lum_rgb
+            } else {
+                0.0
+            };
+            let spec_tol = if cy > 0.0 && cy < 1.0 && y > 0.0 {
+                2.0 * pow_bound(cy.powf(1.0 / y), y) + 64.0 * U
+            } else {
+                64.0 * U
+            };
+            for (k, (&g, t)) in v.iter().zip(twin.to_array()).enumerate() {
+                let rel = if k == 3 { spec_tol } else { 64.0 * U };
+                let tol = rel * f64::from(t.abs()) + 1e-30;
+                assert!(
+                    (f64::from(g) - f64::from(t)).abs() <= tol,
+                    "{f} row {i} lane {k}: {g} vs twin {t}"
+                );
+            }
+        }
+    }
+    // Light-buffer texels C may see, including accumulated N·H > 1 (a > lum(rgb)).
+    let mut texels = Vec::new();
+    let mut mats = Vec::new();
+    for &a in &s {
+        for &b in &s {
+            for m in [0.0f32, 1.0, 8.0, 65504.0, 1e30, -3.0, f32::NAN] {
+                texels.push([a.abs().min(4.0), 0.5, b, a]);
+                texels.push([1.0, 1.0, 1.0, 1.2]); // two lights with N·H^n = 0.6 each
+                mats.push(m);
+                mats.push(m);
+            }
+        }
+    }
+    let out = gpu()
+        .kernel(LIGHTING, "lpp_reconstruct_specular")
+        .unwrap()
+        .run(
+            &[Arg::column(&texels), Arg::column(&mats)],
+            texels.len() as u64,
+        )
+        .unwrap();
+    for (i, &v) in out.as_f32().iter().enumerate() {
+        let t = texels[i];
+        let twin = lpp::reconstruct_specular(Vec4::from(t), mats[i]);
+        assert!(v.is_finite() && v >= 0.0, "texel {t:?} m {}: {v}", mats[i]);
+        let lum = lpp::luminance(Vec3::new(t[0], t[1], t[2]).max(Vec3::ZERO));
+        if lum.is_finite() {
+            // Never above lum(rgb): the ratio is clamped before the exponent.
+            assert!(
+                f64::from(v) <= f64::from(lum) * (1.0 + 1e-6),
+                "{t:?}: {v} > {lum}"
+            );
+        }
+        assert!(
+            (f64::from(v) - f64::from(twin)).abs() <= 1e-4 * f64::from(twin.abs()) + 1e-30,
+            "texel {t:?} m {}: {v} vs twin {twin}",
+            mats[i]
+        );
+    }
+}
+
+#[test]
+fn two_buffer_layout_and_combination_agree_with_the_one_buffer_layout() {
+    // For one light, C(two buffers) and C(one buffer) give the same colour up to rounding, and
+    // the Rust twins of the combination agree with the adapter.
+    let mut rng = SplitMix(21);
+    let n = 4096;
+    let normals: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.2)).collect();
+    let eyes: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.1)).collect();
+    let lights: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.1)).collect();
+    let src = format!(
+        "{LIGHTING}\nfn both(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>) -> vec4<f32> {{\n\
+         let c = vec3<f32>(1.0, 0.8, 0.6); let albedo = vec3<f32>(0.5, 0.4, 0.3); let gloss = vec3<f32>(0.9);\n\
+         let one = lpp_combine(albedo, gloss, lpp_blinn_phong_light(normal, to_eye, to_light, c, 0.7, 16.0), 1.0);\n\
+         let spec = lpp_blinn_phong_specular_rgb(normal, to_eye, to_light, c, 0.7, 16.0);\n\
+         let diff = lpp_blinn_phong_light(normal, to_eye, to_light, c, 0.7, 16.0).xyz;\n\
+         let two = lpp_combine_two_buffers(albedo, gloss, diff, vec3<f32>(lpp_luminance(spec)));\n\
+         return vec4<f32>(one - two, length(one));\n}}"
+    );
+    let out = gpu()
+        .kernel(&src, "both")
+        .unwrap()
+        .run(
+            &[
+                Arg::column(&normals),
+                Arg::column(&eyes),
+                Arg::column(&lights),
+            ],
+            n as u64,
+        )
+        .unwrap();
+    let mut worst = 0.0f64;
+    for v in out.as_vec4() {
+        let d = Vec3::new(v[0], v[1], v[2]).length();
+        // With m = 1 the reconstruction is (a/lum)·lum = a up to the division and luminance
+        // roundings (≈ 10u relative of the specular, itself ≤ the colour's length ≈ 2): the two
+        // layouts agree within 1e-5 absolute.
+        assert!(f64::from(d) <= 1e-5, "layouts differ by {d}");
+        worst = worst.max(f64::from(d));
+    }
+    eprintln!("one-buffer vs two-buffer C for one light: max |difference| {worst:.3e}");
+}
+
+#[test]
+fn point_and_spot_lights_match_their_twins_and_stay_finite() {
+    let mut rng = SplitMix(33);
+    let n = 4096;
+    let s = specials();
+    let mut normals = Vec::new();
+    let mut eyes = Vec::new();
+    let mut to_light = Vec::new();
+    let mut colour_radius = Vec::new();
+    let mut axis = Vec::new();
+    let mut inner = Vec::new();
+    let mut power = Vec::new();
+    for i in 0..n {
+        normals.push(rng.hemisphere(0.2));
+        eyes.push(rng.hemisphere(0.1));
+        let l = rng.hemisphere(-0.2);
+        let d = rng.range(0.1, 6.0);
+        to_light.push(l.map(|x| x * d));
+        let mut cr = [
+            rng.range(0.0, 2.0),
+            rng.range(0.0, 2.0),
+            rng.range(0.0, 2.0),
+            rng.range(0.5, 5.0),
+        ];
+        let a = rng.hemisphere(-1.0);
+        let outer = rng.range(0.2, 0.9);
+        let mut ax = [-a[0], -a[1], -a[2], outer];
+        let mut inn = outer + rng.range(-0.1, 0.1);
+        if i % 5 == 0 {
+            // one special value in the radius, the cone or the inner cosine
+            let x = s[(rng.next_u64() % s.len() as u64) as usize];
+            match i % 3 {
+                0 => cr[3] = x,
+                1 => ax[3] = x,
+                _ => inn = x,
+            }
+        }
+        colour_radius.push(cr);
+        axis.push(ax);
+        inner.push(inn);
+        power.push(rng.range(1.0, 64.0));
+    }
+    let g = gpu();
+    let point = g
+        .kernel(LIGHTING, "lpp_point_light")
+        .unwrap()
+        .run(
+            &[
+                Arg::column(&normals),
+                Arg::column(&eyes),
+                Arg::column(&to_light),
+                Arg::column(&colour_radius),
+                Arg::column(&power),
+            ],
+            n as u64,
+        )
+        .unwrap();
+    let spot = g
+        .kernel(LIGHTING, "lpp_spot_light")
+        .unwrap()
+        .run(
+            &[
+                Arg::column(&normals),
+                Arg::column(&eyes),
+                Arg::column(&to_light),
+                Arg::column(&colour_radius),
+                Arg::column(&axis),
+                Arg::column(&inner),
+                Arg::column(&power),
+            ],
+            n as u64,
+        )
+        .unwrap();
+    let (mut worst, mut lit) = (0.0f64, 0);
+    for i in 0..n {
+        let (nv, ev, lv) = (
+            Vec3::from(normals[i]),
+            Vec3::from(eyes[i]),
+            Vec3::from(to_light[i]),
+        );
+        let cr = Vec4::from(colour_radius[i]);
+        let tp = lpp::point_light(nv, ev, lv, cr, power[i]);
+        let ts = lpp::spot_light(nv, ev, lv, cr, Vec4::from(axis[i]), inner[i], power[i]);
+        for (got, twin) in [(point.as_vec4()[i], tp), (spot.as_vec4()[i], ts)] {
+            assert!(got.iter().all(|x| x.is_finite()), "row {i}: {got:?}");
+            // Same formulas; the attenuations are smooth in their inputs except at the spot's
+            // edges, so compare with a tolerance of 1e-4 of the colour scale (a few ULP of the
+            // cosines through slopes ≤ 1/(cos_inner − cos_outer) ≤ 1e4·…) plus 1e-6 absolute.
+            let d = (Vec4::from(got) - twin).abs().max_element();
+            assert!(
+                f64::from(d) <= 1e-4 * f64::from(twin.abs().max_element()) + 1e-4,
+                "row {i}: {got:?} vs twin {twin}"
+            );
+            worst = worst.max(f64::from(d));
+            if got[0] + got[1] + got[2] > 0.0 {
+                lit += 1;
+            }
+        }
+    }
+    eprintln!(
+        "point/spot P: {lit} of {} lit, max |adapter − twin| {worst:.3e}",
+        2 * n
+    );
+}

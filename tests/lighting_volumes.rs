@@ -1,0 +1,398 @@
+//! `wgsl/light_volumes.wgsl` on the adapter: depth bounds of sphere lights contain every point of
+//! the sphere (proptest, points on the surface) and are tight; the depth-pass/depth-fail choice
+//! is conservative for spheres and cones; bad input. Twins: `src/lighting/volumes.rs`.
+
+mod common;
+
+use common::gpu;
+use glam::{Vec2, Vec3};
+use prepass::harness::Arg;
+use prepass::lighting::volumes::{self, DepthConvention, exact};
+use prepass::wgsl::LIGHT_VOLUMES;
+use proptest::prelude::*;
+use proptest::strategy::ValueTree;
+use proptest::test_runner::TestRunner;
+
+const U: f64 = 1.0 / 16_777_216.0;
+const D24: f64 = 16_777_215.0;
+
+fn draw<S: Strategy>(s: &S, n: usize) -> Vec<S::Value> {
+    let mut runner = TestRunner::deterministic();
+    (0..n)
+        .map(|_| s.new_tree(&mut runner).unwrap().current())
+        .collect()
+}
+
+/// (center_z, radius, near, far (+Inf one time in four), reversed): near 1e-4…10, far/near
+/// 10…1e9, spheres anywhere from in front of near to beyond far.
+fn bounds_case() -> impl Strategy<Value = (f32, f32, f32, f32, u32)> {
+    (
+        -4.0f64..1.0,
+        1.0f64..9.0,
+        0.0f64..1.0,
+        -3.0f64..0.5,
+        0u32..2,
+        0u32..4,
+    )
+        .prop_map(|(log_near, log_ratio, pos, log_r, reversed, inf)| {
+            let near = 10f64.powf(log_near);
+            let far = near * 10f64.powf(log_ratio);
+            // centre spread log-uniformly between near/2 and 2·far
+            let cz = (near * 0.5) * ((far * 4.0) / near).powf(pos);
+            let radius = cz * 10f64.powf(log_r);
+            let far = if inf == 0 { f64::INFINITY } else { far };
+            (cz as f32, radius as f32, near as f32, far as f32, reversed)
+        })
+}
+
+fn convention(r: u32) -> DepthConvention {
+    if r == 0 {
+        DepthConvention::Standard
+    } else {
+        DepthConvention::Reversed
+    }
+}
+
+#[test]
+fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
+    let cases = draw(&bounds_case(), 4096);
+    let col =
+        |f: fn(&(f32, f32, f32, f32, u32)) -> f32| -> Vec<f32> { cases.iter().map(f).collect() };
+    let (cz, r, n, f) = (col(|c| c.0), col(|c| c.1), col(|c| c.2), col(|c| c.3));
+    let rev: Vec<u32> = cases.iter().map(|c| c.4).collect();
+    let args = [
+        Arg::column(&cz),
+        Arg::column(&r),
+        Arg::column(&n),
+        Arg::column(&f),
+        Arg::column(&rev),
+    ];
+    let g = gpu();
+    let bounds = g
+        .kernel(LIGHT_VOLUMES, "light_volume_sphere_depth_bounds")
+        .unwrap()
+        .run(&args, cases.len() as u64)
+        .unwrap();
+    let codes = g
+        .kernel(LIGHT_VOLUMES, "light_volume_sphere_depth_bounds24")
+        .unwrap()
+        .run(&args, cases.len() as u64)
+        .unwrap();
+    let (mut points, mut empty) = (0u64, 0u64);
+    let (mut loose_u, mut loose_codes) = (0.0f64, 0.0f64);
+    let mut rng = prepass::sweep::lighting::SplitMix(3);
+    for (i, (b, c)) in bounds
+        .as_vec2()
+        .iter()
+        .zip(codes.words().chunks_exact(2))
+        .enumerate()
+    {
+        let (czi, ri, ni, fi) = (
+            f64::from(cz[i]),
+            f64::from(r[i]),
+            f64::from(n[i]),
+            f64::from(f[i]),
+        );
+        let conv = convention(rev[i]);
+        assert!(b[0].is_finite() && b[1].is_finite());
+        let twin = volumes::sphere_depth_bounds(cz[i], r[i], n[i], f[i], conv);
+        let k = if fi.is_infinite() {
+            1.0
+        } else {
+            fi / (fi - ni)
+        };
+        let eps = 16.0 * U * (1.0 + k);
+        let lo = (czi - ri).max(ni);
+        let hi = (czi + ri).min(fi);
+        if lo > hi {
+            // Wholly outside [near, far]: the empty range on both sides (an f32 tie at the
+            // edge could go either way; none occurs in these cases).
+            assert!(b[0] > b[1] && twin.x > twin.y, "case {i}: {b:?}");
+            assert_eq!((c[0], c[1]), (0xff_ffff, 0));
+            empty += 1;
+            continue;
+        }
+        // Every point of the sphere's surface with a visible depth: 64 random directions plus
+        // the two poles along the view axis.
+        for j in 0..66 {
+            let dz = match j {
+                0 => 1.0,
+                1 => -1.0,
+                _ => f64::from(rng.range(-1.0, 1.0)),
+            };
+            let vz = czi + ri * dz;
+            if vz < ni || vz > fi {
+                continue; // clipped by the near or far plane: never in the depth buffer
+            }
+            let z = exact::window_depth(vz, ni, fi, conv);
+            assert!(
+                f64::from(b[0]) <= z && z <= f64::from(b[1]),
+                "case {i} {:?}: depth {z} of vz {vz} outside {b:?}",
+                cases[i]
+            );
+            let code = (z * D24).round() as u32;
+            assert!(
+                c[0] <= code && code <= c[1],
+                "case {i}: code {code} outside {c:?}"
+            );
+            points += 1;
+        }
+        // Tightness: the float range is within the widening eps plus the evaluation error
+        // (≤ eps, derived in src/lighting/volumes.rs) of the exact range: ≤ 2·eps each side.
+        let (za, zb) = (
+            exact::window_depth(lo, ni, fi, conv),
+            if hi.is_infinite() {
+                if rev[i] == 0 { 1.0 } else { 0.0 }
+            } else {
+                exact::window_depth(hi, ni, fi, conv)
+            },
+        );
+        let (emin, emax) = (za.min(zb), za.max(zb));
+        let (dl, dh) = (emin - f64::from(b[0]), f64::from(b[1]) - emax);
+        assert!(
+            dl <= 2.0 * eps + U && dh <= 2.0 * eps + U,
+            "case {i}: loose by {dl:e}/{dh:e}, eps {eps:e}"
+        );
+        // Codes: one more code each side at most beyond the float range.
+        let (cl, ch) = (emin * D24 - f64::from(c[0]), f64::from(c[1]) - emax * D24);
+        assert!(cl <= (2.0 * eps + U) * D24 + 1.0 && ch <= (2.0 * eps + U) * D24 + 1.0);
+        loose_u = loose_u.max(dl.max(dh) / U);
+        loose_codes = loose_codes.max(cl.max(ch));
+        // The twin: same formulas, within the evaluation error of each other.
+        assert!((twin - Vec2::from(*b)).abs().max_element() as f64 <= 2.0 * eps + U);
+    }
+    eprintln!(
+        "depth bounds: {} spheres ({empty} outside [near, far]), {points} surface points all \
+         inside; widest margin {loose_u:.1} u beyond the exact range ({loose_codes:.2} codes)",
+        cases.len()
+    );
+}
+
+/// (center, radius, near, tan_x, tan_y) for the stencil choice: spheres around the eye.
+fn sphere_case() -> impl Strategy<Value = ([f32; 3], f32, f32, f32, f32)> {
+    (
+        [-3.0f32..3.0, -3.0f32..3.0, -3.0f32..3.0],
+        0.01f32..2.0,
+        0.01f32..1.0,
+        0.1f32..2.0,
+        0.1f32..2.0,
+    )
+}
+
+fn dist_to_near_rect(p: [f64; 3], near: f64, tx: f64, ty: f64) -> f64 {
+    let q = [
+        p[0].clamp(-near * tx, near * tx),
+        p[1].clamp(-near * ty, near * ty),
+        near,
+    ];
+    ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt()
+}
+
+#[test]
+fn sphere_stencil_choice_is_conservative() {
+    let cases = draw(&sphere_case(), 8192);
+    let centers: Vec<[f32; 3]> = cases.iter().map(|c| c.0).collect();
+    let radii: Vec<f32> = cases.iter().map(|c| c.1).collect();
+    let rho: Vec<f32> = cases
+        .iter()
+        .map(|c| volumes::near_corner_distance(c.2, c.3, c.4))
+        .collect();
+    let out = gpu()
+        .kernel(LIGHT_VOLUMES, "light_volume_sphere_needs_depth_fail")
+        .unwrap()
+        .run(
+            &[
+                Arg::column(&centers),
+                Arg::column(&radii),
+                Arg::column(&rho),
+            ],
+            cases.len() as u64,
+        )
+        .unwrap();
+    let (mut needed, mut extra, mut safe) = (0, 0, 0);
+    for (i, &got) in out.as_u32().iter().enumerate() {
+        let (c, r, n, tx, ty) = cases[i];
+        let c64 = c.map(f64::from);
+        let len = (c64[0].powi(2) + c64[1].powi(2) + c64[2].powi(2)).sqrt();
+        let touches = dist_to_near_rect(c64, f64::from(n), f64::from(tx), f64::from(ty))
+            <= f64::from(r)
+            || len <= f64::from(r);
+        assert_eq!(
+            got,
+            volumes::sphere_needs_depth_fail(Vec3::from(c), r, rho[i]),
+            "case {i}: twin differs"
+        );
+        if touches {
+            assert_eq!(
+                got, 1,
+                "case {i}: {:?} touches the near rectangle",
+                cases[i]
+            );
+            needed += 1;
+        } else if got == 1 {
+            extra += 1;
+        } else {
+            safe += 1;
+        }
+    }
+    eprintln!(
+        "sphere volumes: {needed} need depth-fail (all flagged), {extra} flagged by the rho margin \
+         without touching the near rectangle, {safe} depth-pass"
+    );
+}
+
+#[test]
+fn cone_stencil_choice_is_conservative() {
+    let strategy = (
+        [-3.0f32..3.0, -3.0f32..3.0, -3.0f32..3.0],
+        [-1.0f32..1.0, -1.0f32..1.0, -1.0f32..1.0],
+        0.1f32..4.0,
+        0.05f32..1.5,
+        0.01f32..1.0,
+        0.1f32..2.0,
+    );
+    let cases: Vec<_> = draw(&strategy, 8192)
+        .into_iter()
+        .filter(|c| c.1.iter().map(|x| x * x).sum::<f32>() > 0.01)
+        .collect();
+    let apex: Vec<[f32; 3]> = cases.iter().map(|c| c.0).collect();
+    let axis: Vec<[f32; 3]> = cases.iter().map(|c| c.1).collect();
+    let rt: Vec<[f32; 2]> = cases.iter().map(|c| [c.2, c.3]).collect();
+    let rho: Vec<f32> = cases
+        .iter()
+        .map(|c| volumes::near_corner_distance(c.4, c.5, c.5))
+        .collect();
+    let out = gpu()
+        .kernel(LIGHT_VOLUMES, "light_volume_cone_needs_depth_fail")
+        .unwrap()
+        .run(
+            &[
+                Arg::column(&apex),
+                Arg::column(&axis),
+                Arg::column(&rt),
+                Arg::column(&rho),
+            ],
+            cases.len() as u64,
+        )
+        .unwrap();
+    let (mut needed, mut flagged, mut twin_diff) = (0, 0, 0);
+    for (i, &got) in out.as_u32().iter().enumerate() {
+        let (a, d, h, k, n, t) = cases[i];
+        let a64 = a.map(f64::from);
+        let dl = d.iter().map(|x| f64::from(*x).powi(2)).sum::<f64>().sqrt();
+        let d64 = d.map(|x| f64::from(x) / dl);
+        let inside = |p: [f64; 3]| {
+            let q = [p[0] - a64[0], p[1] - a64[1], p[2] - a64[2]];
+            let tt = q[0] * d64[0] + q[1] * d64[1] + q[2] * d64[2];
+            let ss = (q.iter().map(|x| x * x).sum::<f64>() - tt * tt)
+                .max(0.0)
+                .sqrt();
+            tt >= 0.0 && tt <= f64::from(h) && ss <= f64::from(k) * tt
+        };
+        // The eye and a 17×17 grid over the near rectangle: any of them inside the cone means
+        // the near plane clips it (a necessary condition, checked in f64).
+        let (n, t) = (f64::from(n), f64::from(t));
+        let mut touches = inside([0.0; 3]);
+        for ix in 0..17 {
+            for iy in 0..17 {
+                let x = n * t * (f64::from(ix) / 8.0 - 1.0);
+                let y = n * t * (f64::from(iy) / 8.0 - 1.0);
+                touches |= inside([x, y, n]);
+            }
+        }
+        if touches {
+            assert_eq!(
+                got, 1,
+                "case {i}: {:?} reaches the near rectangle",
+                cases[i]
+            );
+            needed += 1;
+        }
+        flagged += got;
+        let twin =
+            volumes::cone_needs_depth_fail(Vec3::from(a), Vec3::from(d), Vec2::new(h, k), rho[i]);
+        if twin != got {
+            twin_diff += 1;
+        }
+    }
+    // The twin may differ only for cones within the rounding margin of the threshold.
+    assert!(
+        twin_diff * 1000 <= cases.len(),
+        "{twin_diff} twin differences"
+    );
+    eprintln!(
+        "cone volumes: {} cases, {needed} reach the near rectangle (all flagged), {flagged} \
+         flagged in all, twin differs in {twin_diff}",
+        cases.len()
+    );
+}
+
+#[test]
+fn bad_input_answers_depth_fail_and_the_full_range() {
+    let bad = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -1.0];
+    let g = gpu();
+    let sphere = g
+        .kernel(LIGHT_VOLUMES, "light_volume_sphere_needs_depth_fail")
+        .unwrap();
+    let bounds = g
+        .kernel(LIGHT_VOLUMES, "light_volume_sphere_depth_bounds24")
+        .unwrap();
+    for &x in &bad {
+        let out = sphere
+            .run(
+                &[
+                    Arg::column(&[[x, 0.0, 5.0], [0.0, 0.0, 5.0], [0.0, 0.0, 5.0]]),
+                    Arg::column(&[1.0f32, x, 1.0]),
+                    Arg::column(&[0.1f32, 0.1, x]),
+                ],
+                3,
+            )
+            .unwrap();
+        // −1 is a valid centre coordinate (|c| = 5.1 > r + rho: depth-pass); bad elsewhere.
+        let first = if x == -1.0 { 0 } else { 1 };
+        assert_eq!(out.as_u32(), &[first, 1, 1], "bad {x}");
+        assert_eq!(
+            volumes::sphere_needs_depth_fail(Vec3::new(x, 0.0, 5.0), 1.0, 0.1),
+            first
+        );
+        // center, radius, near, far bad in turn (far = +Inf is valid: infinite far plane).
+        let rows: [[f32; 4]; 4] = [
+            [x, 1.0, 0.1, 100.0],
+            [5.0, x, 0.1, 100.0],
+            [5.0, 1.0, x, 100.0],
+            [5.0, 1.0, 0.1, if x == f32::INFINITY { 0.05 } else { x }],
+        ];
+        for row in rows {
+            let out = bounds
+                .run(
+                    &[
+                        Arg::splat_f32(row[0]),
+                        Arg::splat_f32(row[1]),
+                        Arg::splat_f32(row[2]),
+                        Arg::splat_f32(row[3]),
+                        Arg::splat_u32(0),
+                    ],
+                    1,
+                )
+                .unwrap();
+            // A centre at −1 is valid: the sphere [−2, 0] lies in front of near, the empty range.
+            let want = if row[0] == -1.0 {
+                [0xff_ffff, 0]
+            } else {
+                [0, 0xff_ffff]
+            };
+            assert_eq!(out.as_u32(), &want, "{row:?}");
+            assert_eq!(
+                volumes::sphere_depth_bounds24(
+                    row[0],
+                    row[1],
+                    row[2],
+                    row[3],
+                    DepthConvention::Standard
+                ),
+                want
+            );
+        }
+    }
+    assert_eq!(volumes::near_corner_distance(f32::NAN, 1.0, 1.0), 3.4e38);
+}

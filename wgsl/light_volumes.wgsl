@@ -1,0 +1,174 @@
+// prepass — stencil light volumes and the depth-bounds test for lights (seeds 000 and 004).
+// Rust twin: src/lighting/volumes.rs. Tests: tests/lighting_volumes.rs.
+//
+// View space: the camera at the origin looking down +z, so a point's view depth vz is its z
+// (the talk's w); near and far are positive view depths, far may be +Inf.
+//
+// Depth-pass stenciling (front faces increment, back faces decrement where the depth test
+// passes) breaks when the near plane clips the volume's front faces: the camera is inside the
+// volume, or the volume pokes through the near-plane rectangle. Then the renderer switches to
+// depth-fail. The "fudge factor" follows from the near plane: every point of the near-plane
+// rectangle lies within rho = near·sqrt(1 + tan²(fov_x/2) + tan²(fov_y/2)) of the eye (its
+// corners are exactly that far), so a volume whose distance from the eye is at least rho
+// cannot touch the rectangle, and depth-pass is safe. The tests add the f32 rounding of the
+// distance computation on top (a relative margin derived in the twin's docs).
+//
+// Bad input: any NaN/Inf, a negative radius or near_corner_distance, or a zero-length cone axis
+// answers 1 (depth-fail is always correct, only slower). Depth bounds with bad input return
+// the full range [0, 1] (codes [0, 2^24 - 1]) — the depth-bounds test then culls nothing.
+
+const LIGHT_VOLUME_U = 5.9604645e-8; // 2^-24, the unit roundoff of f32
+const LIGHT_VOLUME_DEPTH24_MAX = 16777215.0;
+
+fn light_volume_finite(x: f32) -> bool {
+    return (bitcast<u32>(x) & 0x7fffffffu) < 0x7f800000u;
+}
+
+fn light_volume_finite3(v: vec3<f32>) -> bool {
+    return all((bitcast<vec3<u32>>(v) & vec3<u32>(0x7fffffffu)) < vec3<u32>(0x7f800000u));
+}
+
+// rho: distance from the eye to the corners of the near-plane rectangle,
+// near·sqrt(1 + tan_half_fov_x² + tan_half_fov_y²). Bad input (NaN/Inf, negative) gives +Inf's
+// stand-in 3.4e38, which makes every volume need depth-fail.
+fn light_volume_near_corner_distance(near: f32, tan_half_fov_x: f32, tan_half_fov_y: f32) -> f32 {
+    if (!light_volume_finite(near) || !light_volume_finite(tan_half_fov_x)
+        || !light_volume_finite(tan_half_fov_y) || near < 0.0 || tan_half_fov_x < 0.0
+        || tan_half_fov_y < 0.0) {
+        return 3.4e38;
+    }
+    return near * sqrt(1.0 + tan_half_fov_x * tan_half_fov_x + tan_half_fov_y * tan_half_fov_y);
+}
+
+// 1 when a sphere light volume (view-space centre, radius) may touch the eye's rho-ball, so the
+// stencil pass must use depth-fail; 0 when depth-pass is safe. Tests |c|² < (r + rho)² with the
+// right side enlarged by 2^-20 relative, which covers the f32 rounding of both sides (each
+// within 6u relative, derivation in src/lighting/volumes.rs).
+fn light_volume_sphere_needs_depth_fail(center: vec3<f32>, radius: f32, near_corner_distance: f32) -> u32 {
+    if (!light_volume_finite3(center) || !light_volume_finite(radius)
+        || !light_volume_finite(near_corner_distance) || radius < 0.0 || near_corner_distance < 0.0) {
+        return 1u;
+    }
+    // Scale by the largest magnitude so the squares cannot overflow.
+    let a = abs(center);
+    let s = max(max(a.x, max(a.y, a.z)), radius + near_corner_distance);
+    if (s == 0.0 || bitcast<u32>(s) < 0x00800000u) {
+        return 1u;
+    }
+    let c = center / s;
+    let reach = (radius + near_corner_distance) / s;
+    return select(0u, 1u, dot(c, c) <= reach * reach * (1.0 + 16.0 * LIGHT_VOLUME_U));
+}
+
+// 1 when a cone light volume may touch the eye's rho-ball (depth-fail), 0 when depth-pass is
+// safe. The cone: apex (view space), axis (any length), length h = range_tan.x along the axis,
+// base radius h·range_tan.y (range_tan.y = tan of the half-angle), flat cap. The distance from
+// the eye to the solid cone is measured in the plane of the axis (t along it, s across it),
+// where the cone is the triangle (0,0), (h,0), (h, h·tan); the comparison is widened by the
+// derived rounding margin 16u·(|apex| + h·(1 + tan)) + 16u·rho.
+fn light_volume_cone_needs_depth_fail(apex: vec3<f32>, axis: vec3<f32>, range_tan: vec2<f32>,
+                                      near_corner_distance: f32) -> u32 {
+    let h = range_tan.x;
+    let k = range_tan.y;
+    let aa = abs(axis);
+    let am = max(aa.x, max(aa.y, aa.z));
+    if (!light_volume_finite3(apex) || !light_volume_finite3(axis) || !light_volume_finite(h)
+        || !light_volume_finite(k) || !light_volume_finite(near_corner_distance) || h < 0.0
+        || k < 0.0 || near_corner_distance < 0.0 || bitcast<u32>(am) < 0x00800000u) {
+        return 1u;
+    }
+    let d = (axis / am) * inverseSqrt(dot(axis / am, axis / am));
+    let p = -apex; // the eye relative to the apex
+    let t = dot(p, d);
+    let s = length(p - t * d);
+    let base = h * k;
+    var dist = 0.0;
+    if (!(t >= 0.0 && t <= h && s <= k * t)) {
+        // Distances to the slant edge (0,0)-(h,base), the cap (h,0)-(h,base), the axis (0,0)-(h,0).
+        let e = vec2<f32>(h, base);
+        let q = vec2<f32>(t, s);
+        let ee = dot(e, e);
+        var u = 0.0;
+        if (ee > 0.0) {
+            u = clamp(dot(q, e) / ee, 0.0, 1.0);
+        }
+        let d_slant = length(q - u * e);
+        let d_cap = length(q - vec2<f32>(h, clamp(s, 0.0, base)));
+        let d_axis = length(q - vec2<f32>(clamp(t, 0.0, h), 0.0));
+        dist = min(d_slant, min(d_cap, d_axis));
+    }
+    let margin = 16.0 * LIGHT_VOLUME_U * (length(apex) + h * (1.0 + k) + near_corner_distance);
+    return select(0u, 1u, dist <= near_corner_distance + margin);
+}
+
+// Window depth of a view depth vz (near <= vz <= far): standard z = f(vz − n)/((f − n)·vz),
+// written (f/(f − n))·(1 − n/vz); reversed 1 − z = (n/(f − n))·(f/vz − 1); infinite far
+// (far = +Inf): 1 − n/vz and n/vz. reversed: 0 standard, anything else reversed.
+fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32 {
+    let infinite = bitcast<u32>(far) == 0x7f800000u;
+    if (reversed == 0u) {
+        if (infinite) {
+            return 1.0 - near / vz;
+        }
+        return (far / (far - near)) * (1.0 - near / vz);
+    }
+    if (infinite) {
+        return near / vz;
+    }
+    return (near / (far - near)) * (far / vz - 1.0);
+}
+
+// Depth-bounds range (min, max window depth) that contains every point of a sphere light of
+// view depth center_z and radius: the view-depth interval [c − r, c + r] clipped to
+// [near, far], mapped through the window depth, and widened by the evaluation's rounding bound
+// eps = 16u·(1 + f/(f − n)) (32u for infinite far), clamped to [0, 1].
+// A sphere wholly in front of near or behind far gives (1, 0): an empty range.
+fn light_volume_sphere_depth_bounds(center_z: f32, radius: f32, near: f32, far: f32,
+                                    reversed: u32) -> vec2<f32> {
+    let infinite = bitcast<u32>(far) == 0x7f800000u;
+    if (!light_volume_finite(center_z) || !light_volume_finite(radius) || !light_volume_finite(near)
+        || !(light_volume_finite(far) || infinite) || radius < 0.0 || !(near > 0.0)
+        || !(far > near)) {
+        return vec2<f32>(0.0, 1.0);
+    }
+    let lo = max(center_z - radius, near);
+    let sum = center_z + radius;
+    // c + r may overflow (checked from its bits): it then lies beyond any finite far.
+    let sum_finite = light_volume_finite(sum);
+    var hi = sum;
+    if (!infinite && (!sum_finite || sum > far)) {
+        hi = far;
+    }
+    let hi_at_infinity = infinite && !sum_finite;
+    if (!hi_at_infinity && lo > hi) {
+        return vec2<f32>(1.0, 0.0);
+    }
+    var k = 1.0;
+    if (!infinite) {
+        k = far / (far - near);
+    }
+    let eps = 16.0 * LIGHT_VOLUME_U * (1.0 + k);
+    var z_lo = light_volume_window_depth(lo, near, far, reversed);
+    var z_hi = select(1.0, 0.0, reversed != 0u); // the window depth at infinity
+    if (!hi_at_infinity) {
+        z_hi = light_volume_window_depth(hi, near, far, reversed);
+    }
+    if (reversed != 0u) {
+        let tmp = z_lo;
+        z_lo = z_hi;
+        z_hi = tmp;
+    }
+    return vec2<f32>(clamp(z_lo - eps, 0.0, 1.0), clamp(z_hi + eps, 0.0, 1.0));
+}
+
+// The same range as 24-bit depth codes, conservative: floor of the minimum, ceiling of the
+// maximum (each product rounds by at most 0.5 of a code, so every depth whose nearest code is
+// in the float range lies in [min, max]). Empty range: (1, 0) as codes (2^24 − 1, 0).
+fn light_volume_sphere_depth_bounds24(center_z: f32, radius: f32, near: f32, far: f32,
+                                      reversed: u32) -> vec2<u32> {
+    let b = light_volume_sphere_depth_bounds(center_z, radius, near, far, reversed);
+    if (b.x > b.y) {
+        return vec2<u32>(0xffffffu, 0u);
+    }
+    return vec2<u32>(u32(floor(b.x * LIGHT_VOLUME_DEPTH24_MAX)), u32(ceil(b.y * LIGHT_VOLUME_DEPTH24_MAX)));
+}

@@ -1,0 +1,204 @@
+// prepass — the light pre-pass factorisation result = C(mp, Σ_i P(l_i, gp)) (seed 000, Resistance
+// 2) and Engel's specular reconstruction (seed 002).
+// Rust twin: src/lighting/prepass.rs. Tests: tests/lighting_prepass.rs.
+//
+// P runs once per light in the light pass and its results are summed by additive blending:
+//   one RGBA buffer (Engel): rgb = N·L·att·colour, a = N·L·att·lum(colour)·(N·H)^n
+//   two buffers (Resistance 2): diffuse = N·L·att·colour, specular = N·L·att·colour·spec
+// C runs in the second geometry pass with the material: albedo·diffuse + gloss·specular, where
+// the one-buffer layout first recovers spec = (a / lum(rgb))^m · lum(rgb): N·H^n divided back
+// out by the luminance of the diffuse sum, the material exponent m applied on top of the
+// light's n. Exact for one white light; an approximation for several (measured in the tests).
+//
+// Conventions: every direction points away from the surface (to_light = light − surface,
+// to_eye = eye − surface) and need not be unit length.
+// Bad input (same on both sides): any NaN or ±Inf input, a zero or subnormal-length normal or
+// direction gives zero light. Colours are clamped to [0, 65504] (lights never subtract; the fp16
+// range of a light buffer), attenuations to [0, 1], powers to [0, 65504]. x^0 is 1 for x > 0,
+// and 0^y is 0: a zero N·H gives no highlight.
+
+const LPP_LUMINANCE = vec3<f32>(0.2126, 0.7152, 0.0722);
+const LPP_COLOUR_MAX = 65504.0;
+
+fn lpp_finite(x: f32) -> bool {
+    return (bitcast<u32>(x) & 0x7fffffffu) < 0x7f800000u;
+}
+
+fn lpp_finite3(v: vec3<f32>) -> bool {
+    return all((bitcast<vec3<u32>>(v) & vec3<u32>(0x7fffffffu)) < vec3<u32>(0x7f800000u));
+}
+
+// v / |v|, or zero when v is non-finite or its largest component is zero or subnormal. Scaling
+// by the largest component first keeps |v|² from overflowing or underflowing.
+fn lpp_direction(v: vec3<f32>) -> vec3<f32> {
+    let a = abs(v);
+    let m = max(a.x, max(a.y, a.z));
+    if (!lpp_finite3(v) || bitcast<u32>(m) < 0x00800000u) {
+        return vec3<f32>(0.0);
+    }
+    let s = v / m;
+    return s * inverseSqrt(dot(s, s));
+}
+
+// Luminance (Rec. 709 weights) of a light-buffer colour.
+fn lpp_luminance(rgb: vec3<f32>) -> f32 {
+    return dot(rgb, LPP_LUMINANCE);
+}
+
+// x^y for a cosine x and an exponent y >= 0: clamped to [0, 1], 0 for x <= 0 and for results
+// below 2^-126 (exp2's argument is never below -126, so no subnormal or -Inf arrives).
+fn lpp_pow_cosine(x: f32, y: f32) -> f32 {
+    if (!(x > 0.0)) {
+        return 0.0;
+    }
+    if (x >= 1.0 || y == 0.0) {
+        return 1.0;
+    }
+    let t = y * log2(x);
+    if (t < -126.0) {
+        return 0.0;
+    }
+    return exp2(t);
+}
+
+// Windowed falloff of a point light of radius r: (1 − (d/r)²)², 0 beyond r.
+// Bad input: NaN/Inf or r <= 0 → 0; d < 0 counts as 0.
+fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
+    if (!lpp_finite(distance) || !lpp_finite(radius) || !(radius > 0.0)) {
+        return 0.0;
+    }
+    let x = clamp(max(distance, 0.0) / radius, 0.0, 1.0);
+    let w = 1.0 - x * x;
+    return w * w;
+}
+
+// Spot cone factor: 0 outside cos_outer, 1 inside cos_inner, linear in the cosine between.
+// cos_angle is the cosine between the spot axis and the direction from the light to the surface.
+// Bad input: NaN/Inf → 0; cos_inner <= cos_outer gives a hard edge at cos_outer.
+fn lpp_spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+    if (!lpp_finite(cos_angle) || !lpp_finite(cos_outer) || !lpp_finite(cos_inner)) {
+        return 0.0;
+    }
+    if (cos_inner <= cos_outer) {
+        return select(0.0, 1.0, cos_angle >= cos_outer);
+    }
+    return clamp((cos_angle - cos_outer) / (cos_inner - cos_outer), 0.0, 1.0);
+}
+
+// N·L·att (the diffuse weight) and the specular cosine (N·H for Blinn-Phong, R·V for Phong),
+// or zeros for bad input.
+fn lpp_cosines(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, phong: bool) -> vec2<f32> {
+    let n = lpp_direction(normal);
+    let l = lpp_direction(to_light);
+    let v = lpp_direction(to_eye);
+    let n_dot_l = max(dot(n, l), 0.0);
+    if (all(v == vec3<f32>(0.0))) {
+        return vec2<f32>(0.0);
+    }
+    if (!(n_dot_l > 0.0)) {
+        return vec2<f32>(n_dot_l, 0.0);
+    }
+    if (phong) {
+        let r = 2.0 * dot(n, l) * n - l; // reflect(−l, n)
+        return vec2<f32>(n_dot_l, clamp(dot(r, v), 0.0, 1.0));
+    }
+    let h = lpp_direction(l + v);
+    return vec2<f32>(n_dot_l, clamp(dot(n, h), 0.0, 1.0));
+}
+
+fn lpp_light(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, colour: vec3<f32>,
+             attenuation: f32, power: f32, phong: bool) -> vec4<f32> {
+    if (!lpp_finite3(colour) || !lpp_finite(attenuation) || !lpp_finite(power)) {
+        return vec4<f32>(0.0);
+    }
+    let c = clamp(colour, vec3<f32>(0.0), vec3<f32>(LPP_COLOUR_MAX));
+    let cos = lpp_cosines(normal, to_eye, to_light, phong);
+    let d = cos.x * clamp(attenuation, 0.0, 1.0);
+    let s = lpp_pow_cosine(cos.y, clamp(power, 0.0, LPP_COLOUR_MAX));
+    return vec4<f32>(d * c, d * lpp_luminance(c) * s);
+}
+
+// P for the one-buffer layout, Blinn-Phong: (N·L·att·colour, N·L·att·lum(colour)·(N·H)^power).
+fn lpp_blinn_phong_light(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>,
+                         colour: vec3<f32>, attenuation: f32, power: f32) -> vec4<f32> {
+    return lpp_light(normal, to_eye, to_light, colour, attenuation, power, false);
+}
+
+// P for the one-buffer layout, Phong: (N·L·att·colour, N·L·att·lum(colour)·(R·V)^power).
+fn lpp_phong_light(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>,
+                   colour: vec3<f32>, attenuation: f32, power: f32) -> vec4<f32> {
+    return lpp_light(normal, to_eye, to_light, colour, attenuation, power, true);
+}
+
+// P of a point light (colour_radius = colour, radius) with Blinn-Phong specular.
+fn lpp_point_light(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>,
+                   colour_radius: vec4<f32>, power: f32) -> vec4<f32> {
+    let att = lpp_point_attenuation(length(to_light), colour_radius.w);
+    return lpp_blinn_phong_light(normal, to_eye, to_light, colour_radius.xyz, att, power);
+}
+
+// P of a spot light: a point light times the cone factor. axis_cos_outer = the direction the
+// spot points (any length) and the cosine of its outer half-angle.
+fn lpp_spot_light(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>,
+                  colour_radius: vec4<f32>, axis_cos_outer: vec4<f32>, cos_inner: f32,
+                  power: f32) -> vec4<f32> {
+    let cos_angle = dot(lpp_direction(axis_cos_outer.xyz), -lpp_direction(to_light));
+    let att = lpp_point_attenuation(length(to_light), colour_radius.w)
+        * lpp_spot_attenuation(cos_angle, axis_cos_outer.w, cos_inner);
+    return lpp_blinn_phong_light(normal, to_eye, to_light, colour_radius.xyz, att, power);
+}
+
+// P for the two-buffer layout's specular target: N·L·att·colour·(N·H)^power (Blinn-Phong); the
+// diffuse target is the rgb of lpp_blinn_phong_light.
+fn lpp_blinn_phong_specular_rgb(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>,
+                                colour: vec3<f32>, attenuation: f32, power: f32) -> vec3<f32> {
+    if (!lpp_finite3(colour) || !lpp_finite(attenuation) || !lpp_finite(power)) {
+        return vec3<f32>(0.0);
+    }
+    let c = clamp(colour, vec3<f32>(0.0), vec3<f32>(LPP_COLOUR_MAX));
+    let cos = lpp_cosines(normal, to_eye, to_light, false);
+    let d = cos.x * clamp(attenuation, 0.0, 1.0);
+    return d * lpp_pow_cosine(cos.y, clamp(power, 0.0, LPP_COLOUR_MAX)) * c;
+}
+
+// Engel's reconstruction from an accumulated one-buffer texel: (a / lum(rgb))^m · lum(rgb).
+// The ratio is N·H^n for one light; for several it is a luminance-weighted mix and may exceed 1
+// (the blog comments' worry): it is clamped to [0, 1] before the exponent, so the result never
+// exceeds lum(rgb). Guards: a non-finite channel, lum(rgb) below 2^-126 or a <= 0 give 0; the
+// division only runs when a < lum, so it cannot overflow. material_power is clamped to
+// [0, 65504]; NaN/Inf give 0.
+fn lpp_reconstruct_specular(light: vec4<f32>, material_power: f32) -> f32 {
+    if (!lpp_finite3(light.xyz) || !lpp_finite(light.w) || !lpp_finite(material_power)) {
+        return 0.0;
+    }
+    let rgb = max(light.xyz, vec3<f32>(0.0));
+    let lum = lpp_luminance(rgb);
+    if (bitcast<u32>(lum) < 0x00800000u || !(light.w > 0.0)) {
+        return 0.0;
+    }
+    var ratio = 1.0;
+    if (light.w < lum) {
+        ratio = light.w / lum;
+    }
+    return lpp_pow_cosine(ratio, clamp(material_power, 0.0, LPP_COLOUR_MAX)) * lum;
+}
+
+// C for the one-buffer layout: albedo·rgb + gloss·reconstructed specular. Inputs are clamped to
+// [0, 65504] (NaN → 0).
+fn lpp_combine(albedo: vec3<f32>, gloss: vec3<f32>, light: vec4<f32>, material_power: f32) -> vec3<f32> {
+    let spec = lpp_reconstruct_specular(light, material_power);
+    return lpp_clamp_colour(albedo) * lpp_clamp_colour(light.xyz) + lpp_clamp_colour(gloss) * spec;
+}
+
+// C for the two-buffer layout: albedo·diffuse + gloss·specular (Resistance 2's C = mp·P).
+fn lpp_combine_two_buffers(albedo: vec3<f32>, gloss: vec3<f32>, diffuse: vec3<f32>,
+                           specular: vec3<f32>) -> vec3<f32> {
+    return lpp_clamp_colour(albedo) * lpp_clamp_colour(diffuse)
+        + lpp_clamp_colour(gloss) * lpp_clamp_colour(specular);
+}
+
+// Clamp to [0, 65504], NaN (from its bits) to 0.
+fn lpp_clamp_colour(c: vec3<f32>) -> vec3<f32> {
+    let nan = (bitcast<vec3<u32>>(c) & vec3<u32>(0x7fffffffu)) > vec3<u32>(0x7f800000u);
+    return clamp(select(c, vec3<f32>(0.0), nan), vec3<f32>(0.0), vec3<f32>(LPP_COLOUR_MAX));
+}
