@@ -38,6 +38,20 @@ pub const CSV_FILES: &[(&str, &str, &str)] = &[
          the exact quotient), exact_roundtrip_failures, f32_roundtrip_failures, collisions",
     ),
     (
+        "roughness_error.csv",
+        "one 1/16-octave bin of specular powers for one 8-bit storage",
+        "storage (log range, linear, affine), max_power, power_bin_start (lower edge of the bin), \
+         max_relative_error, mean_relative_error (of decode(encode(p)) against p, every f32 \
+         power in the bin)",
+    ),
+    (
+        "lighting_reconstruction.csv",
+        "one light count of the light pre-pass specular reconstruction",
+        "lights, pixels, max_relative, mean_relative, rms_relative (against the exact per-light \
+         Blinn-Phong sum), max_abs_over_diffuse (absolute error in units of the pixel's diffuse \
+         luminance), non_finite (must be 0)",
+    ),
+    (
         "error_vs_cost.csv",
         "one encoding variant",
         "family, variant, bits (stored per value), unit (of the error columns), max_error, \

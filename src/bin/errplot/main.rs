@@ -23,8 +23,10 @@ mod ctx;
 mod depth24;
 mod depth_resolution;
 mod files;
+mod lighting;
 mod linear_depth;
 mod plot;
+mod roughness;
 
 use ctx::{Ctx, Options};
 use prepass::harness::Gpu;
@@ -40,6 +42,8 @@ const SECTIONS: &[(&str, Section)] = &[
     ("depth resolution", depth_resolution::section),
     ("linear depth", linear_depth::section),
     ("24-bit depth", depth24::section),
+    ("roughness", roughness::section),
+    ("lighting", lighting::section),
     ("error against run time", cost::section),
     ("files", files::section),
 ];
