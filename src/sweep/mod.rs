@@ -2,3 +2,4 @@
 //! (feature `harness`). The tests assert on their results; `errplot` tabulates them.
 
 pub mod depth24;
+pub mod normal;

@@ -22,8 +22,31 @@ pub struct WgslFile {
 /// `wgsl/depth.wgsl`: 24-bit depth codes in RGBA8 texels (twin: [`crate::depth`]).
 pub const DEPTH: &str = include_str!("../../wgsl/depth.wgsl");
 
+/// `wgsl/normal_xyz8.wgsl`: normal as x, y, z unorm8 (twin: [`crate::normal::xyz8`]).
+pub const NORMAL_XYZ8: &str = include_str!("../../wgsl/normal_xyz8.wgsl");
+
+/// `wgsl/normal_xy_fp16.wgsl`: view-space normal xy as two FP16 (twin: [`crate::normal::xy_fp16`]).
+pub const NORMAL_XY_FP16: &str = include_str!("../../wgsl/normal_xy_fp16.wgsl");
+
+/// `wgsl/normal_oct.wgsl`: octahedral normals, 16/24/32 bits (twin: [`crate::normal::oct`]).
+pub const NORMAL_OCT: &str = include_str!("../../wgsl/normal_oct.wgsl");
+
 /// Every shipped WGSL file. `tests/wgsl_validate.rs` checks this list against the directory.
-pub const FILES: &[WgslFile] = &[WgslFile {
-    name: "depth.wgsl",
-    source: DEPTH,
-}];
+pub const FILES: &[WgslFile] = &[
+    WgslFile {
+        name: "depth.wgsl",
+        source: DEPTH,
+    },
+    WgslFile {
+        name: "normal_xyz8.wgsl",
+        source: NORMAL_XYZ8,
+    },
+    WgslFile {
+        name: "normal_xy_fp16.wgsl",
+        source: NORMAL_XY_FP16,
+    },
+    WgslFile {
+        name: "normal_oct.wgsl",
+        source: NORMAL_OCT,
+    },
+];
