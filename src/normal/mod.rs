@@ -5,6 +5,7 @@
 //! | x, y, z as unorm8 (Resistance 2) | 24 (+8 free) | `wgsl/normal_xyz8.wgsl` | [`xyz8`] |
 //! | view-space x, y as FP16 in RGBA8, z rebuilt (Killzone 2) | 32 | `wgsl/normal_xy_fp16.wgsl` | [`xy_fp16`] |
 //! | octahedral, precise and rounding encoders (Cigolle et al. 2014) | 16, 24, 32 | `wgsl/normal_oct.wgsl` | [`oct`] |
+//! | hemi-octahedral, view-space `z ≥ 0` only (for comparison) | 24 | `wgsl/normal_hemioct.wgsl` | [`hemioct`] |
 //!
 //! Every encoder is bit-identical to its WGSL twin on a correctly rounded adapter (checked on
 //! lavapipe over every tested input by `tests/normal_*.rs`), so a normal baked on the CPU decodes
@@ -20,6 +21,7 @@
 //! is normalised (or, for the scale-free octahedral map, needs no normalising).
 //! Decoders accept every bit pattern and return a finite unit vector.
 
+pub mod hemioct;
 pub mod oct;
 pub mod xy_fp16;
 pub mod xyz8;

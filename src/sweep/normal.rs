@@ -4,9 +4,9 @@
 //! The tests assert on these; `errplot` and `examples/normal_tables.rs` tabulate them.
 
 use crate::harness::{Arg, Gpu, HarnessError};
-use crate::normal::{oct, xy_fp16, xyz8};
+use crate::normal::{hemioct, oct, xy_fp16, xyz8};
 use crate::precision::metrics::{ErrorStats, Mismatches, angle_degrees, widen3};
-use crate::wgsl::{NORMAL_OCT, NORMAL_XY_FP16, NORMAL_XYZ8};
+use crate::wgsl::{NORMAL_HEMIOCT, NORMAL_OCT, NORMAL_XY_FP16, NORMAL_XYZ8};
 use glam::Vec3;
 
 /// One encoding: its WGSL functions, its Rust twins and its f64 reference encoder.
@@ -85,8 +85,9 @@ macro_rules! oct_codec {
     };
 }
 
-/// Every encoding, smallest first: xyz8, xy FP16, then octahedral 16/24/32, precise and fast.
-pub const CODECS: [Codec; 8] = [
+/// Every encoding: xyz8, xy FP16, octahedral 16/24/32 precise and fast, then hemi-octahedral 24
+/// precise and fast (errors of the hemisphere-only codes are measured over `z ≥ 0`).
+pub const CODECS: [Codec; 10] = [
     Codec {
         name: "xyz8",
         bits: 24,
@@ -177,6 +178,30 @@ pub const CODECS: [Codec; 8] = [
         oct32_ref_d,
         (0.00131, 0.00369)
     ),
+    Codec {
+        name: "hemioct24",
+        bits: 24,
+        source: NORMAL_HEMIOCT,
+        encode: "encode_normal_hemioct24",
+        decode: "decode_normal_hemioct24",
+        twin_encode: hemioct::encode_normal_hemioct24,
+        twin_decode: hemioct::decode_normal_hemioct24,
+        reference_encode: hemioct::exact::encode_precise,
+        reference_decode: hemioct::exact::decode,
+        target: None,
+    },
+    Codec {
+        name: "hemioct24 fast",
+        bits: 24,
+        source: NORMAL_HEMIOCT,
+        encode: "encode_normal_hemioct24_fast",
+        decode: "decode_normal_hemioct24",
+        twin_encode: hemioct::encode_normal_hemioct24_fast,
+        twin_decode: hemioct::decode_normal_hemioct24,
+        reference_encode: hemioct::exact::encode_round,
+        reference_decode: hemioct::exact::decode,
+        target: None,
+    },
 ];
 
 /// The codec named `name` in [`CODECS`].
@@ -452,8 +477,8 @@ fn sin2_f64(a: [f64; 3], b: [f64; 3]) -> f64 {
     dot(c, c) / (dot(a, a) * dot(b, b))
 }
 
-/// Check every chosen code against the four neighbours of the input's exact (f64) continuous
-/// coordinates, each decoded as the shipped decoder does (the Rust twin, bit-identical to the
+/// Check every chosen code of a precise (hemi-)octahedral encoder against the four neighbours of
+/// the input's exact (f64) continuous coordinates, each decoded as the shipped decoder does (the Rust twin, bit-identical to the
 /// adapter's decoder — checked by [`round_trip`]), all angles measured in f64. Neighbours are
 /// ranked by f64 `sin²` (every error here is far below 90°); the excess is then measured with
 /// [`angle_degrees`].
@@ -468,7 +493,12 @@ pub fn precise_optimality(codec: &Codec, inputs: &[[f32; 3]], rt: &RoundTrip) ->
             let n = widen3(inputs[i]);
             let chosen = widen3(rt.decoded[i]);
             let mut best = (f64::INFINITY, chosen);
-            for p in oct::exact::neighbours(n, bits) {
+            let neighbours = if codec.source == NORMAL_HEMIOCT {
+                hemioct::exact::neighbours(n)
+            } else {
+                oct::exact::neighbours(n, bits)
+            };
+            for p in neighbours {
                 let d = widen3((codec.twin_decode)(p).to_array());
                 let s = sin2_f64(n, d);
                 if s < best.0 {

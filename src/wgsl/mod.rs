@@ -31,6 +31,10 @@ pub const NORMAL_XY_FP16: &str = include_str!("../../wgsl/normal_xy_fp16.wgsl");
 /// `wgsl/normal_oct.wgsl`: octahedral normals, 16/24/32 bits (twin: [`crate::normal::oct`]).
 pub const NORMAL_OCT: &str = include_str!("../../wgsl/normal_oct.wgsl");
 
+/// `wgsl/normal_hemioct.wgsl`: hemi-octahedral view-space normals, 24 bits (twin:
+/// [`crate::normal::hemioct`]).
+pub const NORMAL_HEMIOCT: &str = include_str!("../../wgsl/normal_hemioct.wgsl");
+
 /// Every shipped WGSL file. `tests/wgsl_validate.rs` checks this list against the directory.
 pub const FILES: &[WgslFile] = &[
     WgslFile {
@@ -38,15 +42,19 @@ pub const FILES: &[WgslFile] = &[
         source: DEPTH,
     },
     WgslFile {
-        name: "normal_xyz8.wgsl",
-        source: NORMAL_XYZ8,
+        name: "normal_hemioct.wgsl",
+        source: NORMAL_HEMIOCT,
+    },
+    WgslFile {
+        name: "normal_oct.wgsl",
+        source: NORMAL_OCT,
     },
     WgslFile {
         name: "normal_xy_fp16.wgsl",
         source: NORMAL_XY_FP16,
     },
     WgslFile {
-        name: "normal_oct.wgsl",
-        source: NORMAL_OCT,
+        name: "normal_xyz8.wgsl",
+        source: NORMAL_XYZ8,
     },
 ];
