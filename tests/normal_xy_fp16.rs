@@ -98,7 +98,7 @@ fn perspective_myth_negative_z_is_visible_and_decodes_mirrored() {
         // The worst sampled error approaches 2θ at the corner pixel (θ its angle off axis),
         // never exceeds the screen corner's 2θ by more than the f16 bound, and is at least the
         // corner pixel centre's 2θ less the sample spacing (twice: the mirror doubles it).
-        let t = (fov as f64 / 2.0).to_radians().tan();
+        let t = (fov / 2.0f64).to_radians().tan();
         let corner_px = (2f64.sqrt() * t * 15.0 / 16.0).atan().to_degrees();
         assert!(m.worst_error_deg <= m.worst_error_analytic_deg + worst_case_upper_deg());
         assert!(m.worst_error_deg >= 2.0 * corner_px - 2.0 * s.to_degrees());
