@@ -8,7 +8,7 @@
 //! | module | WGSL | what |
 //! |---|---|---|
 //! | [`depth`] | `wgsl/depth.wgsl` | 24-bit depth codes in RGBA8 texels, hyperbolic depth |
-//! | [`normal`] | `wgsl/normal_*.wgsl` | normal encodings: xyz8, xy FP16, octahedral 16/24/32 |
+//! | [`normal`] | `wgsl/normal_*.wgsl` | normal encodings: xyz8, xy FP16, octahedral 16/24/32, hemi-octahedral 24 |
 //! | [`precision`] | — | error metrics (ULP, relative, angular, mismatches) and test inputs |
 //! | [`wgsl`] | all | embedded sources; naga validation/translation (feature `validate`) |
 //! | `harness` | any | run any WGSL function on a wgpu adapter (feature `harness`) |
