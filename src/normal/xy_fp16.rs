@@ -76,3 +76,22 @@ pub fn encode_normal_xy_fp16_unorm(n: Vec3) -> [f32; 4] {
 pub fn decode_normal_xy_fp16_unorm(c: [f32; 4]) -> Vec3 {
     decode_normal_xy_fp16(super::xyz8::unorm_bytes(c))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn halves_round_trip_and_bad_halves_decode_to_unit_vectors() {
+        assert_eq!(pack2x16float(Vec2::new(1.0, -0.5)), 0xb800_3c00);
+        assert_eq!(unpack2x16float(0xb800_3c00), Vec2::new(1.0, -0.5));
+        assert_eq!(encode_normal_xy_fp16(Vec3::new(f32::NAN, 0.0, 0.0)), 0);
+        for p in [0x7c00_7c00u32, 0xfe00_0001, 0x3c00_3c00, 0xffff_ffff] {
+            let v = decode_normal_xy_fp16(p);
+            assert!(
+                v.is_finite() && (v.length() - 1.0).abs() < 1e-6,
+                "{p:#x}: {v}"
+            );
+        }
+    }
+}

@@ -74,3 +74,27 @@ pub mod exact {
         super::super::exact::unit(d).expect("odd integers are never all zero")
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn degenerate_inputs_encode_plus_z_and_byte_3_is_free() {
+        let z = encode_normal_xyz8(Vec3::Z);
+        assert_eq!(z, 0x00ff_8080);
+        for v in [
+            Vec3::ZERO,
+            Vec3::new(0.0, f32::NAN, 1.0),
+            Vec3::splat(-1e-42),
+        ] {
+            assert_eq!(encode_normal_xyz8(v), z);
+        }
+        assert_eq!(
+            encode_normal_xyz8(Vec3::new(1.0, f32::NEG_INFINITY, 3.0)),
+            encode_normal_xyz8(Vec3::NEG_Y)
+        );
+        assert_eq!(decode_normal_xyz8(0xab00_0000 | z), decode_normal_xyz8(z));
+        assert!((decode_normal_xyz8(z).length() - 1.0).abs() < 1e-6);
+    }
+}
