@@ -4,4 +4,5 @@
 pub mod depth24;
 pub mod lighting;
 pub mod linear_depth;
+pub mod normal;
 pub mod roughness;

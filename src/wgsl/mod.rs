@@ -46,6 +46,19 @@ pub const AGGREGATE_LIGHTS: &str = include_str!("../../wgsl/aggregate_lights.wgs
 /// [`crate::lighting::volumes`]).
 pub const LIGHT_VOLUMES: &str = include_str!("../../wgsl/light_volumes.wgsl");
 
+/// `wgsl/normal_xyz8.wgsl`: normal as x, y, z unorm8 (twin: [`crate::normal::xyz8`]).
+pub const NORMAL_XYZ8: &str = include_str!("../../wgsl/normal_xyz8.wgsl");
+
+/// `wgsl/normal_xy_fp16.wgsl`: view-space normal xy as two FP16 (twin: [`crate::normal::xy_fp16`]).
+pub const NORMAL_XY_FP16: &str = include_str!("../../wgsl/normal_xy_fp16.wgsl");
+
+/// `wgsl/normal_oct.wgsl`: octahedral normals, 16/24/32 bits (twin: [`crate::normal::oct`]).
+pub const NORMAL_OCT: &str = include_str!("../../wgsl/normal_oct.wgsl");
+
+/// `wgsl/normal_hemioct.wgsl`: hemi-octahedral view-space normals, 24 bits (twin:
+/// [`crate::normal::hemioct`]).
+pub const NORMAL_HEMIOCT: &str = include_str!("../../wgsl/normal_hemioct.wgsl");
+
 /// Every shipped WGSL file. `tests/wgsl_validate.rs` checks this list against the directory.
 pub const FILES: &[WgslFile] = &[
     WgslFile {
@@ -67,6 +80,22 @@ pub const FILES: &[WgslFile] = &[
     WgslFile {
         name: "linear_depth.wgsl",
         source: LINEAR_DEPTH,
+    },
+    WgslFile {
+        name: "normal_hemioct.wgsl",
+        source: NORMAL_HEMIOCT,
+    },
+    WgslFile {
+        name: "normal_oct.wgsl",
+        source: NORMAL_OCT,
+    },
+    WgslFile {
+        name: "normal_xy_fp16.wgsl",
+        source: NORMAL_XY_FP16,
+    },
+    WgslFile {
+        name: "normal_xyz8.wgsl",
+        source: NORMAL_XYZ8,
     },
     WgslFile {
         name: "position.wgsl",

@@ -44,9 +44,15 @@ pub struct Checked {
 pub fn parse_and_validate(source: &str) -> Result<Checked, WgslError> {
     let module =
         naga::front::wgsl::parse_str(source).map_err(|e| err("parse", e.emit_to_string(source)))?;
-    let info = Validator::new(ValidationFlags::all(), Capabilities::empty())
-        .validate(&module)
-        .map_err(|e| err("validate", e.emit_to_string(source)))?;
+    // SHADER_FLOAT16_IN_FLOAT32 covers core WGSL's `pack2x16float`/`unpack2x16float`/
+    // `quantizeToF16`: part of WebGPU's compliant set (wgpu's DownlevelFlags::SHADER_F16_IN_F32),
+    // which wgpu withholds only on Mesa Vulkan drivers without shaderFloat16 (lavapipe has it).
+    let info = Validator::new(
+        ValidationFlags::all(),
+        Capabilities::SHADER_FLOAT16_IN_FLOAT32,
+    )
+    .validate(&module)
+    .map_err(|e| err("validate", e.emit_to_string(source)))?;
     Ok(Checked { module, info })
 }
 

@@ -1,0 +1,94 @@
+//! Unit-normal encodings for G-buffers — the Rust twins of `wgsl/normal_*.wgsl`.
+//!
+//! | encoding | bits | WGSL | twin |
+//! |---|---|---|---|
+//! | x, y, z as unorm8 (Resistance 2) | 24 (+8 free) | `wgsl/normal_xyz8.wgsl` | [`xyz8`] |
+//! | view-space x, y as FP16 in RGBA8, z rebuilt (Killzone 2) | 32 | `wgsl/normal_xy_fp16.wgsl` | [`xy_fp16`] |
+//! | octahedral, precise and rounding encoders (Cigolle et al. 2014) | 16, 24, 32 | `wgsl/normal_oct.wgsl` | [`oct`] |
+//! | hemi-octahedral, view-space `z ≥ 0` only (for comparison) | 24 | `wgsl/normal_hemioct.wgsl` | [`hemioct`] |
+//!
+//! Every encoder is bit-identical to its WGSL twin on a correctly rounded adapter (checked on
+//! lavapipe over every tested input by `tests/normal_*.rs`), so a normal baked on the CPU decodes
+//! exactly like one a shader wrote. The WGSL avoids the expressions an implementation may
+//! legitimately evaluate differently: no `a*b + c` whose fusion into an fma would change the
+//! result (the multiply is exact, or the sum is a `dot()`), no repeated factor an optimiser could
+//! pull out (Mesa rewrites `a*b + a*c` into `a*(b + c)`), and NaN/Inf/subnormals found from bits.
+//!
+//! **Bad input, all encoders:** NaN in any component, the zero vector and vectors whose
+//! components are all subnormal encode as `+z = (0, 0, 1)` (the view-space normal facing the
+//! camera); subnormal components count as zero (adapters may flush them); infinite components
+//! win (`(+Inf, 1, 0)` encodes `+x`, `(+Inf, −Inf, 5)` encodes `(1, −1, 0)/√2`); any finite length
+//! is normalised (or, for the scale-free octahedral map, needs no normalising).
+//! Decoders accept every bit pattern and return a finite unit vector.
+
+pub mod hemioct;
+pub mod oct;
+pub mod xy_fp16;
+pub mod xyz8;
+
+use glam::Vec3;
+
+/// The shared first step of every encoder: the input made safe to normalise.
+///
+/// Returns `None` for NaN anywhere, the zero vector and all-subnormal vectors (the encoders'
+/// degenerate cases). Otherwise: if any component is infinite, the vector of their signs
+/// (`±1` where infinite, signed zero elsewhere); subnormal components become zero of the same
+/// sign; then the vector is scaled by an exact power of two so that its largest component lies
+/// in `[1, 4)` (no overflow or underflow in a dot product), and components that scaling made
+/// subnormal become signed zero. Exact: only sign changes, flushes and power-of-two scaling.
+pub fn sanitize(n: Vec3) -> Option<Vec3> {
+    let c = n.to_array();
+    if c.iter().any(|x| x.is_nan()) {
+        return None;
+    }
+    let signed_zero = |x: f32| f32::from_bits(x.to_bits() & 0x8000_0000);
+    let flush = |x: f32| {
+        if x.to_bits() & 0x7f80_0000 == 0 {
+            signed_zero(x)
+        } else {
+            x
+        }
+    };
+    let c = if c.iter().any(|x| x.is_infinite()) {
+        c.map(|x| {
+            if x.is_infinite() {
+                f32::from_bits((x.to_bits() & 0x8000_0000) | 0x3f80_0000)
+            } else {
+                signed_zero(x)
+            }
+        })
+    } else {
+        c.map(flush)
+    };
+    let m = c[0].abs().max(c[1].abs()).max(c[2].abs());
+    if m == 0.0 {
+        return None;
+    }
+    let e = (m.to_bits() >> 23) & 0xff;
+    let scale = f32::from_bits((254 - e).max(1) << 23);
+    Some(Vec3::from_array(c.map(|x| flush(x * scale))))
+}
+
+/// `dot(a, b)` as WGSL implementations evaluate it without fusion: `(a.x·b.x + a.y·b.y) + a.z·b.z`,
+/// each operation rounded.
+pub(crate) fn dot(a: Vec3, b: Vec3) -> f32 {
+    (a.x * b.x + a.y * b.y) + a.z * b.z
+}
+
+/// WGSL's `normalize(v)` as lavapipe evaluates it: `v / sqrt(dot(v, v))`, each step correctly
+/// rounded (measured bit-identical on lavapipe; `v * (1/sqrt(v·v))` differs in the last bit of
+/// about half the results). Other adapters may use `v * inverseSqrt(v·v)` (2 ULP): the length
+/// then moves by a few ULP, the direction only by the final per-component rounding,
+/// ≤ 2^-24·√2 rad.
+pub(crate) fn normalize(v: Vec3) -> Vec3 {
+    v / dot(v, v).sqrt()
+}
+
+/// Exact `f64` helpers shared by the encodings' references.
+pub mod exact {
+    /// `v / |v|` in f64 (`None` for the zero vector).
+    pub fn unit(v: [f64; 3]) -> Option<[f64; 3]> {
+        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        (l > 0.0 && l.is_finite()).then(|| v.map(|x| x / l))
+    }
+}

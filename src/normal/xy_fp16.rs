@@ -1,0 +1,97 @@
+//! View-space normal x and y as two FP16 halves in one `u32`, z rebuilt — the Rust twin of
+//! `wgsl/normal_xy_fp16.wgsl`.
+//!
+//! Killzone 2 stored "view space normals XY (RG FP16)", packed as 2×FP16 into RGBA8 on write,
+//! and rebuilt `z = sqrt(1 − x² − y²)` (seed talk `004`). The sign of z is lost: a normal with
+//! `z < 0` decodes mirrored through the xy plane. Under perspective a visible surface's normal
+//! does reach `z < 0` (down to −sin of the view ray's angle off the axis) — Resistance 2's
+//! "viewspace normal myth" (seed `000`). [`crate::sweep::normal::killzone_myth`] measures it.
+
+use super::{dot, sanitize};
+use glam::{Vec2, Vec3};
+use half::f16;
+
+/// WGSL's `pack2x16float(v)`: `v.x` to the low half, `v.y` to the high half, each rounded to the
+/// nearest f16 (ties to even, what lavapipe does; WGSL leaves inexact conversions to the
+/// implementation, and out-of-range values indeterminate: callers clamp first).
+pub fn pack2x16float(v: Vec2) -> u32 {
+    u32::from(f16::from_f32(v.x).to_bits()) | (u32::from(f16::from_f32(v.y).to_bits()) << 16)
+}
+
+/// WGSL's `unpack2x16float(p)`: exact (every f16 is an f32).
+pub fn unpack2x16float(p: u32) -> Vec2 {
+    Vec2::new(
+        f16::from_bits(p as u16).to_f32(),
+        f16::from_bits((p >> 16) as u16).to_f32(),
+    )
+}
+
+/// Encode `pack2x16float(clamp(u.xy, −1, 1))` of `u = n/|n|`; the sign of `u.z` is dropped.
+///
+/// **Error bound:** each half is the f16 nearest `u.x`, `u.y` (relative error ≤ 2^-11, absolute
+/// ≤ 2^-12 for |u| in [0.5, 1]); the round trip for `z ≥ 0` is measured over 2^24 directions in
+/// the README (worst near the equator, where `z = sqrt(1 − x² − y²)` magnifies the xy error).
+/// For `z < 0` the decoded normal is the mirror image: angular error `2·asin(|z|)`.
+/// Bit-identical to `encode_normal_xy_fp16` on a correctly rounded, round-to-nearest-even adapter.
+///
+/// **Bad input:** see [`crate::normal`]: NaN, zero and all-subnormal vectors encode `+z` (0),
+/// infinities win, any finite length is normalised.
+pub fn encode_normal_xy_fp16(n: Vec3) -> u32 {
+    let s = sanitize(n).unwrap_or(Vec3::Z);
+    let u = s / dot(s, s).sqrt();
+    pack2x16float(Vec2::new(u.x, u.y).clamp(Vec2::splat(-1.0), Vec2::splat(1.0)))
+}
+
+/// Decode to `(x, y, √z2) / √(s + z2)` with `(x, y) = unpack2x16float(p)`, `s = x² + y²`,
+/// `z2 = max(0, 1 − s)`: the issue's `z = +sqrt(max(0, 1 − x² − y²))`, normalised.
+///
+/// **Error bound:** for codes written by the encoder, `x² + y² ≤ 1` up to the halves' rounding
+/// and the final normalise only corrects that rounding; see the README for measured errors.
+///
+/// **Bad input:** every bit pattern gives a finite unit vector: NaN halves count as 0, infinite
+/// and out-of-range halves are clamped to `[−1, 1]`, and `x² + y² > 1` gives `z = 0` before
+/// normalising.
+pub fn decode_normal_xy_fp16(p: u32) -> Vec3 {
+    let h = unpack2x16float(p);
+    let h = Vec2::new(
+        if h.x.is_nan() { 0.0 } else { h.x },
+        if h.y.is_nan() { 0.0 } else { h.y },
+    );
+    let xy = h.clamp(Vec2::splat(-1.0), Vec2::splat(1.0));
+    // |v|² as the WGSL writes it, s + max(0, 1 − s), not (√z2)²: see the WGSL's comment.
+    let s = xy.x * xy.x + xy.y * xy.y;
+    let z2 = (1.0 - s).max(0.0);
+    Vec3::new(xy.x, xy.y, z2.sqrt()) / (s + z2).sqrt()
+}
+
+/// Render-target form of [`encode_normal_xy_fp16`]: the four rgba8unorm channels holding the
+/// two halves' bytes (`byte/255`).
+pub fn encode_normal_xy_fp16_unorm(n: Vec3) -> [f32; 4] {
+    crate::depth::unpack4x8unorm(encode_normal_xy_fp16(n))
+}
+
+/// Decode sampled rgba8unorm channels: bytes rounded back (`round(255·clamp(c, 0, 1))`, NaN →
+/// 0), then [`decode_normal_xy_fp16`]. Exact whenever each channel is within ±0.49/255 of
+/// `byte/255`: a 3-ULP channel error cannot flip a bit of a half.
+pub fn decode_normal_xy_fp16_unorm(c: [f32; 4]) -> Vec3 {
+    decode_normal_xy_fp16(super::xyz8::unorm_bytes(c))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn halves_round_trip_and_bad_halves_decode_to_unit_vectors() {
+        assert_eq!(pack2x16float(Vec2::new(1.0, -0.5)), 0xb800_3c00);
+        assert_eq!(unpack2x16float(0xb800_3c00), Vec2::new(1.0, -0.5));
+        assert_eq!(encode_normal_xy_fp16(Vec3::new(f32::NAN, 0.0, 0.0)), 0);
+        for p in [0x7c00_7c00u32, 0xfe00_0001, 0x3c00_3c00, 0xffff_ffff] {
+            let v = decode_normal_xy_fp16(p);
+            assert!(
+                v.is_finite() && (v.length() - 1.0).abs() < 1e-6,
+                "{p:#x}: {v}"
+            );
+        }
+    }
+}

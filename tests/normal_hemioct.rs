@@ -1,0 +1,171 @@
+//! `wgsl/normal_hemioct.wgsl` (view-space normals, z ≥ 0, 24 bits) on the adapter: round trip
+//! over the upper half of 2^24 spherical-Fibonacci directions and the adversarial set against
+//! the f64 reproduction, precise-encoder optimality, all 2^24 codes decoded, bad input and the
+//! render-target form — against the Rust twin `src/normal/hemioct.rs`.
+
+mod common;
+
+use common::gpu;
+use glam::Vec3;
+use prepass::harness::Arg;
+use prepass::normal::hemioct;
+use prepass::sweep::normal::{
+    UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_range, fibonacci_directions,
+    optimality_tolerance_deg, precise_optimality, reference_error, round_trip, unorm_forms,
+};
+
+#[test]
+fn round_trip_matches_the_f64_reproduction_and_is_optimal() {
+    let upper: Vec<[f32; 3]> = fibonacci_directions(1 << 24)
+        .into_iter()
+        .filter(|v| v[2] >= 0.0)
+        .collect();
+    let adv: Vec<[f32; 3]> = adversarial_directions()
+        .into_iter()
+        .filter(|v| v[2] >= 0.0)
+        .collect();
+    for name in ["hemioct24", "hemioct24 fast"] {
+        let c = codec(name);
+        for (set, inputs) in [("fibonacci z >= 0", &upper), ("adversarial z >= 0", &adv)] {
+            let rt = round_trip(gpu(), c, inputs).unwrap();
+            assert_eq!(
+                rt.twin_encode.count, 0,
+                "{name} {set}: {:?}",
+                rt.twin_encode.first
+            );
+            assert_eq!(
+                rt.twin_decode.count, 0,
+                "{name} {set}: {:?}",
+                rt.twin_decode.first
+            );
+            assert_eq!(rt.not_unit, 0);
+            let r = reference_error(c, inputs);
+            eprintln!(
+                "{name} {set}: mean {:.6}° max {:.6}° (f64 reproduction {:.6} / {:.6})",
+                rt.error.mean(),
+                rt.error.max,
+                r.mean(),
+                r.max
+            );
+            // Bound: per input the f32 encoder's choice is within optimality_tolerance_deg of
+            // the f64 choice (precise), or the same code up to f32 rounding of the continuous
+            // coordinate (fast: 2^-24 relative of M, far below one code); decoding adds
+            // √2·2^-24 rad. So the statistics agree within that tolerance.
+            let tol = optimality_tolerance_deg();
+            assert!(
+                rt.error.max <= r.max + tol && rt.error.mean() <= r.mean() + tol,
+                "{name} {set}"
+            );
+            if !name.ends_with("fast") {
+                let o = precise_optimality(c, inputs, &rt);
+                eprintln!(
+                    "  worst excess {:.3e}°, {} not the f64-best",
+                    o.worst_excess_deg, o.not_best
+                );
+                assert!(
+                    o.worst_excess_deg <= tol,
+                    "{name} {set}: input {}",
+                    o.argworst
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn every_code_decodes_to_a_unit_vector_in_the_upper_hemisphere() {
+    let c = codec("hemioct24");
+    let d = decode_range(gpu(), c, 0, 1 << 24).unwrap();
+    eprintln!(
+        "hemioct24 all 2^24: max |len-1| {:.3e}, max angle to exact {:.3e}°, twin differs {}",
+        d.max_len_error, d.max_angle_deg, d.twin.count
+    );
+    assert_eq!(d.not_unit, 0, "not unit within {UNIT_TOLERANCE}");
+    // Bound: only the final per-component divide turns the direction, ≤ √2·2^-24 rad.
+    assert!(d.max_angle_deg <= (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12);
+    assert_eq!(d.twin.count, 0, "{:?}", d.twin.first);
+    // z >= 0 for every code, and bits 24-31 are ignored.
+    let codes: Vec<u32> = (0u32..1 << 16)
+        .map(|i| i.wrapping_mul(0x9e37_79b9))
+        .collect();
+    let out = gpu()
+        .kernel(c.source, c.decode)
+        .unwrap()
+        .run(&[Arg::column(&codes)], codes.len() as u64)
+        .unwrap();
+    for (i, v) in out.as_vec3().iter().enumerate() {
+        assert!(v[2] >= 0.0);
+        assert_eq!(
+            *v,
+            hemioct::decode_normal_hemioct24(codes[i] & 0xff_ffff).to_array()
+        );
+    }
+}
+
+#[test]
+fn bad_input_gets_the_documented_code_on_both_sides() {
+    let cases = bad_inputs();
+    let mut bad: Vec<[f32; 3]> = cases.iter().map(|c| c.0).collect();
+    let mut good: Vec<[f32; 3]> = cases.iter().map(|c| c.1).collect();
+    // Negative z clamps to the equator; straight down becomes the zero vector, so +z.
+    bad.extend([
+        [0.6, 0.0, -0.8],
+        [0.0, 0.0, -1.0],
+        [0.0, -f32::from_bits(1), -3.0],
+    ]);
+    good.extend([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, 1.0]]);
+    for name in ["hemioct24", "hemioct24 fast"] {
+        let c = codec(name);
+        let k = gpu().kernel(c.source, c.encode).unwrap();
+        let got = k
+            .run(&[Arg::column(&bad)], bad.len() as u64)
+            .unwrap()
+            .into_words();
+        let want = k
+            .run(&[Arg::column(&good)], good.len() as u64)
+            .unwrap()
+            .into_words();
+        for i in 0..bad.len() {
+            assert_eq!(
+                got[i], want[i],
+                "{name}: {:?} should encode like {:?}",
+                bad[i], good[i]
+            );
+            assert_eq!(
+                got[i],
+                (c.twin_encode)(Vec3::from(bad[i])),
+                "{name}: twin differs on {:?}",
+                bad[i]
+            );
+            assert_eq!(got[i] >> 24, 0);
+        }
+    }
+}
+
+#[test]
+fn render_target_form_matches_the_code_path() {
+    let inputs: Vec<[f32; 3]> = fibonacci_directions(1 << 16)
+        .into_iter()
+        .chain(bad_inputs().into_iter().map(|c| c.0))
+        .collect();
+    let f = unorm_forms(
+        gpu(),
+        codec("hemioct24"),
+        "encode_normal_hemioct24_unorm",
+        "decode_normal_hemioct24_unorm",
+        4,
+        &inputs,
+    )
+    .unwrap();
+    assert_eq!(f.encode.count, 0, "{:?}", f.encode.first);
+    // Bound: 0. Every channel is within 0.45/255 of byte/255, so round(255 c) is the byte.
+    assert_eq!(f.decode.count, 0, "{:?}", f.decode.first);
+    for v in &inputs {
+        let v = Vec3::from(*v);
+        let ch = hemioct::encode_normal_hemioct24_unorm(v);
+        assert_eq!(
+            hemioct::decode_normal_hemioct24_unorm(ch),
+            hemioct::decode_normal_hemioct24(hemioct::encode_normal_hemioct24(v))
+        );
+    }
+}

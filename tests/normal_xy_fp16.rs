@@ -1,0 +1,198 @@
+//! `wgsl/normal_xy_fp16.wgsl` (Killzone 2's view-space xy as two FP16 in RGBA8) on the adapter:
+//! round trip over 2^24 spherical-Fibonacci directions (split at z = 0) and the adversarial set,
+//! a stratified 2^26 sample of the 2^32 codes decoded, the perspective "myth" measured, bad input
+//! and the render-target form — against the Rust twin `src/normal/xy_fp16.rs` and f64.
+
+mod common;
+
+use common::gpu;
+use glam::Vec3;
+use prepass::harness::Arg;
+use prepass::normal::xy_fp16;
+use prepass::sweep::normal::{
+    UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, fibonacci_directions,
+    killzone_myth, round_trip, stratified_codes32, unorm_forms,
+};
+
+/// Worst case for z ≥ 0: the halves are within δ = 2^-12 of x, y (half an f16 ULP at [0.5, 1);
+/// less below), so `x'² + y'²` is within ε = 2δ(|x| + |y|) + 2δ² ≤ 2^-11·√2 + 2^-23 of `x² + y²`
+/// and the rebuilt `z` within `√ε` of `z` (|√a − √b| ≤ √|a − b|). The decoded point is then
+/// within `d = √(2δ² + ε)` of the unit input: angle ≤ asin(d) (1.506°).
+fn worst_case_upper_deg() -> f64 {
+    let delta = 2f64.powi(-12);
+    let eps = 2f64.powi(-11) * 2f64.sqrt() + 2.0 * delta * delta;
+    (2.0 * delta * delta + eps).sqrt().asin().to_degrees()
+}
+
+#[test]
+fn round_trip_upper_hemisphere_and_the_mirror_below() {
+    let c = codec("xy fp16");
+    for (set, inputs) in [
+        ("fibonacci 2^24", fibonacci_directions(1 << 24)),
+        ("adversarial", adversarial_directions()),
+    ] {
+        let rt = round_trip(gpu(), c, &inputs).unwrap();
+        eprintln!(
+            "xy fp16 {set}: z >= 0 mean {:.6}° max {:.6}° (bound {:.4}°); all mean {:.3}° max {:.3}°",
+            rt.error_upper.mean(),
+            rt.error_upper.max,
+            worst_case_upper_deg(),
+            rt.error.mean(),
+            rt.error.max
+        );
+        assert_eq!(
+            rt.twin_encode.count, 0,
+            "{set}: Rust encoder differs: {:?}",
+            rt.twin_encode.first
+        );
+        assert_eq!(
+            rt.twin_decode.count, 0,
+            "{set}: Rust decoder differs: {:?}",
+            rt.twin_decode.first
+        );
+        assert_eq!(rt.not_unit, 0);
+        // Bound: worst_case_upper_deg plus f32 slack (a few 2^-24 rad ≈ 1e-5°).
+        assert!(
+            rt.error_upper.max <= worst_case_upper_deg() + 1e-5,
+            "{set}: {} at {}",
+            rt.error_upper.max,
+            rt.error_upper.argmax
+        );
+        // Below z = 0 the decode is the mirror image: error 2·asin(|z|), checked per input
+        // (the f16 rounding moves it by at most the upper bound).
+        for (i, v) in inputs
+            .iter()
+            .enumerate()
+            .filter(|(_, v)| v[2] < 0.0)
+            .step_by(97)
+        {
+            let want = 2.0 * f64::from(-v[2]).min(1.0).asin().to_degrees();
+            let got = prepass::precision::metrics::angle_degrees(
+                v.map(f64::from),
+                rt.decoded[i].map(f64::from),
+            );
+            assert!(
+                (got - want).abs() <= worst_case_upper_deg() + 1e-5,
+                "{v:?}: {got} vs {want}"
+            );
+        }
+    }
+}
+
+/// Resistance 2's "viewspace normal myth", measured through Killzone 2's encoding: off the
+/// optical axis a visible surface can face away from the view axis (z < 0), and xy FP16 then
+/// decodes its mirror image.
+#[test]
+fn perspective_myth_negative_z_is_visible_and_decodes_mirrored() {
+    let normals = 1024;
+    for fov in [60.0, 90.0] {
+        let m = killzone_myth(gpu(), fov, 16, normals).unwrap();
+        eprintln!("{m:?}");
+        // An even grid has no pixel on the axis: every pixel can see a normal with z < 0.
+        assert_eq!(m.pixels_with_negative_z, m.pixels);
+        // Fibonacci sampling of the lune between the two hemispheres: each boundary point is
+        // within one point spacing s = √(4π/N) (N = sphere points) of a sample, so the fraction
+        // is off by at most the boundary band's share, 2s·(2π)/(2π) = 2s.
+        let s = (4.0 * std::f64::consts::PI / f64::from(2 * normals)).sqrt();
+        assert!((m.visible_fraction_negative_z - m.visible_fraction_analytic).abs() <= 2.0 * s);
+        // The worst sampled error approaches 2θ at the corner pixel (θ its angle off axis),
+        // never exceeds the screen corner's 2θ by more than the f16 bound, and is at least the
+        // corner pixel centre's 2θ less the sample spacing (twice: the mirror doubles it).
+        let t = (fov / 2.0f64).to_radians().tan();
+        let corner_px = (2f64.sqrt() * t * 15.0 / 16.0).atan().to_degrees();
+        assert!(m.worst_error_deg <= m.worst_error_analytic_deg + worst_case_upper_deg());
+        assert!(m.worst_error_deg >= 2.0 * corner_px - 2.0 * s.to_degrees());
+    }
+}
+
+#[test]
+fn stratified_codes_decode_to_unit_vectors() {
+    let c = codec("xy fp16");
+    // All 2^32 do not fit the suite's budget on lavapipe; the full sweep is
+    // sweep::normal::decode_all_32. NaN, Inf and out-of-range halves are in the sample.
+    let mut codes = stratified_codes32();
+    for h in [
+        0x7c00u32, 0xfc00, 0x7e00, 0xfe01, 0x3c01, 0xbc01, 0x7bff, 0x0001, 0x8000,
+    ] {
+        for o in [0u32, 0x3c00, 0xbc00, 0x7c00, 0x7e00, 0x3bff] {
+            codes.push(h | (o << 16));
+            codes.push(o | (h << 16));
+        }
+    }
+    let d = decode_codes(gpu(), c, &codes).unwrap();
+    eprintln!(
+        "xy fp16 stratified: {} codes, max |len-1| {:.3e}, twin differs {}",
+        d.codes, d.max_len_error, d.twin.count
+    );
+    assert_eq!(d.not_unit, 0, "not unit within {UNIT_TOLERANCE}");
+    assert_eq!(d.twin.count, 0, "{:?}", d.twin.first);
+    // The f64 reference decode of the same half pair: the f32 path's rounding only (sqrt of a
+    // value with ≤ 3 roundings, then normalise): ≤ 2^-11 rad is generous and far below an f16 step.
+    assert!(
+        d.max_angle_deg <= 2f64.powi(-11).to_degrees(),
+        "{}",
+        d.max_angle_deg
+    );
+}
+
+#[test]
+fn bad_input_gets_the_documented_code_on_both_sides() {
+    let c = codec("xy fp16");
+    let cases = bad_inputs();
+    let bad: Vec<[f32; 3]> = cases.iter().map(|c| c.0).collect();
+    let good: Vec<[f32; 3]> = cases.iter().map(|c| c.1).collect();
+    let k = gpu().kernel(c.source, c.encode).unwrap();
+    let got = k
+        .run(&[Arg::column(&bad)], bad.len() as u64)
+        .unwrap()
+        .into_words();
+    let want = k
+        .run(&[Arg::column(&good)], good.len() as u64)
+        .unwrap()
+        .into_words();
+    for i in 0..bad.len() {
+        assert_eq!(
+            got[i], want[i],
+            "{:?} should encode like {:?}",
+            bad[i], good[i]
+        );
+        assert_eq!(
+            got[i],
+            xy_fp16::encode_normal_xy_fp16(Vec3::from(bad[i])),
+            "twin differs on {:?}",
+            bad[i]
+        );
+    }
+    assert_eq!(xy_fp16::encode_normal_xy_fp16(Vec3::ZERO), 0);
+    // Decoder: NaN halves count as 0, infinities clamp.
+    assert_eq!(xy_fp16::decode_normal_xy_fp16(0x7e00_7e00), Vec3::Z);
+    assert_eq!(xy_fp16::decode_normal_xy_fp16(0x0000_fc00), Vec3::NEG_X);
+}
+
+#[test]
+fn render_target_form_matches_the_code_path() {
+    let inputs: Vec<[f32; 3]> = fibonacci_directions(1 << 16)
+        .into_iter()
+        .chain(bad_inputs().into_iter().map(|c| c.0))
+        .collect();
+    let f = unorm_forms(
+        gpu(),
+        codec("xy fp16"),
+        "encode_normal_xy_fp16_unorm",
+        "decode_normal_xy_fp16_unorm",
+        4,
+        &inputs,
+    )
+    .unwrap();
+    assert_eq!(f.encode.count, 0, "{:?}", f.encode.first);
+    // Bound: 0. Every channel is within 0.45/255 of byte/255, so round(255 c) is the byte.
+    assert_eq!(f.decode.count, 0, "{:?}", f.decode.first);
+    for v in &inputs {
+        let v = Vec3::from(*v);
+        let ch = xy_fp16::encode_normal_xy_fp16_unorm(v);
+        assert_eq!(
+            xy_fp16::decode_normal_xy_fp16_unorm(ch),
+            xy_fp16::decode_normal_xy_fp16(xy_fp16::encode_normal_xy_fp16(v))
+        );
+    }
+}

@@ -1,0 +1,155 @@
+//! `wgsl/normal_xyz8.wgsl` on the adapter: round trip over 2^24 spherical-Fibonacci directions
+//! and the adversarial set, all 2^24 codes decoded, bad input and the render-target form —
+//! against the Rust twin `src/normal/xyz8.rs` and f64 references.
+
+mod common;
+
+use common::gpu;
+use glam::Vec3;
+use prepass::harness::Arg;
+use prepass::normal::xyz8;
+use prepass::sweep::normal::{
+    UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, decode_range,
+    fibonacci_directions, round_trip, unorm_forms,
+};
+
+/// The worst case of rounding each coordinate to the byte grid: each decoded coordinate
+/// `(2b − 255)/255` is within half a step, 1/255, of the unit input's, so the decoded point is
+/// within `√3/255` of the input and the angle is at most `asin(√3/255)` (0.3892°).
+fn worst_case_deg() -> f64 {
+    (3f64.sqrt() / 255.0).asin().to_degrees()
+}
+
+#[test]
+fn round_trip_meets_target_and_twin_is_bit_identical() {
+    let c = codec("xyz8");
+    let (mean_t, max_t) = c.target.unwrap();
+    for (set, inputs) in [
+        ("fibonacci 2^24", fibonacci_directions(1 << 24)),
+        ("adversarial", adversarial_directions()),
+    ] {
+        let rt = round_trip(gpu(), c, &inputs).unwrap();
+        eprintln!(
+            "xyz8 {set}: mean {:.6}° max {:.6}° (target {mean_t} / {max_t}, bound {:.4}°)",
+            rt.error.mean(),
+            rt.error.max,
+            worst_case_deg()
+        );
+        assert_eq!(
+            rt.twin_encode.count, 0,
+            "{set}: Rust encoder differs: {:?}",
+            rt.twin_encode.first
+        );
+        assert_eq!(
+            rt.twin_decode.count, 0,
+            "{set}: Rust decoder differs: {:?}",
+            rt.twin_decode.first
+        );
+        assert_eq!(rt.not_unit, 0);
+        assert_eq!(rt.error.nan_count, 0);
+        assert!(
+            rt.codes.iter().all(|p| p >> 24 == 0),
+            "byte 3 must stay zero"
+        );
+        // Bound: asin(√3/255) plus the f32 input/normalisation slack (a few 2^-24 rad ≈ 1e-5°).
+        assert!(
+            rt.error.max <= worst_case_deg() + 1e-5,
+            "{set}: max {}° at {}",
+            rt.error.max,
+            rt.error.argmax
+        );
+        if set.starts_with("fibonacci") {
+            // The rule: no worse than its float64 reproduction by more than 2%.
+            assert!(rt.error.mean() <= mean_t * 1.02 && rt.error.max <= max_t * 1.02);
+        }
+    }
+}
+
+#[test]
+fn every_code_decodes_to_a_unit_vector_and_byte_3_is_ignored() {
+    let c = codec("xyz8");
+    let d = decode_range(gpu(), c, 0, 1 << 24).unwrap();
+    let junk: Vec<u32> = (0u32..1 << 16)
+        .map(|p| (p * 251) & 0xff_ffff | (p << 24))
+        .collect();
+    let dj = decode_codes(gpu(), c, &junk).unwrap();
+    for (name, d) in [("all 2^24", &d), ("byte 3 junk", &dj)] {
+        eprintln!(
+            "xyz8 {name}: max |len-1| {:.3e}, max angle to exact {:.3e}°, twin differs {}",
+            d.max_len_error, d.max_angle_deg, d.twin.count
+        );
+        assert_eq!(d.not_unit, 0, "{name}: not unit within {UNIT_TOLERANCE}");
+        // Bound: only the final per-component divide turns the direction, ≤ √2·2^-24 rad.
+        assert!(d.max_angle_deg <= (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12);
+        assert_eq!(d.twin.count, 0, "{name}: {:?}", d.twin.first);
+    }
+    let k = gpu().kernel(c.source, c.decode).unwrap();
+    let got = k.run(&[Arg::column(&junk)], junk.len() as u64).unwrap();
+    for (i, v) in got.as_vec3().iter().enumerate() {
+        assert_eq!(*v, xyz8::decode_normal_xyz8(junk[i] & 0xff_ffff).to_array());
+    }
+}
+
+#[test]
+fn bad_input_gets_the_documented_code_on_both_sides() {
+    let c = codec("xyz8");
+    let cases = bad_inputs();
+    let bad: Vec<[f32; 3]> = cases.iter().map(|c| c.0).collect();
+    let good: Vec<[f32; 3]> = cases.iter().map(|c| c.1).collect();
+    let k = gpu().kernel(c.source, c.encode).unwrap();
+    let got = k
+        .run(&[Arg::column(&bad)], bad.len() as u64)
+        .unwrap()
+        .into_words();
+    let want = k
+        .run(&[Arg::column(&good)], good.len() as u64)
+        .unwrap()
+        .into_words();
+    for i in 0..bad.len() {
+        assert_eq!(
+            got[i], want[i],
+            "{:?} should encode like {:?}",
+            bad[i], good[i]
+        );
+        assert_eq!(
+            got[i],
+            xyz8::encode_normal_xyz8(Vec3::from(bad[i])),
+            "twin differs on {:?}",
+            bad[i]
+        );
+    }
+    // +z: bytes round(127.5) = 128 (half to even), 128, 255.
+    assert_eq!(xyz8::encode_normal_xyz8(Vec3::ZERO), 0x00ff_8080);
+}
+
+#[test]
+fn render_target_form_matches_the_code_path() {
+    let inputs: Vec<[f32; 3]> = fibonacci_directions(1 << 16)
+        .into_iter()
+        .chain(bad_inputs().into_iter().map(|c| c.0))
+        .collect();
+    let f = unorm_forms(
+        gpu(),
+        codec("xyz8"),
+        "encode_normal_xyz8_unorm",
+        "decode_normal_xyz8_unorm",
+        4,
+        &inputs,
+    )
+    .unwrap();
+    assert_eq!(f.encode.count, 0, "{:?}", f.encode.first);
+    // Bound: 0. Every channel is within 0.45/255 of byte/255, so round(255 c) is the byte.
+    assert_eq!(f.decode.count, 0, "{:?}", f.decode.first);
+    for v in &inputs {
+        let v = Vec3::from(*v);
+        let ch = xyz8::encode_normal_xyz8_unorm(v);
+        assert_eq!(
+            xyz8::decode_normal_xyz8_unorm(ch),
+            xyz8::decode_normal_xyz8(xyz8::encode_normal_xyz8(v))
+        );
+    }
+    assert_eq!(
+        xyz8::decode_normal_xyz8_unorm([f32::NAN, 2.0, -1.0, 0.5]),
+        xyz8::decode_normal_xyz8(0x0000_ff00)
+    );
+}

@@ -1,0 +1,106 @@
+// prepass — hemi-octahedral codes for view-space normals (z >= 0 only), 2x12 bits: the upper half
+// of the octahedron, rotated 45 degrees so it fills the whole square (Cigolle et al. 2014, the
+// survey's "hemi-oct"). Offered beside oct24 for comparison: same bits, half the sphere.
+// Rust twin: src/normal/hemioct.rs. Tests: tests/normal_hemioct.rs.
+//
+// Code k on an axis stands for (2k - M)/M, M = 4095; the decoded vector before normalising is
+// the exact integer vector D = ((a + b)/2, (a - b)/2, M - max(|a|, |b|)) with a = 2u - M,
+// b = 2v - M (both odd, so the halves are exact). Layout: u in bits 0-11, v in bits 12-23;
+// bits 24-31 are left zero (for the material) and ignored by the decoder.
+//
+// Bad input: as wgsl/normal_oct.wgsl (NaN, zero, all-subnormal -> +z; infinities win; any
+// finite length). A negative z is first clamped to 0 (the nearest point of the hemisphere, on
+// the equator); (0, 0, -1) thereby becomes the zero vector and encodes +z.
+
+fn hemioct_sanitize(n: vec3<f32>) -> vec3<f32> {
+    let bits = bitcast<vec3<u32>>(n);
+    let mag = bits & vec3<u32>(0x7fffffffu);
+    if (any(mag > vec3<u32>(0x7f800000u))) {
+        return vec3<f32>(0.0, 0.0, 1.0);
+    }
+    let sign_one = bitcast<vec3<f32>>((bits & vec3<u32>(0x80000000u)) | vec3<u32>(0x3f800000u));
+    let signed_zero = bitcast<vec3<f32>>(bits & vec3<u32>(0x80000000u));
+    let is_inf = mag == vec3<u32>(0x7f800000u);
+    let is_sub = (bits & vec3<u32>(0x7f800000u)) == vec3<u32>(0u);
+    var c = select(n, signed_zero, is_sub);
+    if (any(is_inf)) {
+        c = select(signed_zero, sign_one, is_inf);
+    }
+    c.z = max(c.z, 0.0);
+    let m = max(max(abs(c.x), abs(c.y)), c.z);
+    if (m == 0.0) {
+        return vec3<f32>(0.0, 0.0, 1.0);
+    }
+    let e = (bitcast<u32>(m) >> 23u) & 0xffu;
+    let s = c * bitcast<f32>(max(254u - e, 1u) << 23u);
+    let sb = bitcast<vec3<u32>>(s);
+    let s_sub = (sb & vec3<u32>(0x7f800000u)) == vec3<u32>(0u);
+    return select(s, bitcast<vec3<f32>>(sb & vec3<u32>(0x80000000u)), s_sub);
+}
+
+// Continuous code coordinates in [0, M]^2: p = s.xy / (|x| + |y| + z), rotated (p.x + p.y,
+// p.x - p.y); x * 0.5 is exact, so fusing the add cannot change the sum.
+fn hemioct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
+    let l1 = (abs(s.x) + abs(s.y)) + s.z;
+    let p = s.xy / l1;
+    let q = vec2<f32>(p.x + p.y, p.x - p.y);
+    return clamp(q * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(1.0)) * f32(m);
+}
+
+fn hemioct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
+    let mi = i32(m);
+    let a = 2 * i32(uv.x) - mi;
+    let b = 2 * i32(uv.y) - mi;
+    return vec3<i32>((a + b) / 2, (a - b) / 2, mi - max(abs(a), abs(b)));
+}
+
+// sin^2 of the angle to the code's direction times |s|^2 (see normal_oct.wgsl's oct_sin2).
+fn hemioct_sin2(s: vec3<f32>, uv: vec2<u32>, m: u32) -> f32 {
+    let d = hemioct_lattice(uv, m);
+    let ad = vec3<u32>(abs(d));
+    let len2 = f32(ad.x * ad.x + ad.y * ad.y + ad.z * ad.z);
+    let x = cross(s, vec3<f32>(d));
+    return dot(x, x) / len2;
+}
+
+// Precise: the best of the four codes around the continuous coordinates, tried in the order
+// (0,0), (1,0), (0,1), (1,1), a later one winning only if strictly closer.
+fn encode_normal_hemioct24(n: vec3<f32>) -> u32 {
+    let m = 4095u;
+    let s = hemioct_sanitize(n);
+    let base = min(vec2<u32>(floor(hemioct_continuous(s, m))), vec2<u32>(m - 1u));
+    var best = base;
+    var best_s2 = hemioct_sin2(s, base, m);
+    for (var k = 1u; k < 4u; k++) {
+        let cand = base + vec2<u32>(k & 1u, k >> 1u);
+        let s2 = hemioct_sin2(s, cand, m);
+        if (s2 < best_s2) {
+            best = cand;
+            best_s2 = s2;
+        }
+    }
+    return best.x | (best.y << 12u);
+}
+
+// Rounding encoder: nearest code per axis (round half to even).
+fn encode_normal_hemioct24_fast(n: vec3<f32>) -> u32 {
+    let uv = vec2<u32>(round(hemioct_continuous(hemioct_sanitize(n), 4095u)));
+    return uv.x | (uv.y << 12u);
+}
+
+fn decode_normal_hemioct24(p: u32) -> vec3<f32> {
+    let uv = vec2<u32>(p & 0xfffu, (p >> 12u) & 0xfffu);
+    return normalize(vec3<f32>(hemioct_lattice(uv, 4095u)));
+}
+
+// Render-target form: rgba8unorm channels (alpha 0, free for the material); the decode rounds
+// bytes back (NaN -> 0, clamped), so unpack4x8unorm's 3-ULP error cannot change the code.
+fn encode_normal_hemioct24_unorm(n: vec3<f32>) -> vec4<f32> {
+    return unpack4x8unorm(encode_normal_hemioct24(n));
+}
+
+fn decode_normal_hemioct24_unorm(c: vec4<f32>) -> vec3<f32> {
+    let is_nan = (bitcast<vec4<u32>>(c) & vec4<u32>(0x7fffffffu)) > vec4<u32>(0x7f800000u);
+    let b = vec4<u32>(round(clamp(select(c, vec4<f32>(0.0), is_nan), vec4<f32>(0.0), vec4<f32>(1.0)) * 255.0));
+    return decode_normal_hemioct24(b.x | (b.y << 8u) | (b.z << 16u) | (b.w << 24u));
+}

@@ -1,0 +1,179 @@
+// prepass — octahedral unit-vector codes (Cigolle et al., "A Survey of Efficient Representations
+// for Independent Unit Vectors", JCGT 2014), 2x8, 2x12 and 2x16 bits.
+// Rust twin: src/normal/oct.rs. Tests: tests/normal_oct.rs.
+//
+// Layout: u (from x) in the low N bits of the u32, v (from y) in the next N bits; the bits above
+// 2N are left zero by the encoders and ignored by the decoders. Code k on an axis stands for the
+// octahedron coordinate (2k - M)/M with M = 2^N - 1, so the decoded vector before normalising is
+// the integer vector D = (2u - M, 2v - M, M - |2u - M| - |2v - M|) (folded when that z < 0),
+// which every implementation computes exactly.
+//
+// Bad input (all encoders): NaN anywhere, the zero vector and all-subnormal vectors encode as
+// +z = (0, 0, 1); subnormal components count as zero; infinite components win (the direction of
+// the infinities, e.g. (+Inf, 1, 0) -> +x); any finite length is fine (the map is scale-free).
+// Decoders accept every bit pattern and return a finite unit vector.
+//
+// Written to be evaluated identically everywhere it matters: no a*b+c whose fusion would change
+// the result (every multiply feeding an add is exact or goes through dot()/cross() as a whole),
+// no common factors for an optimiser to pull out, NaN/Inf/subnormals found from bits.
+
+// The input made safe: NaN or zero -> none (w = 0); infinities -> their signs; subnormal
+// components -> signed zero; then scaled by an exact power of two so the largest component
+// lies in [1, 4). w = 1 when valid.
+fn oct_sanitize(n: vec3<f32>) -> vec4<f32> {
+    let bits = bitcast<vec3<u32>>(n);
+    let mag = bits & vec3<u32>(0x7fffffffu);
+    if (any(mag > vec3<u32>(0x7f800000u))) {
+        return vec4<f32>(0.0, 0.0, 1.0, 0.0);
+    }
+    let sign_one = bitcast<vec3<f32>>((bits & vec3<u32>(0x80000000u)) | vec3<u32>(0x3f800000u));
+    let signed_zero = bitcast<vec3<f32>>(bits & vec3<u32>(0x80000000u));
+    let is_inf = mag == vec3<u32>(0x7f800000u);
+    let is_sub = (bits & vec3<u32>(0x7f800000u)) == vec3<u32>(0u);
+    var c = select(n, signed_zero, is_sub);
+    if (any(is_inf)) {
+        c = select(signed_zero, sign_one, is_inf);
+    }
+    let m = max(max(abs(c.x), abs(c.y)), abs(c.z));
+    if (m == 0.0) {
+        return vec4<f32>(0.0, 0.0, 1.0, 0.0);
+    }
+    let e = (bitcast<u32>(m) >> 23u) & 0xffu;
+    let scale = bitcast<f32>(max(254u - e, 1u) << 23u);
+    let s = c * scale;
+    let sb = bitcast<vec3<u32>>(s);
+    let s_sub = (sb & vec3<u32>(0x7f800000u)) == vec3<u32>(0u);
+    return vec4<f32>(select(s, bitcast<vec3<f32>>(sb & vec3<u32>(0x80000000u)), s_sub), 1.0);
+}
+
+// The continuous code coordinates in [0, M]^2 of a sanitized vector (before rounding).
+fn oct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
+    let a = abs(s);
+    let l1 = (a.x + a.y) + a.z;
+    var p = s.xy / l1;
+    if (s.z < 0.0) {
+        // Lower hemisphere: fold over the diagonals. The sign of +-0 counts as +.
+        let sgn = select(vec2<f32>(-1.0), vec2<f32>(1.0), p >= vec2<f32>(0.0));
+        p = (vec2<f32>(1.0) - abs(p.yx)) * sgn;
+    }
+    // p * 0.5 is exact, so fusing the add cannot change the sum.
+    let t = clamp(p * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(1.0));
+    return t * f32(m);
+}
+
+// The exact integer direction code (u, v) stands for (see the header); its L1 norm is M.
+fn oct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
+    let mi = i32(m);
+    let a = 2 * i32(uv.x) - mi;
+    let b = 2 * i32(uv.y) - mi;
+    let z = mi - abs(a) - abs(b);
+    if (z >= 0) {
+        return vec3<i32>(a, b, z);
+    }
+    // a and b are odd (M is odd), never zero, so sign() is +-1.
+    return vec3<i32>((mi - abs(b)) * sign(a), (mi - abs(a)) * sign(b), z);
+}
+
+// sin^2 of the angle between s and the direction of code uv: |s x D|^2 / |D|^2, up to the common
+// factor |s|^2. Sine, not cosine: at oct32's 2e-5 rad a cosine is 1.0 in f32.
+fn oct_sin2(s: vec3<f32>, uv: vec2<u32>, m: u32) -> f32 {
+    let d = oct_lattice(uv, m);
+    let ad = vec3<u32>(abs(d));
+    // |D|^2 <= M^2 < 2^32: exact in u32, one rounding to f32.
+    let len2 = f32(ad.x * ad.x + ad.y * ad.y + ad.z * ad.z);
+    let x = cross(s, vec3<f32>(d));
+    return dot(x, x) / len2;
+}
+
+// The survey's precise encoder: of the four codes around the continuous coordinates (floor and
+// floor + 1 per axis), the one whose decoded direction is closest to s. Candidates are tried in
+// the order (0,0), (1,0), (0,1), (1,1); a later one wins only if strictly closer.
+fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
+    let m = (1u << bits) - 1u;
+    let s = oct_sanitize(n).xyz;
+    let base = min(vec2<u32>(floor(oct_continuous(s, m))), vec2<u32>(m - 1u));
+    var best = base;
+    var best_s2 = oct_sin2(s, base, m);
+    for (var k = 1u; k < 4u; k++) {
+        let cand = base + vec2<u32>(k & 1u, k >> 1u);
+        let s2 = oct_sin2(s, cand, m);
+        if (s2 < best_s2) {
+            best = cand;
+            best_s2 = s2;
+        }
+    }
+    return best.x | (best.y << bits);
+}
+
+// The plain rounding encoder: nearest code per axis (round half to even).
+fn oct_encode_round(n: vec3<f32>, bits: u32) -> u32 {
+    let m = (1u << bits) - 1u;
+    let uv = vec2<u32>(round(oct_continuous(oct_sanitize(n).xyz, m)));
+    return uv.x | (uv.y << bits);
+}
+
+fn oct_decode(p: u32, bits: u32) -> vec3<f32> {
+    let m = (1u << bits) - 1u;
+    let uv = vec2<u32>(p & m, (p >> bits) & m);
+    return normalize(vec3<f32>(oct_lattice(uv, m)));
+}
+
+// Byte k of the u32 from a unorm8 channel: round(255 c) after clamping; NaN counts as 0.
+fn oct_unorm_bytes(c: vec4<f32>) -> u32 {
+    let is_nan = (bitcast<vec4<u32>>(c) & vec4<u32>(0x7fffffffu)) > vec4<u32>(0x7f800000u);
+    let b = vec4<u32>(round(clamp(select(c, vec4<f32>(0.0), is_nan), vec4<f32>(0.0), vec4<f32>(1.0)) * 255.0));
+    return b.x | (b.y << 8u) | (b.z << 16u) | (b.w << 24u);
+}
+
+// ---- 2 x 8 bits (RG8) ----
+fn encode_normal_oct16(n: vec3<f32>) -> u32 {
+    return oct_encode_precise(n, 8u);
+}
+fn encode_normal_oct16_fast(n: vec3<f32>) -> u32 {
+    return oct_encode_round(n, 8u);
+}
+fn decode_normal_oct16(p: u32) -> vec3<f32> {
+    return oct_decode(p, 8u);
+}
+// Render-target form: the rg8unorm channels to write, and the decode of sampled channels
+// (bytes rounded back, so exact under unpack4x8unorm's 3-ULP error or a +-0.49/255 filter).
+fn encode_normal_oct16_unorm(n: vec3<f32>) -> vec2<f32> {
+    return unpack4x8unorm(encode_normal_oct16(n)).xy;
+}
+fn decode_normal_oct16_unorm(c: vec2<f32>) -> vec3<f32> {
+    return oct_decode(oct_unorm_bytes(vec4<f32>(c, 0.0, 0.0)), 8u);
+}
+
+// ---- 2 x 12 bits (three bytes of an RGBA8 texel; alpha left zero for the material) ----
+fn encode_normal_oct24(n: vec3<f32>) -> u32 {
+    return oct_encode_precise(n, 12u);
+}
+fn encode_normal_oct24_fast(n: vec3<f32>) -> u32 {
+    return oct_encode_round(n, 12u);
+}
+fn decode_normal_oct24(p: u32) -> vec3<f32> {
+    return oct_decode(p, 12u);
+}
+fn encode_normal_oct24_unorm(n: vec3<f32>) -> vec4<f32> {
+    return unpack4x8unorm(encode_normal_oct24(n));
+}
+fn decode_normal_oct24_unorm(c: vec4<f32>) -> vec3<f32> {
+    return oct_decode(oct_unorm_bytes(c), 12u);
+}
+
+// ---- 2 x 16 bits (a whole RGBA8 texel, or RG16) ----
+fn encode_normal_oct32(n: vec3<f32>) -> u32 {
+    return oct_encode_precise(n, 16u);
+}
+fn encode_normal_oct32_fast(n: vec3<f32>) -> u32 {
+    return oct_encode_round(n, 16u);
+}
+fn decode_normal_oct32(p: u32) -> vec3<f32> {
+    return oct_decode(p, 16u);
+}
+fn encode_normal_oct32_unorm(n: vec3<f32>) -> vec4<f32> {
+    return unpack4x8unorm(encode_normal_oct32(n));
+}
+fn decode_normal_oct32_unorm(c: vec4<f32>) -> vec3<f32> {
+    return oct_decode(oct_unorm_bytes(c), 16u);
+}

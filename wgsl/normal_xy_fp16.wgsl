@@ -1,0 +1,69 @@
+// prepass — view-space normal x and y as two FP16 halves in one u32 (an RGBA8 texel), z rebuilt
+// as +sqrt(1 - x^2 - y^2) (Killzone 2 G-buffer: "2xFP16 compressed to RGBA8 on write").
+// Rust twin: src/normal/xy_fp16.rs. Tests: tests/normal_xy_fp16.rs.
+//
+// Only normals with z >= 0 survive: the sign of z is not stored, and under perspective a visible
+// surface's view-space normal can have z < 0 (Resistance 2's "viewspace normal myth"), which
+// decodes mirrored through the xy plane. README measures how often and how badly.
+//
+// Bad input (encoder): NaN anywhere, the zero vector and all-subnormal vectors encode as +z;
+// subnormal components count as zero; infinite components win; any finite length is normalised.
+// x and y are clamped to [-1, 1] before pack2x16float (out-of-range input is indeterminate).
+// Decoder: every bit pattern gives a finite unit vector; NaN halves count as 0, infinite or
+// out-of-range halves are clamped to [-1, 1], and x^2 + y^2 > 1 gives z = 0 (then normalised).
+
+fn xyfp16_sanitize(n: vec3<f32>) -> vec4<f32> {
+    let bits = bitcast<vec3<u32>>(n);
+    let mag = bits & vec3<u32>(0x7fffffffu);
+    if (any(mag > vec3<u32>(0x7f800000u))) {
+        return vec4<f32>(0.0, 0.0, 1.0, 0.0);
+    }
+    let sign_one = bitcast<vec3<f32>>((bits & vec3<u32>(0x80000000u)) | vec3<u32>(0x3f800000u));
+    let signed_zero = bitcast<vec3<f32>>(bits & vec3<u32>(0x80000000u));
+    let is_inf = mag == vec3<u32>(0x7f800000u);
+    let is_sub = (bits & vec3<u32>(0x7f800000u)) == vec3<u32>(0u);
+    var c = select(n, signed_zero, is_sub);
+    if (any(is_inf)) {
+        c = select(signed_zero, sign_one, is_inf);
+    }
+    let m = max(max(abs(c.x), abs(c.y)), abs(c.z));
+    if (m == 0.0) {
+        return vec4<f32>(0.0, 0.0, 1.0, 0.0);
+    }
+    let e = (bitcast<u32>(m) >> 23u) & 0xffu;
+    let s = c * bitcast<f32>(max(254u - e, 1u) << 23u);
+    let sb = bitcast<vec3<u32>>(s);
+    let s_sub = (sb & vec3<u32>(0x7f800000u)) == vec3<u32>(0u);
+    return vec4<f32>(select(s, bitcast<vec3<f32>>(sb & vec3<u32>(0x80000000u)), s_sub), 1.0);
+}
+
+fn encode_normal_xy_fp16(n: vec3<f32>) -> u32 {
+    let s = xyfp16_sanitize(n).xyz;
+    let u = s / sqrt(dot(s, s));
+    return pack2x16float(clamp(u.xy, vec2<f32>(-1.0), vec2<f32>(1.0)));
+}
+
+fn decode_normal_xy_fp16(p: u32) -> vec3<f32> {
+    let h = unpack2x16float(p);
+    let is_nan = (bitcast<vec2<u32>>(h) & vec2<u32>(0x7fffffffu)) > vec2<u32>(0x7f800000u);
+    let xy = clamp(select(h, vec2<f32>(0.0), is_nan), vec2<f32>(-1.0), vec2<f32>(1.0));
+    // Normalised by hand with |v|^2 = s + z^2 written as s + max(0, 1 - s): normalize() would
+    // square the sqrt, which an optimiser may or may not fold back (Mesa does), so its result
+    // would depend on the compiler.
+    let s = dot(xy, xy);
+    let z2 = max(0.0, 1.0 - s);
+    return vec3<f32>(xy, sqrt(z2)) / sqrt(s + z2);
+}
+
+// Render-target form, as Killzone 2 wrote it: the rgba8unorm channels holding the four bytes of
+// the two halves, and the decode of sampled channels (bytes rounded back, so unpack4x8unorm's
+// 3-ULP error cannot flip a bit of a half). NaN channels count as 0; channels are clamped.
+fn encode_normal_xy_fp16_unorm(n: vec3<f32>) -> vec4<f32> {
+    return unpack4x8unorm(encode_normal_xy_fp16(n));
+}
+
+fn decode_normal_xy_fp16_unorm(c: vec4<f32>) -> vec3<f32> {
+    let is_nan = (bitcast<vec4<u32>>(c) & vec4<u32>(0x7fffffffu)) > vec4<u32>(0x7f800000u);
+    let b = vec4<u32>(round(clamp(select(c, vec4<f32>(0.0), is_nan), vec4<f32>(0.0), vec4<f32>(1.0)) * 255.0));
+    return decode_normal_xy_fp16(b.x | (b.y << 8u) | (b.z << 16u) | (b.w << 24u));
+}
