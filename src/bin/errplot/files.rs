@@ -38,6 +38,13 @@ pub const CSV_FILES: &[(&str, &str, &str)] = &[
          the exact quotient), exact_roundtrip_failures, f32_roundtrip_failures, collisions",
     ),
     (
+        "normal_error.csv",
+        "one normal encoding over the Fibonacci directions",
+        "encoding, bits, directions (counted: z ≥ 0 only for xy_fp16 and hemi-octahedral), \
+         where (adapter or Rust twins), mean_deg, max_deg, rms_deg (angle between input and \
+         decoded vector)",
+    ),
+    (
         "roughness_error.csv",
         "one 1/16-octave bin of specular powers for one 8-bit storage",
         "storage (log range, linear, affine), max_power, power_bin_start (lower edge of the bin), \

@@ -99,11 +99,17 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     } else {
         "cpu"
     };
-    let bar = ctx.progress(RATIOS.len() as u64 * 2, "linear depth");
+    // Quick runs plot the cost-table ratio only.
+    let ratios: Vec<f64> = if ctx.opts.quick {
+        vec![VARIANT_RATIO]
+    } else {
+        RATIOS.to_vec()
+    };
+    let bar = ctx.progress(ratios.len() as u64 * 2, "linear depth");
     let mut series = Vec::new();
     let mut csv = String::from("form,where,near_m,far_m,distance_m,max_relative_error\n");
     let mut variant_errors: Vec<(&str, ErrorStats)> = Vec::new();
-    for ratio in RATIOS {
+    for ratio in ratios {
         let case = StiffCase {
             near: NEAR,
             far: (f64::from(NEAR) * ratio) as f32,

@@ -25,6 +25,7 @@ mod depth_resolution;
 mod files;
 mod lighting;
 mod linear_depth;
+mod normal;
 mod plot;
 mod roughness;
 
@@ -42,6 +43,7 @@ const SECTIONS: &[(&str, Section)] = &[
     ("depth resolution", depth_resolution::section),
     ("linear depth", linear_depth::section),
     ("24-bit depth", depth24::section),
+    ("normal encodings", normal::section),
     ("roughness", roughness::section),
     ("lighting", lighting::section),
     ("error against run time", cost::section),

@@ -81,7 +81,6 @@ pub struct Scatter {
 /// A `width × height` image of values (e.g. error over the octahedral square), drawn with a
 /// colour scale and a colour bar.
 #[derive(Clone, Debug)]
-#[allow(dead_code)] // first user: the normal-encoding section (octahedral error images)
 pub struct ErrorImage {
     /// Title above the image.
     pub title: String,
@@ -106,7 +105,6 @@ pub type Bin = (f64, f64, u64);
 
 /// A histogram with a logarithmic count axis.
 #[derive(Clone, Debug)]
-#[allow(dead_code)] // first user: the normal-encoding section (error histograms)
 pub struct Histogram {
     /// Title above the chart.
     pub title: String,
@@ -118,7 +116,6 @@ pub struct Histogram {
 
 /// Anything the report draws.
 #[derive(Clone, Debug)]
-#[allow(dead_code)] // Image and Histogram arrive with the normal-encoding section
 pub enum Chart {
     /// See [`LineChart`].
     Lines(LineChart),

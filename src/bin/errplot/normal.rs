@@ -1,0 +1,226 @@
+//! Normal encodings (`wgsl/normal_*.wgsl`): angular round-trip error of every encoding over
+//! spherical-Fibonacci directions, as an octahedral error image per encoding and one histogram,
+//! and each encoder and decoder as a cost-table variant.
+
+use crate::cost::{TimedArg, Variant, Wgsl, twin_timer};
+use crate::ctx::{Ctx, num};
+use crate::plot::{Bin, Chart, ErrorImage, Histogram};
+use glam::Vec3;
+use prepass::precision::metrics::{ErrorStats, angle_degrees, widen3};
+use prepass::sweep::normal::{CODECS, Codec, fibonacci_directions, round_trip};
+use std::fmt::Write as _;
+
+/// Image side (cells) of the octahedral error images.
+const SIDE: usize = 96;
+
+/// Octahedral coordinates in [−1, 1]² of a direction (f64): the map every image is drawn in.
+fn octahedral(d: [f32; 3]) -> (f64, f64) {
+    let [x, y, z] = d.map(f64::from);
+    let l1 = x.abs() + y.abs() + z.abs();
+    let (u, v) = (x / l1, y / l1);
+    if z >= 0.0 {
+        (u, v)
+    } else {
+        ((1.0 - v.abs()) * u.signum(), (1.0 - u.abs()) * v.signum())
+    }
+}
+
+/// Per-direction angular errors of `codec` over `dirs`: on the adapter when there is one,
+/// otherwise through the Rust twins (bit-identical to the WGSL on lavapipe).
+fn errors(ctx: &Ctx, codec: &Codec, dirs: &[[f32; 3]]) -> Result<(Vec<f64>, &'static str), String> {
+    let decoded: Vec<[f32; 3]> = match ctx.gpu() {
+        Some(g) => {
+            round_trip(g, codec, dirs)
+                .map_err(|e| e.to_string())?
+                .decoded
+        }
+        None => dirs
+            .iter()
+            .map(|&d| (codec.twin_decode)((codec.twin_encode)(Vec3::from(d))).to_array())
+            .collect(),
+    };
+    let place = if ctx.gpu().is_some() {
+        "adapter"
+    } else {
+        "Rust twins"
+    };
+    Ok((
+        dirs.iter()
+            .zip(&decoded)
+            .map(|(&d, &r)| angle_degrees(widen3(d), widen3(r)))
+            .collect(),
+        place,
+    ))
+}
+
+/// The tables, images, histogram, CSV and variants.
+pub fn section(ctx: &mut Ctx) -> Result<(), String> {
+    let n = if ctx.opts.quick { 1 << 16 } else { 1 << 22 };
+    let dirs = fibonacci_directions(n);
+    let bar = ctx.progress(CODECS.len() as u64, "normals");
+    let mut measured = Vec::new();
+    for codec in &CODECS {
+        bar.set_message(codec.name);
+        let (e, place) = errors(ctx, codec, &dirs)?;
+        measured.push((codec, e, place));
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    let place = measured[0].2;
+    ctx.line("## Normal encodings");
+    ctx.line("");
+    ctx.line(format!(
+        "Angle between each of {n} spherical-Fibonacci directions and its decoded vector, \
+         encoded and decoded by the {place}. xy FP16 and hemi-octahedral store view-space \
+         normals with z ≥ 0 only: their rows count the upper hemisphere alone (the tests \
+         measure what happens below it). Data: `normal_error.csv`."
+    ));
+    ctx.line("");
+    ctx.line("| encoding | bits | mean error (°) | max error (°) | RMS (°) |");
+    ctx.line("|---|---|---|---|---|");
+    let mut csv = String::from("encoding,bits,directions,where,mean_deg,max_deg,rms_deg\n");
+    let mut hist = Vec::new();
+    for (codec, e, place) in &measured {
+        let upper_only = codec.name.contains("fp16") || codec.name.contains("hemi");
+        let mut s = ErrorStats::default();
+        for (i, (&err, d)) in e.iter().zip(&dirs).enumerate() {
+            if !upper_only || d[2] >= 0.0 {
+                s.add(i as u64, err);
+            }
+        }
+        ctx.line(format!(
+            "| {} | {} | {} | {} | {} |",
+            codec.name,
+            codec.bits,
+            num(s.mean()),
+            num(s.max),
+            num(s.rms())
+        ));
+        let _ = writeln!(
+            csv,
+            "{},{},{},{place},{},{},{}",
+            codec.name,
+            codec.bits,
+            s.count,
+            s.mean(),
+            s.max,
+            s.rms()
+        );
+        // Histogram: 40 log-spaced bins from 1e-5° to 10°.
+        let mut bins: Vec<Bin> = (0..40)
+            .map(|k| {
+                let lo = 10f64.powf(-5.0 + 6.0 * k as f64 / 40.0);
+                let hi = 10f64.powf(-5.0 + 6.0 * (k + 1) as f64 / 40.0);
+                (lo, hi, 0)
+            })
+            .collect();
+        for (&err, d) in e.iter().zip(&dirs) {
+            if upper_only && d[2] < 0.0 {
+                continue;
+            }
+            let k = (((err.max(1e-5)).log10() + 5.0) / 6.0 * 40.0).floor() as usize;
+            bins[k.min(39)].2 += 1;
+        }
+        if ["xyz8", "oct16", "oct24", "oct32", "xy fp16"].contains(&codec.name) {
+            hist.push((codec.name.to_string(), bins));
+        }
+    }
+    ctx.line("");
+    ctx.csv("normal_error.csv", &csv)?;
+    ctx.chart(
+        &Chart::Histogram(Histogram {
+            title: format!("Normal encodings: round-trip error histogram ({n} directions)"),
+            x_label: "angular error (degrees, log scale)".into(),
+            series: hist,
+        }),
+        "normal_error_histogram",
+        "normal encoding error histogram",
+    )?;
+    ctx.line(
+        "Error over the sphere, drawn in octahedral coordinates (centre = +z, corners = −z; \
+         each cell shows the largest error of the directions in it):",
+    );
+    ctx.line("");
+    for (codec, e, _) in &measured {
+        let mut values = vec![f64::NAN; SIDE * SIDE];
+        for (&err, &d) in e.iter().zip(&dirs) {
+            let (u, v) = octahedral(d);
+            let cx = (((u + 1.0) / 2.0) * SIDE as f64)
+                .floor()
+                .clamp(0.0, SIDE as f64 - 1.0) as usize;
+            let cy = (((v + 1.0) / 2.0) * SIDE as f64)
+                .floor()
+                .clamp(0.0, SIDE as f64 - 1.0) as usize;
+            let cell = &mut values[cy * SIDE + cx];
+            *cell = if cell.is_nan() { err } else { cell.max(err) };
+        }
+        ctx.chart(
+            &Chart::Image(ErrorImage {
+                title: format!(
+                    "{} ({} bits): round-trip error over the sphere",
+                    codec.name, codec.bits
+                ),
+                x_label: "octahedral u".into(),
+                y_label: "octahedral v".into(),
+                value_label: "max angular error (degrees)".into(),
+                width: SIDE,
+                height: SIDE,
+                values,
+                extent: [(-1.0, 1.0), (-1.0, 1.0)],
+            }),
+            &format!("normal_error_image_{}", codec.name.replace(' ', "_")),
+            &format!("{} error over the sphere", codec.name),
+        )?;
+    }
+
+    // Cost-table variants: each encoder and each decoder, timed on spread-out inputs.
+    // Quick runs (CI, notebooks) time the precise encodings only, to stay under a minute.
+    let tile_dirs: Vec<[f32; 3]> = fibonacci_directions(1 << 16);
+    let quick = ctx.opts.quick;
+    for (codec, e, place) in measured {
+        if quick && (codec.name.contains("fast") || codec.name.contains("hemi")) {
+            continue;
+        }
+        let mut s = ErrorStats::default();
+        let upper_only = codec.name.contains("fp16") || codec.name.contains("hemi");
+        for (i, (&err, d)) in e.iter().zip(&dirs).enumerate() {
+            if !upper_only || d[2] >= 0.0 {
+                s.add(i as u64, err);
+            }
+        }
+        let enc = codec.twin_encode;
+        let dec = codec.twin_decode;
+        let codes: Vec<u32> = tile_dirs.iter().map(|&d| enc(Vec3::from(d))).collect();
+        let dir_words: Vec<u32> = tile_dirs.iter().flatten().map(|x| x.to_bits()).collect();
+        let tile_vecs: Vec<Vec3> = tile_dirs.iter().map(|&d| Vec3::from(d)).collect();
+        ctx.variants.push(Variant {
+            family: "normal encoding: encode",
+            unit: "degrees",
+            name: codec.encode.into(),
+            bits: codec.bits,
+            error: Some(s),
+            error_from: format!("{place}: {n} Fibonacci directions, round trip"),
+            wgsl: Some(Wgsl {
+                source: codec.source.into(),
+                function: codec.encode.into(),
+                args: vec![TimedArg::Column(dir_words)],
+            }),
+            twin: Some(twin_timer(tile_vecs, enc)),
+        });
+        ctx.variants.push(Variant {
+            family: "normal encoding: decode",
+            unit: "degrees",
+            name: codec.decode.into(),
+            bits: codec.bits,
+            error: Some(s),
+            error_from: format!("{place}: {n} Fibonacci directions, round trip"),
+            wgsl: Some(Wgsl {
+                source: codec.source.into(),
+                function: codec.decode.into(),
+                args: vec![TimedArg::Column(codes.clone())],
+            }),
+            twin: Some(twin_timer(codes, dec)),
+        });
+    }
+    Ok(())
+}
