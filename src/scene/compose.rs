@@ -231,8 +231,77 @@ fn items_of(file: &WgslFile) -> Result<Vec<Item>, ComposeError> {
             },
         ));
     }
+    // Abstract-typed constants (`const K = 1.0;`) are folded away by naga and never reach the
+    // IR, and module-scope `var<private>` tables are globals, not items above: take every
+    // top-level declaration the list lacks from the text, up to its `;`.
+    let known: BTreeSet<String> = items.iter().map(|(_, i)| i.name.clone()).collect();
+    let mut offset = 0;
+    for line in src.split_inclusive('\n') {
+        if let Some(rest) = top_level_declaration(line) {
+            let name: String = rest
+                .chars()
+                .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+                .collect();
+            if !name.is_empty() && !known.contains(&name) {
+                let end = src[offset..]
+                    .find(';')
+                    .map_or(src.len(), |e| offset + e + 1);
+                let begin = leading_comment(src, offset);
+                items.push((
+                    offset,
+                    Item {
+                        name,
+                        kind: "const",
+                        file: file.name,
+                        text: src[begin..end].to_string(),
+                        uses: BTreeSet::new(),
+                    },
+                ));
+            }
+        }
+        offset += line.len();
+    }
+    // naga folds `const` references into literals inside function bodies, so the IR alone can
+    // miss a constant a function uses: also take every identifier of the item's text that names
+    // a constant or struct of this file (shipped names are unique, so a match is a use).
+    let declared: BTreeSet<String> = items
+        .iter()
+        .filter(|(_, i)| i.kind != "fn")
+        .map(|(_, i)| i.name.clone())
+        .collect();
+    for (_, item) in items.iter_mut() {
+        for ident in identifiers(&item.text) {
+            if ident != item.name && declared.contains(ident) {
+                item.uses.insert(ident.to_string());
+            }
+        }
+    }
     items.sort_by_key(|(at, _)| *at);
     Ok(items.into_iter().map(|(_, i)| i).collect())
+}
+
+/// The text after the keyword of a top-level `const`, `override`, `alias` or `var<…>` line.
+fn top_level_declaration(line: &str) -> Option<&str> {
+    for kw in ["const ", "override ", "alias "] {
+        if let Some(rest) = line.strip_prefix(kw) {
+            return Some(rest.trim_start());
+        }
+    }
+    let rest = line.strip_prefix("var")?;
+    let rest = match rest.strip_prefix('<') {
+        Some(r) => &r[r.find('>')? + 1..],
+        None => rest,
+    };
+    rest.starts_with(char::is_whitespace)
+        .then(|| rest.trim_start())
+}
+
+/// The identifier tokens of WGSL text, comments skipped.
+fn identifiers(text: &str) -> impl Iterator<Item = &str> {
+    text.lines()
+        .map(|l| l.split("//").next().unwrap_or(""))
+        .flat_map(|l| l.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')))
+        .filter(|t| t.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_'))
 }
 
 fn collect_global(

@@ -73,6 +73,111 @@ pub enum PositionChoice {
     CameraRelative,
 }
 
+/// A normal encoding of the G-buffer (see [`crate::normal`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum NormalEncoding {
+    /// x, y, z as unorm8 (Resistance 2), alpha free for the roughness.
+    Xyz8,
+    /// View-space x, y as two FP16 in RGBA8, z rebuilt (Killzone 2).
+    XyFp16,
+    /// Octahedral, 2×8 bits.
+    Oct16,
+    /// Octahedral, 2×12 bits, alpha free.
+    Oct24,
+    /// Octahedral, 2×16 bits.
+    Oct32,
+    /// Hemi-octahedral (view-space, z ≥ 0), 2×12 bits, alpha free.
+    Hemioct24,
+}
+
+impl NormalEncoding {
+    /// Every encoding.
+    pub const ALL: [NormalEncoding; 6] = [
+        Self::Xyz8,
+        Self::XyFp16,
+        Self::Oct16,
+        Self::Oct24,
+        Self::Oct32,
+        Self::Hemioct24,
+    ];
+
+    /// Whether a cheaper rounding encoder (`_fast`) exists beside the precise one.
+    pub fn has_fast_encoder(self) -> bool {
+        !matches!(self, Self::Xyz8 | Self::XyFp16)
+    }
+}
+
+/// The G-buffer's normal: an encoding (or none) and whether to use its `_fast` encoder.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub struct NormalChoice {
+    /// The encoding, or `None` for a depth-only pass.
+    pub encoding: Option<NormalEncoding>,
+    /// Use the plain rounding encoder instead of the precise (best-of-4-neighbours) one.
+    pub fast_encoder: bool,
+}
+
+/// The specular exponent (roughness) in the G-buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum RoughnessChoice {
+    /// None stored.
+    #[default]
+    None,
+    /// 8-bit log-range code (Killzone 2), in the normal target's alpha when it has one free.
+    Log8,
+}
+
+/// Which dynamic lights the light pre-pass accumulates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum Lights {
+    /// No dynamic lights.
+    #[default]
+    None,
+    /// Point lights.
+    Point,
+    /// Spot lights.
+    Spot,
+    /// Both.
+    PointAndSpot,
+}
+
+/// The specular term of each light.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum Specular {
+    /// Diffuse only.
+    #[default]
+    None,
+    /// Blinn-Phong (N·H)^n.
+    BlinnPhong,
+    /// Phong (R·V)^n.
+    Phong,
+}
+
+/// Light-buffer layout.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum LightBuffers {
+    /// One buffer: diffuse rgb + specular luminance in alpha; specular colour reconstructed
+    /// (Engel's light pre-pass).
+    #[default]
+    One,
+    /// Two buffers: diffuse rgb and specular rgb.
+    Two,
+}
+
+/// The lighting pieces a scene uses.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub struct LightingChoice {
+    /// Dynamic lights.
+    pub lights: Lights,
+    /// Their specular term.
+    pub specular: Specular,
+    /// Light-buffer layout.
+    pub buffers: LightBuffers,
+    /// God of War III aggregate vertex lights (forward, per vertex).
+    pub aggregate_vertex_lights: bool,
+    /// Stencil light volumes and depth bounds for the dynamic lights.
+    pub light_volumes: bool,
+}
+
 /// Everything a scene uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct Scene {
@@ -80,6 +185,12 @@ pub struct Scene {
     pub depth: DepthChoice,
     /// Position rebuild.
     pub position: PositionChoice,
+    /// Normal encoding.
+    pub normal: NormalChoice,
+    /// Roughness storage.
+    pub roughness: RoughnessChoice,
+    /// Lighting pieces.
+    pub lighting: LightingChoice,
 }
 
 /// A scene declaration that cannot be built, with the choices at fault.
@@ -104,9 +215,110 @@ impl std::fmt::Display for SceneError {
 
 impl std::error::Error for SceneError {}
 
+/// The normal functions a G-buffer pass (encode, through the render-target form) and a
+/// lighting pass (decode) call.
+fn normal_roots(e: NormalEncoding, fast: bool) -> [&'static str; 4] {
+    // Names are spelled out so a search for a WGSL function finds its scene choice.
+    let (enc, enc_fast, dec, enc_unorm, dec_unorm) = match e {
+        NormalEncoding::Xyz8 => (
+            "encode_normal_xyz8",
+            "encode_normal_xyz8",
+            "decode_normal_xyz8",
+            "encode_normal_xyz8_unorm",
+            "decode_normal_xyz8_unorm",
+        ),
+        NormalEncoding::XyFp16 => (
+            "encode_normal_xy_fp16",
+            "encode_normal_xy_fp16",
+            "decode_normal_xy_fp16",
+            "encode_normal_xy_fp16_unorm",
+            "decode_normal_xy_fp16_unorm",
+        ),
+        NormalEncoding::Oct16 => (
+            "encode_normal_oct16",
+            "encode_normal_oct16_fast",
+            "decode_normal_oct16",
+            "encode_normal_oct16_unorm",
+            "decode_normal_oct16_unorm",
+        ),
+        NormalEncoding::Oct24 => (
+            "encode_normal_oct24",
+            "encode_normal_oct24_fast",
+            "decode_normal_oct24",
+            "encode_normal_oct24_unorm",
+            "decode_normal_oct24_unorm",
+        ),
+        NormalEncoding::Oct32 => (
+            "encode_normal_oct32",
+            "encode_normal_oct32_fast",
+            "decode_normal_oct32",
+            "encode_normal_oct32_unorm",
+            "decode_normal_oct32_unorm",
+        ),
+        NormalEncoding::Hemioct24 => (
+            "encode_normal_hemioct24",
+            "encode_normal_hemioct24_fast",
+            "decode_normal_hemioct24",
+            "encode_normal_hemioct24_unorm",
+            "decode_normal_hemioct24_unorm",
+        ),
+    };
+    [if fast { enc_fast } else { enc }, dec, enc_unorm, dec_unorm]
+}
+
 impl Scene {
-    /// Check the combination of choices.
+    /// Check the combination of choices; the error names the conflicting fields.
     pub fn validate(&self) -> Result<(), SceneError> {
+        let bad = |fields: &[&'static str], reason: &str| {
+            Err(SceneError {
+                fields: fields.to_vec(),
+                reason: reason.to_string(),
+            })
+        };
+        let l = self.lighting;
+        let lit = l.lights != Lights::None;
+        if self.normal.fast_encoder && !self.normal.encoding.is_some_and(|e| e.has_fast_encoder()) {
+            return bad(
+                &["normal.fast_encoder", "normal.encoding"],
+                "only the octahedral encodings have a `_fast` encoder",
+            );
+        }
+        if lit && self.normal.encoding.is_none() {
+            return bad(
+                &["lighting.lights", "normal"],
+                "lights need a normal per pixel",
+            );
+        }
+        if lit && self.position == PositionChoice::None {
+            return bad(
+                &["lighting.lights", "position"],
+                "lights need each pixel's position (the light vector)",
+            );
+        }
+        if l.specular != Specular::None && !lit {
+            return bad(
+                &["lighting.specular", "lighting.lights"],
+                "specular without lights",
+            );
+        }
+        if l.specular != Specular::None && self.roughness == RoughnessChoice::None {
+            return bad(
+                &["lighting.specular", "roughness"],
+                "the specular exponent is read from the G-buffer: store a roughness",
+            );
+        }
+        if l.buffers == LightBuffers::Two && l.specular == Specular::None {
+            return bad(
+                &["lighting.buffers", "lighting.specular"],
+                "a second (specular) light buffer with no specular term",
+            );
+        }
+        if l.light_volumes && !lit {
+            return bad(
+                &["lighting.light_volumes", "lighting.lights"],
+                "light volumes without lights",
+            );
+        }
         Ok(())
     }
 
@@ -145,6 +357,66 @@ impl Scene {
                 "world_ray",
                 "camera_relative_position",
             ]),
+        }
+        if let Some(e) = self.normal.encoding {
+            r.extend(normal_roots(e, self.normal.fast_encoder));
+        }
+        if self.roughness == RoughnessChoice::Log8 {
+            r.extend(["encode_log_roughness", "decode_log_roughness"]);
+            if self.normal.encoding == Some(NormalEncoding::Xyz8) {
+                r.extend([
+                    "pack_normal_xyz8_log_roughness",
+                    "normal_xyz8_from_log_roughness_texel",
+                    "log_roughness_code_from_texel",
+                ]);
+            }
+        }
+        let l = self.lighting;
+        let (point, spot) = match l.lights {
+            Lights::None => (false, false),
+            Lights::Point => (true, false),
+            Lights::Spot => (false, true),
+            Lights::PointAndSpot => (true, true),
+        };
+        if point {
+            r.extend(["lpp_point_light", "lpp_point_attenuation"]);
+        }
+        if spot {
+            r.extend(["lpp_spot_light", "lpp_spot_attenuation"]);
+        }
+        match l.specular {
+            Specular::None => {}
+            Specular::BlinnPhong => r.push("lpp_blinn_phong_light"),
+            Specular::Phong => r.push("lpp_phong_light"),
+        }
+        if point || spot {
+            match (l.buffers, l.specular) {
+                (LightBuffers::One, Specular::None) => r.push("lpp_combine"),
+                (LightBuffers::One, _) => r.extend(["lpp_combine", "lpp_reconstruct_specular"]),
+                (LightBuffers::Two, _) => {
+                    r.extend(["lpp_combine_two_buffers", "lpp_blinn_phong_specular_rgb"])
+                }
+            }
+        }
+        if l.aggregate_vertex_lights {
+            r.extend([
+                "aggregate_light_accumulate",
+                "aggregate_light_accumulate_colour",
+                "aggregate_light_position",
+                "aggregate_light_diffuse",
+            ]);
+        }
+        if l.light_volumes {
+            if point {
+                r.push("light_volume_sphere_needs_depth_fail");
+            }
+            if spot {
+                r.push("light_volume_cone_needs_depth_fail");
+            }
+            r.push(match self.depth.storage {
+                DepthStorage::Float32 => "light_volume_sphere_depth_bounds",
+                _ => "light_volume_sphere_depth_bounds24",
+            });
         }
         Ok(r)
     }
@@ -193,12 +465,84 @@ impl Scene {
                 });
             }
         }
+        let rough = self.roughness == RoughnessChoice::Log8;
+        let alpha_free = matches!(
+            self.normal.encoding,
+            Some(NormalEncoding::Xyz8 | NormalEncoding::Oct24 | NormalEncoding::Hemioct24)
+        );
+        if let Some(e) = self.normal.encoding {
+            let a = if rough && alpha_free {
+                "a: log roughness"
+            } else if alpha_free {
+                "a: free (material)"
+            } else {
+                ""
+            };
+            let (format, channels) = match e {
+                NormalEncoding::Xyz8 => {
+                    (TargetFormat::Rgba8Unorm, format!("rgb: normal xyz8, {a}"))
+                }
+                NormalEncoding::XyFp16 => (
+                    TargetFormat::Rgba8Unorm,
+                    "rg: view-space x as f16, ba: y as f16".to_string(),
+                ),
+                NormalEncoding::Oct16 => (
+                    TargetFormat::Rg8Unorm,
+                    "rg: octahedral u, v (8 bits each)".into(),
+                ),
+                NormalEncoding::Oct24 => (
+                    TargetFormat::Rgba8Unorm,
+                    format!("rgb: octahedral u, v (12 bits each), {a}"),
+                ),
+                NormalEncoding::Oct32 => (
+                    TargetFormat::Rgba8Unorm,
+                    "rg: octahedral u, ba: v (16 bits each)".into(),
+                ),
+                NormalEncoding::Hemioct24 => (
+                    TargetFormat::Rgba8Unorm,
+                    format!("rgb: hemi-octahedral u, v (12 bits each), {a}"),
+                ),
+            };
+            targets.push(Target {
+                name: "normal",
+                format,
+                channels,
+            });
+        }
+        if rough && !alpha_free {
+            targets.push(Target {
+                name: "roughness",
+                format: TargetFormat::R8Unorm,
+                channels: "r: log roughness code".into(),
+            });
+        }
+        if self.lighting.lights != Lights::None {
+            match self.lighting.buffers {
+                LightBuffers::One => targets.push(Target {
+                    name: "light buffer",
+                    format: TargetFormat::Rgba16Float,
+                    channels: "rgb: Σ diffuse, a: Σ specular luminance".into(),
+                }),
+                LightBuffers::Two => {
+                    targets.push(Target {
+                        name: "diffuse light",
+                        format: TargetFormat::Rgba16Float,
+                        channels: "rgb: Σ diffuse".into(),
+                    });
+                    targets.push(Target {
+                        name: "specular light",
+                        format: TargetFormat::Rgba16Float,
+                        channels: "rgb: Σ specular".into(),
+                    });
+                }
+            }
+        }
         Ok(GBufferLayout { targets })
     }
 
-    /// Every scene declaration, valid or not (for exhaustive tests).
+    /// Every scene declaration, valid or not (for exhaustive tests): 119,808 of them.
     pub fn all() -> Vec<Scene> {
-        let mut v = Vec::new();
+        let mut depths = Vec::new();
         for storage in [
             DepthStorage::Float32,
             DepthStorage::Code24,
@@ -206,20 +550,66 @@ impl Scene {
         ] {
             for convention in [DepthConvention::Standard, DepthConvention::Reversed] {
                 for infinite_far in [false, true] {
-                    for position in [
-                        PositionChoice::None,
-                        PositionChoice::View,
-                        PositionChoice::World,
-                        PositionChoice::CameraRelative,
-                    ] {
-                        v.push(Scene {
-                            depth: DepthChoice {
-                                storage,
-                                convention,
-                                infinite_far,
-                            },
-                            position,
-                        });
+                    depths.push(DepthChoice {
+                        storage,
+                        convention,
+                        infinite_far,
+                    });
+                }
+            }
+        }
+        let positions = [
+            PositionChoice::None,
+            PositionChoice::View,
+            PositionChoice::World,
+            PositionChoice::CameraRelative,
+        ];
+        let mut normals = vec![NormalChoice::default()];
+        for e in NormalEncoding::ALL {
+            for fast_encoder in [false, true] {
+                normals.push(NormalChoice {
+                    encoding: Some(e),
+                    fast_encoder,
+                });
+            }
+        }
+        let mut lightings = Vec::new();
+        for lights in [
+            Lights::None,
+            Lights::Point,
+            Lights::Spot,
+            Lights::PointAndSpot,
+        ] {
+            for specular in [Specular::None, Specular::BlinnPhong, Specular::Phong] {
+                for buffers in [LightBuffers::One, LightBuffers::Two] {
+                    for aggregate_vertex_lights in [false, true] {
+                        for light_volumes in [false, true] {
+                            lightings.push(LightingChoice {
+                                lights,
+                                specular,
+                                buffers,
+                                aggregate_vertex_lights,
+                                light_volumes,
+                            });
+                        }
+                    }
+                }
+            }
+        }
+        let mut v = Vec::new();
+        for &depth in &depths {
+            for &position in &positions {
+                for &normal in &normals {
+                    for roughness in [RoughnessChoice::None, RoughnessChoice::Log8] {
+                        for &lighting in &lightings {
+                            v.push(Scene {
+                                depth,
+                                position,
+                                normal,
+                                roughness,
+                                lighting,
+                            });
+                        }
                     }
                 }
             }
