@@ -274,14 +274,16 @@ pub fn log_roughness_code_from_texel(texel: u32) -> u32 {
 }
 
 /// The worst relative round-trip error of log-range storage: half a step, `2^(L/510) − 1`
-/// with `L = log2(max_power)` (f64).
+/// with `L = log2(max_power)` (f64). NaN propagates; `max_power = 1` gives 0 and `+∞` gives
+/// `+∞`.
 pub fn quantisation_limit(max_power: f64) -> f64 {
     (max_power.log2() / 510.0).exp2() - 1.0
 }
 
 /// Exact references (f64) for this module.
 pub mod exact {
-    /// `max_power^(code/255)` in f64 (relative error ~1e-16).
+    /// `max_power^(code/255)` in f64 (relative error ~1e-16). Codes above 255 count as 255,
+    /// like the twin; a NaN `max_power` propagates.
     pub fn decode(code: u32, max_power: f64) -> f64 {
         (max_power.log2() * f64::from(code.min(255)) / 255.0).exp2()
     }
@@ -289,7 +291,8 @@ pub mod exact {
     /// The code nearest `255·log2(p)/log2(max_power)` in log range (ties upwards), clamped, for
     /// `p ≥ 1` finite and `max_power > 1`. f64 `log2` is within 1e-16 relative, which decides
     /// every `f32` power correctly except exact ties (which `log2` of a power of two returns
-    /// exactly).
+    /// exactly). Outside that domain: powers below 1 clamp to code 0, above `max_power` to
+    /// 255, and NaN gives code 0 (the float-to-integer cast).
     pub fn encode(p: f64, max_power: f64) -> u32 {
         let t = 255.0 * p.log2() / max_power.log2();
         (t + 0.5).floor().clamp(0.0, 255.0) as u32

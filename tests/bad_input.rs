@@ -48,6 +48,9 @@ fn text(v: V) -> String {
         V::Vec2(x) => list(&x),
         V::Vec3(x) => list(&x),
         V::Vec4(x) => list(&x),
+        V::UVec2(x) => format!("({:#x}, {:#x})", x[0], x[1]),
+        V::Vec3x2([p, q]) => format!("{}, {}", list(&p), list(&q)),
+        V::F64x2([p, q]) => format!("({}, {})", f64_text(p), f64_text(q)),
         V::F64(x) => f64_text(x),
         V::Text(t) => t.to_string(),
         V::OptU32(None) => "None".to_string(),
@@ -71,6 +74,16 @@ fn same(a: V, b: V) -> bool {
     match (a, b) {
         (V::F32(x), V::F32(y)) => f(x, y),
         (V::U32(x), V::U32(y)) => x == y,
+        (V::UVec2(x), V::UVec2(y)) => x == y,
+        (V::Vec3x2(x), V::Vec3x2(y)) => x
+            .iter()
+            .flatten()
+            .zip(y.iter().flatten())
+            .all(|(&p, &q)| f(p, q)),
+        (V::F64x2(x), V::F64x2(y)) => x
+            .iter()
+            .zip(&y)
+            .all(|(p, q)| p.to_bits() == q.to_bits() || (p.is_nan() && q.is_nan())),
         (V::Vec2(x), V::Vec2(y)) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
         (V::Vec3(x), V::Vec3(y)) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
         (V::Text(x), V::Text(y)) => x == y,
@@ -96,6 +109,7 @@ fn words(v: V, out: &mut Vec<u32>) {
         V::Vec2(x) => out.extend(x.map(f32::to_bits)),
         V::Vec3(x) => out.extend(x.map(f32::to_bits)),
         V::Vec4(x) => out.extend(x.map(f32::to_bits)),
+        V::UVec2(x) => out.extend(x),
         _ => panic!("{v:?} has no WGSL type"),
     }
 }
@@ -109,6 +123,7 @@ fn from_words(like: V, w: &[u32]) -> V {
         V::Vec2(_) => V::Vec2([f(0), f(1)]),
         V::Vec3(_) => V::Vec3([f(0), f(1), f(2)]),
         V::Vec4(_) => V::Vec4([f(0), f(1), f(2), f(3)]),
+        V::UVec2(_) => V::UVec2([w[0], w[1]]),
         _ => panic!("{like:?} has no WGSL type"),
     }
 }

@@ -104,6 +104,8 @@ fn light_volume_cone_needs_depth_fail(apex: vec3<f32>, axis: vec3<f32>, range_ta
 // Window depth of a view depth vz (near <= vz <= far): standard z = f(vz − n)/((f − n)·vz),
 // written (f/(f − n))·(1 − n/vz); reversed 1 − z = (n/(f − n))·(f/vz − 1); infinite far
 // (far = +Inf): 1 − n/vz and n/vz. reversed: 0 standard, anything else reversed.
+// Bad input: no guards (sphere_depth_bounds clips vz to [near, far] first): outside it the
+// formula extrapolates, NaN propagates.
 fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32 {
     let infinite = bitcast<u32>(far) == 0x7f800000u;
     if (reversed == 0u) {

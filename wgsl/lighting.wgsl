@@ -40,18 +40,24 @@ fn lpp_direction(v: vec3<f32>) -> vec3<f32> {
     return s * inverseSqrt(dot(s, s));
 }
 
-// Luminance (Rec. 709 weights) of a light-buffer colour.
+// Luminance (Rec. 709 weights) of a light-buffer colour. A plain dot product: NaN and ±Inf
+// propagate and negative channels count (callers clamp colours first).
 fn lpp_luminance(rgb: vec3<f32>) -> f32 {
     return dot(rgb, LPP_LUMINANCE);
 }
 
-// x^y for a cosine x and an exponent y >= 0: clamped to [0, 1], 0 for x <= 0 and for results
-// below 2^-126 (exp2's argument is never below -126, so no subnormal or -Inf arrives).
+// x^y for a cosine x and an exponent y >= 0: clamped to [0, 1], 0 for x <= 0 and when the
+// computed y·log2(x) is below -126 (exp2's argument is never below -126, so no subnormal or
+// -Inf arrives; a result just under 2^-126 may round up to 2^-126).
+// Bad input: x or y NaN (from their bits) → 0, no highlight; y <= 0 acts as 0 (x^0 = 1 for
+// x > 0); y = +Inf gives 0 for x < 1.
 fn lpp_pow_cosine(x: f32, y: f32) -> f32 {
-    if (!(x > 0.0)) {
+    let nan = (bitcast<u32>(x) & 0x7fffffffu) > 0x7f800000u
+        || (bitcast<u32>(y) & 0x7fffffffu) > 0x7f800000u;
+    if (nan || x <= 0.0) {
         return 0.0;
     }
-    if (x >= 1.0 || y == 0.0) {
+    if (x >= 1.0 || y <= 0.0) {
         return 1.0;
     }
     let t = y * log2(x);

@@ -47,19 +47,26 @@ pub fn direction(v: Vec3) -> Vec3 {
     s * (1.0 / s.dot(s).sqrt())
 }
 
-/// Luminance `0.2126 r + 0.7152 g + 0.0722 b`.
+/// Luminance `0.2126 r + 0.7152 g + 0.0722 b` (a dot product: error within 3 ULP of the
+/// exact sum for non-negative channels, products and sums each correctly rounded or fused).
+///
+/// **Bad input:** none is guarded: NaN and `±∞` propagate as IEEE arithmetic does and
+/// negative channels count (callers clamp colours with [`clamp_colour`] first).
 pub fn luminance(rgb: Vec3) -> f32 {
     rgb.dot(LUMINANCE)
 }
 
 /// `x^y` for a cosine `x` and exponent `y ≥ 0`, computed as `exp2(y·log2 x)`: 0 for `x ≤ 0`
-/// (NaN included) or when `y·log2 x < −126`; 1 for `x ≥ 1` or `y = 0`. Error: WGSL's
+/// or when `y·log2 x < −126`; 1 for `x ≥ 1` or `y = 0`. Error: WGSL's
 /// `log2`/`exp2` allowances, `≤ (3 + 2|t|)·2^-23 + ln2·Δt` relative with `t = y·log2 x`.
+///
+/// **Bad input:** `x` or `y` NaN → 0 (no highlight); `y ≤ 0` acts as 0 (1 for `x > 0`);
+/// `y = +∞` gives 0 for `x < 1`; `x = +∞` gives 1.
 pub fn pow_cosine(x: f32, y: f32) -> f32 {
-    if x.is_nan() || x <= 0.0 {
+    if x.is_nan() || y.is_nan() || x <= 0.0 {
         return 0.0;
     }
-    if x >= 1.0 || y == 0.0 {
+    if x >= 1.0 || y <= 0.0 {
         return 1.0;
     }
     let t = y * x.log2();
@@ -265,7 +272,7 @@ pub fn combine_two_buffers(albedo: Vec3, gloss: Vec3, diffuse: Vec3, specular: V
 
 /// Exact references in f64.
 pub mod exact {
-    /// Unit vector in f64 (zero for a zero vector).
+    /// Unit vector in f64 (zero for a zero vector; NaN propagates to every component).
     pub fn unit(v: [f64; 3]) -> [f64; 3] {
         let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
         if l == 0.0 { [0.0; 3] } else { v.map(|x| x / l) }

@@ -152,6 +152,12 @@ pub fn cone_needs_depth_fail(
 }
 
 /// Window depth of view depth `vz` (see the module docs for the forms); `far = +∞` allowed.
+/// Error: within `8u·(1 + f/(f − n))` of the exact value (module docs).
+///
+/// **Bad input:** no guards (it serves [`sphere_depth_bounds`], which clips `vz` to
+/// `[near, far]` first): outside that interval the formula extrapolates (`vz = +∞` gives
+/// `f/(f − n)` standard, 1 and 0 for infinite far), and NaN propagates. The WGSL's
+/// `reversed` argument is 0 for standard and anything else for reversed.
 pub fn window_depth(vz: f32, near: f32, far: f32, convention: DepthConvention) -> f32 {
     let infinite = far == f32::INFINITY;
     match (convention, infinite) {
@@ -233,7 +239,7 @@ pub fn sphere_depth_bounds24(
 pub mod exact {
     use super::DepthConvention;
 
-    /// Window depth in f64.
+    /// Window depth in f64 (no guards, like the twin: NaN propagates).
     pub fn window_depth(vz: f64, near: f64, far: f64, convention: DepthConvention) -> f64 {
         let z = if far.is_infinite() {
             1.0 - near / vz

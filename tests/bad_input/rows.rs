@@ -9,11 +9,15 @@
 
 use glam::Vec3;
 use prepass::depth;
+use prepass::lighting::aggregate as agg;
+use prepass::lighting::prepass as lpp;
+use prepass::lighting::volumes as vol;
 use prepass::linear_depth as ld;
 use prepass::position as pos;
 use prepass::precision::inputs::{self, ChannelError};
 use prepass::precision::metrics;
 use prepass::projection::{DepthConvention, Projection};
+use prepass::roughness as rough;
 
 /// A value in the table: an argument or a result.
 #[derive(Clone, Copy, Debug)]
@@ -23,6 +27,12 @@ pub enum V {
     Vec2([f32; 2]),
     Vec3([f32; 3]),
     Vec4([f32; 4]),
+    /// A `vec2<u32>`.
+    UVec2([u32; 2]),
+    /// Two `f32` 3-vectors (a Rust-only pair result).
+    Vec3x2([[f32; 3]; 2]),
+    /// Two `f64` (a Rust-only pair result).
+    F64x2([f64; 2]),
     F64(f64),
     OptU32(Option<u32>),
     // Rust-only argument and result types (the precision metrics and inputs).
@@ -85,6 +95,12 @@ impl V {
             v => panic!("{v:?} is not a vec2"),
         }
     }
+    pub fn vec4(self) -> glam::Vec4 {
+        match self {
+            V::Vec4(x) => glam::Vec4::from(x),
+            v => panic!("{v:?} is not a vec4"),
+        }
+    }
     pub fn vec3(self) -> Vec3 {
         match self {
             V::Vec3(x) => Vec3::from(x),
@@ -127,6 +143,32 @@ fn projection_new(a: &[V]) -> V {
 /// WGSL's builtin `unpack4x8unorm` (twin: `depth::unpack4x8unorm`) behind a callable name.
 const UNPACK_WGSL: &str =
     "fn bad_input_unpack4x8unorm(p: u32) -> vec4<f32> { return unpack4x8unorm(p); }";
+
+/// `roughness::range` as the WGSL's `log_roughness_range_log2` answers it: 0 degenerate, `L`
+/// for `2^L`, `0xffffffff` for a general range.
+fn range_code(r: rough::Range) -> u32 {
+    match r {
+        rough::Range::Degenerate => 0,
+        rough::Range::PowerOfTwo(l) => l,
+        rough::Range::General(_) => u32::MAX,
+    }
+}
+
+/// The light-volume WGSL's convention argument: 0 standard, anything else reversed.
+fn convention(code: u32) -> vol::DepthConvention {
+    if code == 0 {
+        vol::DepthConvention::Standard
+    } else {
+        vol::DepthConvention::Reversed
+    }
+}
+
+/// `lpp_cosines` takes a `bool`, which the harness cannot feed: a wrapper takes it as a `u32`.
+const LPP_COSINES_WGSL: &str = concat!(
+    include_str!("../../wgsl/lighting.wgsl"),
+    "\nfn bad_input_lpp_cosines(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, phong: u32) -> vec2<f32> {\n",
+    "    return lpp_cosines(normal, to_eye, to_light, phong != 0u);\n}\n"
+);
 
 pub const FUNCS: &[Func] = &[
     Func {
@@ -338,6 +380,395 @@ pub const FUNCS: &[Func] = &[
         wgsl: Some((prepass::wgsl::POSITION, "world_position")),
         twin: |a| V::Vec3(pos::world_position(a[0].vec3(), a[1].f32(), a[2].vec3()).to_array()),
     },
+    Func {
+        name: "roughness::range",
+        wgsl: Some((prepass::wgsl::ROUGHNESS, "log_roughness_range_log2")),
+        twin: |a| V::U32(range_code(rough::range(a[0].f32()))),
+    },
+    Func {
+        name: "roughness::encode_log_roughness",
+        wgsl: Some((prepass::wgsl::ROUGHNESS, "encode_log_roughness")),
+        twin: |a| V::U32(rough::encode_log_roughness(a[0].f32(), a[1].f32())),
+    },
+    Func {
+        name: "roughness::decode_log_roughness",
+        wgsl: Some((prepass::wgsl::ROUGHNESS, "decode_log_roughness")),
+        twin: |a| V::F32(rough::decode_log_roughness(a[0].u32(), a[1].f32())),
+    },
+    Func {
+        name: "roughness::pack_normal_xyz8_log_roughness",
+        wgsl: Some((prepass::wgsl::ROUGHNESS, "pack_normal_xyz8_log_roughness")),
+        twin: |a| {
+            V::U32(rough::pack_normal_xyz8_log_roughness(
+                a[0].u32(),
+                a[1].u32(),
+            ))
+        },
+    },
+    Func {
+        name: "roughness::normal_xyz8_from_log_roughness_texel",
+        wgsl: Some((
+            prepass::wgsl::ROUGHNESS,
+            "normal_xyz8_from_log_roughness_texel",
+        )),
+        twin: |a| V::U32(rough::normal_xyz8_from_log_roughness_texel(a[0].u32())),
+    },
+    Func {
+        name: "roughness::log_roughness_code_from_texel",
+        wgsl: Some((prepass::wgsl::ROUGHNESS, "log_roughness_code_from_texel")),
+        twin: |a| V::U32(rough::log_roughness_code_from_texel(a[0].u32())),
+    },
+    Func {
+        name: "roughness::quantisation_limit",
+        wgsl: None,
+        twin: |a| V::F64(rough::quantisation_limit(a[0].f64())),
+    },
+    Func {
+        name: "roughness::exact::decode",
+        wgsl: None,
+        twin: |a| V::F64(rough::exact::decode(a[0].u32(), a[1].f64())),
+    },
+    Func {
+        name: "roughness::exact::encode",
+        wgsl: None,
+        twin: |a| V::U32(rough::exact::encode(a[0].f64(), a[1].f64())),
+    },
+    Func {
+        name: "lighting::prepass::direction",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_direction")),
+        twin: |a| V::Vec3(lpp::direction(a[0].vec3()).to_array()),
+    },
+    Func {
+        name: "lighting::prepass::luminance",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_luminance")),
+        twin: |a| V::F32(lpp::luminance(a[0].vec3())),
+    },
+    Func {
+        name: "lighting::prepass::pow_cosine",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_pow_cosine")),
+        twin: |a| V::F32(lpp::pow_cosine(a[0].f32(), a[1].f32())),
+    },
+    Func {
+        name: "lighting::prepass::point_attenuation",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_point_attenuation")),
+        twin: |a| V::F32(lpp::point_attenuation(a[0].f32(), a[1].f32())),
+    },
+    Func {
+        name: "lighting::prepass::spot_attenuation",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_spot_attenuation")),
+        twin: |a| V::F32(lpp::spot_attenuation(a[0].f32(), a[1].f32(), a[2].f32())),
+    },
+    Func {
+        name: "lighting::prepass::cosines",
+        wgsl: Some((LPP_COSINES_WGSL, "bad_input_lpp_cosines")),
+        twin: |a| {
+            let (d, s) = lpp::cosines(a[0].vec3(), a[1].vec3(), a[2].vec3(), a[3].u32() != 0);
+            V::Vec2([d, s])
+        },
+    },
+    Func {
+        name: "lighting::prepass::blinn_phong_light",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_blinn_phong_light")),
+        twin: |a| {
+            V::Vec4(
+                lpp::blinn_phong_light(
+                    a[0].vec3(),
+                    a[1].vec3(),
+                    a[2].vec3(),
+                    a[3].vec3(),
+                    a[4].f32(),
+                    a[5].f32(),
+                )
+                .to_array(),
+            )
+        },
+    },
+    Func {
+        name: "lighting::prepass::phong_light",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_phong_light")),
+        twin: |a| {
+            V::Vec4(
+                lpp::phong_light(
+                    a[0].vec3(),
+                    a[1].vec3(),
+                    a[2].vec3(),
+                    a[3].vec3(),
+                    a[4].f32(),
+                    a[5].f32(),
+                )
+                .to_array(),
+            )
+        },
+    },
+    Func {
+        name: "lighting::prepass::point_light",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_point_light")),
+        twin: |a| {
+            V::Vec4(
+                lpp::point_light(
+                    a[0].vec3(),
+                    a[1].vec3(),
+                    a[2].vec3(),
+                    a[3].vec4(),
+                    a[4].f32(),
+                )
+                .to_array(),
+            )
+        },
+    },
+    Func {
+        name: "lighting::prepass::spot_light",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_spot_light")),
+        twin: |a| {
+            V::Vec4(
+                lpp::spot_light(
+                    a[0].vec3(),
+                    a[1].vec3(),
+                    a[2].vec3(),
+                    a[3].vec4(),
+                    a[4].vec4(),
+                    a[5].f32(),
+                    a[6].f32(),
+                )
+                .to_array(),
+            )
+        },
+    },
+    Func {
+        name: "lighting::prepass::blinn_phong_specular_rgb",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_blinn_phong_specular_rgb")),
+        twin: |a| {
+            V::Vec3(
+                lpp::blinn_phong_specular_rgb(
+                    a[0].vec3(),
+                    a[1].vec3(),
+                    a[2].vec3(),
+                    a[3].vec3(),
+                    a[4].f32(),
+                    a[5].f32(),
+                )
+                .to_array(),
+            )
+        },
+    },
+    Func {
+        name: "lighting::prepass::reconstruct_specular",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_reconstruct_specular")),
+        twin: |a| V::F32(lpp::reconstruct_specular(a[0].vec4(), a[1].f32())),
+    },
+    Func {
+        name: "lighting::prepass::combine",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_combine")),
+        twin: |a| {
+            V::Vec3(lpp::combine(a[0].vec3(), a[1].vec3(), a[2].vec4(), a[3].f32()).to_array())
+        },
+    },
+    Func {
+        name: "lighting::prepass::combine_two_buffers",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_combine_two_buffers")),
+        twin: |a| {
+            V::Vec3(
+                lpp::combine_two_buffers(a[0].vec3(), a[1].vec3(), a[2].vec3(), a[3].vec3())
+                    .to_array(),
+            )
+        },
+    },
+    Func {
+        name: "lighting::prepass::clamp_colour",
+        wgsl: Some((prepass::wgsl::LIGHTING, "lpp_clamp_colour")),
+        twin: |a| V::Vec3(lpp::clamp_colour(a[0].vec3()).to_array()),
+    },
+    Func {
+        name: "lighting::prepass::exact::unit",
+        wgsl: None,
+        twin: |a| V::F64x3(lpp::exact::unit(a[0].f64x3())),
+    },
+    Func {
+        name: "lighting::aggregate::accumulate",
+        wgsl: Some((
+            prepass::wgsl::AGGREGATE_LIGHTS,
+            "aggregate_light_accumulate",
+        )),
+        twin: |a| {
+            V::Vec4(agg::accumulate(a[0].vec4(), a[1].vec3(), a[2].vec3(), a[3].f32()).to_array())
+        },
+    },
+    Func {
+        name: "lighting::aggregate::direction",
+        wgsl: Some((prepass::wgsl::AGGREGATE_LIGHTS, "aggregate_light_direction")),
+        twin: |a| V::Vec3(agg::direction(a[0].vec4()).to_array()),
+    },
+    Func {
+        name: "lighting::aggregate::position",
+        wgsl: Some((prepass::wgsl::AGGREGATE_LIGHTS, "aggregate_light_position")),
+        twin: |a| V::Vec3(agg::position(a[0].vec4(), a[1].vec3()).to_array()),
+    },
+    Func {
+        name: "lighting::aggregate::accumulate_colour",
+        wgsl: Some((
+            prepass::wgsl::AGGREGATE_LIGHTS,
+            "aggregate_light_accumulate_colour",
+        )),
+        twin: |a| {
+            V::Vec3(
+                agg::accumulate_colour(
+                    a[0].vec3(),
+                    a[1].vec3(),
+                    a[2].vec3(),
+                    a[3].vec3(),
+                    a[4].vec3(),
+                )
+                .to_array(),
+            )
+        },
+    },
+    Func {
+        name: "lighting::aggregate::diffuse",
+        wgsl: Some((prepass::wgsl::AGGREGATE_LIGHTS, "aggregate_light_diffuse")),
+        twin: |a| {
+            V::Vec3(agg::diffuse(a[0].vec3(), a[1].vec3(), a[2].vec3(), a[3].vec3()).to_array())
+        },
+    },
+    Func {
+        name: "lighting::prepass::exact::cosines",
+        wgsl: None,
+        twin: |a| {
+            let (d, s) = lpp::exact::cosines(a[0].f64x3(), a[1].f64x3(), a[2].f64x3());
+            V::F64x2([d, s])
+        },
+    },
+    Func {
+        name: "lighting::prepass::exact::multi_light_specular",
+        wgsl: None,
+        twin: |a| {
+            // Arguments: normal, to_eye, material power, then (to_light, lum, att, n) per light.
+            let lights: Vec<lpp::exact::Light> = a[3..]
+                .chunks(4)
+                .map(|l| (l[0].f64x3(), l[1].f64(), l[2].f64(), l[3].f64()))
+                .collect();
+            V::F64(lpp::exact::multi_light_specular(
+                a[0].f64x3(),
+                a[1].f64x3(),
+                &lights,
+                a[2].f64(),
+            ))
+        },
+    },
+    Func {
+        name: "lighting::aggregate::aggregate",
+        wgsl: None,
+        twin: |a| {
+            // Arguments: the vertex, then (position, weight, colour) per light.
+            let lights: Vec<(Vec3, f32, Vec3)> = a[1..]
+                .chunks(3)
+                .map(|l| (l[0].vec3(), l[1].f32(), l[2].vec3()))
+                .collect();
+            let (p, c) = agg::aggregate(a[0].vec3(), &lights);
+            V::Vec3x2([p.to_array(), c.to_array()])
+        },
+    },
+    Func {
+        name: "lighting::volumes::near_corner_distance",
+        wgsl: Some((
+            prepass::wgsl::LIGHT_VOLUMES,
+            "light_volume_near_corner_distance",
+        )),
+        twin: |a| {
+            V::F32(vol::near_corner_distance(
+                a[0].f32(),
+                a[1].f32(),
+                a[2].f32(),
+            ))
+        },
+    },
+    Func {
+        name: "lighting::volumes::sphere_needs_depth_fail",
+        wgsl: Some((
+            prepass::wgsl::LIGHT_VOLUMES,
+            "light_volume_sphere_needs_depth_fail",
+        )),
+        twin: |a| {
+            V::U32(vol::sphere_needs_depth_fail(
+                a[0].vec3(),
+                a[1].f32(),
+                a[2].f32(),
+            ))
+        },
+    },
+    Func {
+        name: "lighting::volumes::cone_needs_depth_fail",
+        wgsl: Some((
+            prepass::wgsl::LIGHT_VOLUMES,
+            "light_volume_cone_needs_depth_fail",
+        )),
+        twin: |a| {
+            V::U32(vol::cone_needs_depth_fail(
+                a[0].vec3(),
+                a[1].vec3(),
+                a[2].vec2(),
+                a[3].f32(),
+            ))
+        },
+    },
+    Func {
+        name: "lighting::volumes::window_depth",
+        wgsl: Some((prepass::wgsl::LIGHT_VOLUMES, "light_volume_window_depth")),
+        twin: |a| {
+            V::F32(vol::window_depth(
+                a[0].f32(),
+                a[1].f32(),
+                a[2].f32(),
+                convention(a[3].u32()),
+            ))
+        },
+    },
+    Func {
+        name: "lighting::volumes::sphere_depth_bounds",
+        wgsl: Some((
+            prepass::wgsl::LIGHT_VOLUMES,
+            "light_volume_sphere_depth_bounds",
+        )),
+        twin: |a| {
+            V::Vec2(
+                vol::sphere_depth_bounds(
+                    a[0].f32(),
+                    a[1].f32(),
+                    a[2].f32(),
+                    a[3].f32(),
+                    convention(a[4].u32()),
+                )
+                .to_array(),
+            )
+        },
+    },
+    Func {
+        name: "lighting::volumes::sphere_depth_bounds24",
+        wgsl: Some((
+            prepass::wgsl::LIGHT_VOLUMES,
+            "light_volume_sphere_depth_bounds24",
+        )),
+        twin: |a| {
+            V::UVec2(vol::sphere_depth_bounds24(
+                a[0].f32(),
+                a[1].f32(),
+                a[2].f32(),
+                a[3].f32(),
+                convention(a[4].u32()),
+            ))
+        },
+    },
+    Func {
+        name: "lighting::volumes::exact::window_depth",
+        wgsl: None,
+        twin: |a| {
+            V::F64(vol::exact::window_depth(
+                a[0].f64(),
+                a[1].f64(),
+                a[2].f64(),
+                convention(a[3].u32()),
+            ))
+        },
+    },
 ];
 
 /// WGSL functions in `wgsl/` that are not public API (private helpers a file needs), exempt
@@ -367,6 +798,38 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
         "ld_divide_or_inf",
         "private to linear_depth.wgsl: n/s, +Inf at s = 0 (far-plane rows)",
     ),
+    (
+        "log_roughness_boundary_bits",
+        "private to roughness.wgsl: table lookup of a code boundary, exercised by the encode rows",
+    ),
+    (
+        "lpp_finite",
+        "private to lighting.wgsl: finiteness test on bits, exercised by every NaN/Inf row",
+    ),
+    (
+        "lpp_finite3",
+        "private to lighting.wgsl: finiteness test on bits, exercised by every NaN/Inf row",
+    ),
+    (
+        "lpp_light",
+        "private to lighting.wgsl: the body of lpp_blinn_phong_light and lpp_phong_light",
+    ),
+    (
+        "aggregate_light_finite3",
+        "private to aggregate_lights.wgsl: finiteness test on bits, exercised by the NaN/Inf rows",
+    ),
+    (
+        "aggregate_light_unit",
+        "private to aggregate_lights.wgsl: the guarded normalise behind aggregate_light_direction",
+    ),
+    (
+        "light_volume_finite",
+        "private to light_volumes.wgsl: finiteness test on bits, exercised by the NaN/Inf rows",
+    ),
+    (
+        "light_volume_finite3",
+        "private to light_volumes.wgsl: finiteness test on bits, exercised by the NaN/Inf rows",
+    ),
 ];
 
 /// One documented answer.
@@ -390,6 +853,8 @@ const NEG_NAN: f32 = f32::from_bits(0xffc0_0000);
 const SUB_MIN: f32 = f32::from_bits(1);
 const SUB_MAX: f32 = f32::from_bits(0x007f_ffff);
 const MAX24: u32 = depth::DEPTH24_MAX;
+/// The unit z axis: a valid normal, eye and light direction whose cosines are exactly 1.
+const ZN: [f32; 3] = [0.0, 0.0, 1.0];
 
 #[rustfmt::skip]
 pub const ROWS: &[Row] = &[
@@ -504,4 +969,231 @@ pub const ROWS: &[Row] = &[
     Row { func: "precision::inputs::unorm8_channel", case: "pushed below 0", args: &[V::U32(0), V::Channel(ChannelError::Ulps(3)), V::Bool(true)], expect: V::F32(-4e-45), why: "3 ULP below +0: negative subnormal" },
     Row { func: "precision::inputs::unorm8_channel", case: "NaN offset", args: &[V::U32(7), V::Channel(ChannelError::Offset(f64::NAN)), V::Bool(false)], expect: V::F32(NAN), why: "propagates" },
     Row { func: "precision::inputs::rgb8_channels", case: "out-of-range code u32::MAX", args: &[V::U32(u32::MAX), V::Channel(ChannelError::Exact), V::Bool(false)], expect: V::Vec3([1.0, 1.0, 1.0]), why: "saturates to 2^24 − 1" },
+    // Log roughness (max_power 8192 = 2^13 unless stated; power-of-two ranges are exact tables).
+    Row { func: "roughness::range", case: "NaN", args: &[V::F32(NAN)], expect: V::U32(0), why: "degenerate: only power 1" },
+    Row { func: "roughness::range", case: "≤ 1 (1.0)", args: &[V::F32(1.0)], expect: V::U32(0), why: "degenerate: only power 1" },
+    Row { func: "roughness::range", case: "negative", args: &[V::F32(-8.0)], expect: V::U32(0), why: "degenerate" },
+    Row { func: "roughness::range", case: "subnormal", args: &[V::F32(SUB_MAX)], expect: V::U32(0), why: "degenerate (≤ 1)" },
+    Row { func: "roughness::range", case: "+Inf", args: &[V::F32(INF)], expect: V::U32(127), why: "acts as 2^127" },
+    Row { func: "roughness::range", case: "out of range: above 2^127", args: &[V::F32(f32::MAX)], expect: V::U32(127), why: "acts as 2^127" },
+    Row { func: "roughness::range", case: "not a power of two", args: &[V::F32(1000.0)], expect: V::U32(u32::MAX), why: "general range (log2/exp2)" },
+    Row { func: "roughness::encode_log_roughness", case: "NaN power", args: &[V::F32(NAN), V::F32(8192.0)], expect: V::U32(0), why: "code 0" },
+    Row { func: "roughness::encode_log_roughness", case: "−NaN power, general range", args: &[V::F32(NEG_NAN), V::F32(1000.0)], expect: V::U32(0), why: "code 0" },
+    Row { func: "roughness::encode_log_roughness", case: "+Inf power", args: &[V::F32(INF), V::F32(8192.0)], expect: V::U32(255), why: "≥ max_power → 255" },
+    Row { func: "roughness::encode_log_roughness", case: "+Inf power, general range", args: &[V::F32(INF), V::F32(1000.0)], expect: V::U32(255), why: "≥ max_power → 255" },
+    Row { func: "roughness::encode_log_roughness", case: "−Inf power", args: &[V::F32(-INF), V::F32(8192.0)], expect: V::U32(0), why: "negative → 0" },
+    Row { func: "roughness::encode_log_roughness", case: "negative power", args: &[V::F32(-100.0), V::F32(8192.0)], expect: V::U32(0), why: "negative → 0" },
+    Row { func: "roughness::encode_log_roughness", case: "subnormal power", args: &[V::F32(SUB_MAX), V::F32(8192.0)], expect: V::U32(0), why: "≤ 1 → 0" },
+    Row { func: "roughness::encode_log_roughness", case: "zero power (−0.0)", args: &[V::F32(-0.0), V::F32(8192.0)], expect: V::U32(0), why: "≤ 1 → 0" },
+    Row { func: "roughness::encode_log_roughness", case: "out of range: power above max", args: &[V::F32(1e9), V::F32(8192.0)], expect: V::U32(255), why: "≥ max_power → 255" },
+    Row { func: "roughness::encode_log_roughness", case: "out of range: f32::MAX, max_power +Inf", args: &[V::F32(f32::MAX), V::F32(INF)], expect: V::U32(255), why: "max_power acts as 2^127" },
+    Row { func: "roughness::encode_log_roughness", case: "NaN max_power", args: &[V::F32(100.0), V::F32(NAN)], expect: V::U32(0), why: "degenerate range → 0" },
+    Row { func: "roughness::encode_log_roughness", case: "out of range: max_power ≤ 1", args: &[V::F32(100.0), V::F32(0.5)], expect: V::U32(0), why: "degenerate range → 0" },
+    Row { func: "roughness::decode_log_roughness", case: "out-of-range code 256", args: &[V::U32(256), V::F32(8192.0)], expect: V::F32(8192.0), why: "decodes as 255" },
+    Row { func: "roughness::decode_log_roughness", case: "out-of-range code, general range", args: &[V::U32(u32::MAX), V::F32(1000.0)], expect: V::F32(1000.0), why: "decodes as 255 = max_power" },
+    Row { func: "roughness::decode_log_roughness", case: "NaN max_power", args: &[V::U32(200), V::F32(NAN)], expect: V::F32(1.0), why: "degenerate range → 1" },
+    Row { func: "roughness::decode_log_roughness", case: "−Inf max_power", args: &[V::U32(200), V::F32(-INF)], expect: V::F32(1.0), why: "degenerate range → 1" },
+    Row { func: "roughness::decode_log_roughness", case: "subnormal max_power", args: &[V::U32(255), V::F32(SUB_MIN)], expect: V::F32(1.0), why: "degenerate range → 1" },
+    Row { func: "roughness::decode_log_roughness", case: "+Inf max_power", args: &[V::U32(255), V::F32(INF)], expect: V::F32(1.7014118e38), why: "acts as 2^127" },
+    Row { func: "roughness::pack_normal_xyz8_log_roughness", case: "out-of-range code, byte 3 set", args: &[V::U32(0xff12_3456), V::U32(999)], expect: V::U32(0xff12_3456), why: "byte 3 replaced; code saturates to 255" },
+    Row { func: "roughness::pack_normal_xyz8_log_roughness", case: "out-of-range code u32::MAX", args: &[V::U32(0x0000_0080), V::U32(u32::MAX)], expect: V::U32(0xff00_0080), why: "code saturates to 255" },
+    Row { func: "roughness::normal_xyz8_from_log_roughness_texel", case: "all ones", args: &[V::U32(u32::MAX)], expect: V::U32(0x00ff_ffff), why: "byte 3 dropped" },
+    Row { func: "roughness::log_roughness_code_from_texel", case: "all ones", args: &[V::U32(u32::MAX)], expect: V::U32(255), why: "every texel holds a valid code" },
+    Row { func: "roughness::quantisation_limit", case: "NaN", args: &[V::F64(f64::NAN)], expect: V::F64(f64::NAN), why: "propagates" },
+    Row { func: "roughness::quantisation_limit", case: "max_power 1", args: &[V::F64(1.0)], expect: V::F64(0.0), why: "one code: no step" },
+    Row { func: "roughness::quantisation_limit", case: "+Inf", args: &[V::F64(f64::INFINITY)], expect: V::F64(f64::INFINITY), why: "unbounded step" },
+    Row { func: "roughness::exact::decode", case: "out-of-range code", args: &[V::U32(300), V::F64(8192.0)], expect: V::F64(8192.0), why: "decodes as 255, like the twin" },
+    Row { func: "roughness::exact::decode", case: "NaN max_power", args: &[V::U32(10), V::F64(f64::NAN)], expect: V::F64(f64::NAN), why: "propagates (reference only)" },
+    Row { func: "roughness::exact::encode", case: "NaN power", args: &[V::F64(f64::NAN), V::F64(8192.0)], expect: V::U32(0), why: "NaN casts to code 0" },
+    Row { func: "roughness::exact::encode", case: "+Inf power", args: &[V::F64(f64::INFINITY), V::F64(8192.0)], expect: V::U32(255), why: "clamped to 255" },
+    Row { func: "roughness::exact::encode", case: "out of range: power below 1", args: &[V::F64(0.25), V::F64(8192.0)], expect: V::U32(0), why: "clamped to 0" },
+    // Light pre-pass (unit vectors along z unless stated: every expected value below is exact).
+    Row { func: "lighting::prepass::direction", case: "NaN", args: &[V::Vec3([NAN, 0.0, 1.0])], expect: V::Vec3([0.0; 3]), why: "zero direction" },
+    Row { func: "lighting::prepass::direction", case: "+Inf", args: &[V::Vec3([INF, 0.0, 0.0])], expect: V::Vec3([0.0; 3]), why: "zero direction" },
+    Row { func: "lighting::prepass::direction", case: "zero vector", args: &[V::Vec3([0.0; 3])], expect: V::Vec3([0.0; 3]), why: "zero direction" },
+    Row { func: "lighting::prepass::direction", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0; 3])], expect: V::Vec3([0.0; 3]), why: "zero direction" },
+    Row { func: "lighting::prepass::direction", case: "subnormal", args: &[V::Vec3([SUB_MAX, -SUB_MIN, 0.0])], expect: V::Vec3([0.0; 3]), why: "largest component subnormal → zero" },
+    Row { func: "lighting::prepass::direction", case: "huge (|v|² would overflow)", args: &[V::Vec3([-f32::MAX, 0.0, 0.0])], expect: V::Vec3([-1.0, 0.0, 0.0]), why: "scaled by the largest component first" },
+    Row { func: "lighting::prepass::luminance", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::F32(NAN), why: "plain dot: propagates" },
+    Row { func: "lighting::prepass::luminance", case: "+Inf", args: &[V::Vec3([INF, 0.0, 0.0])], expect: V::F32(INF), why: "plain dot: propagates" },
+    Row { func: "lighting::prepass::luminance", case: "+Inf − Inf", args: &[V::Vec3([INF, -INF, 0.0])], expect: V::F32(NAN), why: "∞ − ∞" },
+    Row { func: "lighting::prepass::luminance", case: "negative channel", args: &[V::Vec3([-1.0, 0.0, 0.0])], expect: V::F32(-0.2126), why: "not clamped (callers clamp colours first)" },
+    Row { func: "lighting::prepass::pow_cosine", case: "NaN cosine", args: &[V::F32(NAN), V::F32(8.0)], expect: V::F32(0.0), why: "x ≤ 0 or NaN → 0" },
+    Row { func: "lighting::prepass::pow_cosine", case: "N·H > 1", args: &[V::F32(1.5), V::F32(8.0)], expect: V::F32(1.0), why: "x ≥ 1 → 1" },
+    Row { func: "lighting::prepass::pow_cosine", case: "+Inf cosine", args: &[V::F32(INF), V::F32(8.0)], expect: V::F32(1.0), why: "x ≥ 1 → 1" },
+    Row { func: "lighting::prepass::pow_cosine", case: "−Inf cosine", args: &[V::F32(-INF), V::F32(8.0)], expect: V::F32(0.0), why: "x ≤ 0 → 0" },
+    Row { func: "lighting::prepass::pow_cosine", case: "zero cosine, zero power", args: &[V::F32(0.0), V::F32(0.0)], expect: V::F32(0.0), why: "0^y = 0, even for y = 0" },
+    Row { func: "lighting::prepass::pow_cosine", case: "zero power", args: &[V::F32(0.5), V::F32(0.0)], expect: V::F32(1.0), why: "x^0 = 1 for x > 0" },
+    Row { func: "lighting::prepass::pow_cosine", case: "subnormal cosine", args: &[V::F32(SUB_MIN), V::F32(1.0)], expect: V::F32(0.0), why: "below 2^-126 → 0, flushed or not" },
+    Row { func: "lighting::prepass::pow_cosine", case: "NaN power", args: &[V::F32(0.5), V::F32(NAN)], expect: V::F32(0.0), why: "no highlight" },
+    Row { func: "lighting::prepass::pow_cosine", case: "+Inf power", args: &[V::F32(0.5), V::F32(INF)], expect: V::F32(0.0), why: "x^∞ = 0 for x < 1" },
+    Row { func: "lighting::prepass::pow_cosine", case: "negative power", args: &[V::F32(0.5), V::F32(-3.0)], expect: V::F32(1.0), why: "acts as power 0" },
+    Row { func: "lighting::prepass::point_attenuation", case: "NaN distance", args: &[V::F32(NAN), V::F32(2.0)], expect: V::F32(0.0), why: "no light" },
+    Row { func: "lighting::prepass::point_attenuation", case: "+Inf distance", args: &[V::F32(INF), V::F32(2.0)], expect: V::F32(0.0), why: "no light" },
+    Row { func: "lighting::prepass::point_attenuation", case: "+Inf radius", args: &[V::F32(1.0), V::F32(INF)], expect: V::F32(0.0), why: "no light" },
+    Row { func: "lighting::prepass::point_attenuation", case: "zero radius", args: &[V::F32(0.0), V::F32(0.0)], expect: V::F32(0.0), why: "r ≤ 0 → 0" },
+    Row { func: "lighting::prepass::point_attenuation", case: "negative radius", args: &[V::F32(0.0), V::F32(-2.0)], expect: V::F32(0.0), why: "r ≤ 0 → 0" },
+    Row { func: "lighting::prepass::point_attenuation", case: "subnormal radius", args: &[V::F32(1.0), V::F32(SUB_MAX)], expect: V::F32(0.0), why: "beyond the radius, flushed or not" },
+    Row { func: "lighting::prepass::point_attenuation", case: "negative distance", args: &[V::F32(-1.0), V::F32(2.0)], expect: V::F32(1.0), why: "counts as 0: full light" },
+    Row { func: "lighting::prepass::point_attenuation", case: "out of range: beyond the radius", args: &[V::F32(3.0), V::F32(2.0)], expect: V::F32(0.0), why: "windowed to 0" },
+    Row { func: "lighting::prepass::spot_attenuation", case: "NaN", args: &[V::F32(NAN), V::F32(0.5), V::F32(0.9)], expect: V::F32(0.0), why: "no light" },
+    Row { func: "lighting::prepass::spot_attenuation", case: "+Inf cos_inner", args: &[V::F32(1.0), V::F32(0.5), V::F32(INF)], expect: V::F32(0.0), why: "no light" },
+    Row { func: "lighting::prepass::spot_attenuation", case: "cos_inner = cos_outer, inside", args: &[V::F32(0.5), V::F32(0.5), V::F32(0.5)], expect: V::F32(1.0), why: "hard edge at cos_outer" },
+    Row { func: "lighting::prepass::spot_attenuation", case: "cos_inner < cos_outer, outside", args: &[V::F32(0.4), V::F32(0.5), V::F32(0.2)], expect: V::F32(0.0), why: "hard edge at cos_outer" },
+    Row { func: "lighting::prepass::spot_attenuation", case: "out of range: cosine 2", args: &[V::F32(2.0), V::F32(0.5), V::F32(0.9)], expect: V::F32(1.0), why: "clamped to [0, 1]" },
+    Row { func: "lighting::prepass::spot_attenuation", case: "out of range: cosine −2", args: &[V::F32(-2.0), V::F32(0.5), V::F32(0.9)], expect: V::F32(0.0), why: "clamped to [0, 1]" },
+    Row { func: "lighting::prepass::cosines", case: "zero-length normal", args: &[V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3(ZN), V::U32(0)], expect: V::Vec2([0.0, 0.0]), why: "no light" },
+    Row { func: "lighting::prepass::cosines", case: "subnormal normal", args: &[V::Vec3([0.0, 0.0, SUB_MAX]), V::Vec3(ZN), V::Vec3(ZN), V::U32(0)], expect: V::Vec2([0.0, 0.0]), why: "no light" },
+    Row { func: "lighting::prepass::cosines", case: "zero to_eye", args: &[V::Vec3(ZN), V::Vec3([0.0; 3]), V::Vec3(ZN), V::U32(0)], expect: V::Vec2([0.0, 0.0]), why: "no light" },
+    Row { func: "lighting::prepass::cosines", case: "NaN to_light", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3([NAN, 0.0, 1.0]), V::U32(1)], expect: V::Vec2([0.0, 0.0]), why: "no light" },
+    Row { func: "lighting::prepass::cosines", case: "N·L = 0", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3([1.0, 0.0, 0.0]), V::U32(0)], expect: V::Vec2([0.0, 0.0]), why: "no highlight without N·L" },
+    Row { func: "lighting::prepass::cosines", case: "N·L < 0", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 0.0, -1.0]), V::U32(1)], expect: V::Vec2([0.0, 0.0]), why: "clamped at 0" },
+    Row { func: "lighting::prepass::cosines", case: "N·H at its maximum 1", args: &[V::Vec3([0.0, 0.0, 4.0]), V::Vec3(ZN), V::Vec3([0.0, 0.0, 2.0]), V::U32(0)], expect: V::Vec2([1.0, 1.0]), why: "any length; clamped to [0, 1]" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "NaN colour", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([NAN, 1.0, 1.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "+Inf colour", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([INF, 1.0, 1.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "NaN power", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(NAN)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "+Inf power", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(INF)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "−Inf attenuation", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(-INF), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "zero-length normal", args: &[V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "subnormal to_light", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 0.0, SUB_MIN]), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "N·L = 0", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "attenuation 0", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(0.0), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "negative attenuation", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(-2.0), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "clamped to 0" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "negative intensity", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([-1.0, 2.0, -3.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0, 2.0, 0.0, 1.4304]), why: "channels clamped to [0, 65504]" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "negative power", args: &[V::Vec3(ZN), V::Vec3([1.0, 0.0, 0.0]), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(-4.0)], expect: V::Vec4([0.0, 1.0, 0.0, 0.7152]), why: "clamped to 0: (N·H)^0 = 1" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "out of range: power 1e30", args: &[V::Vec3(ZN), V::Vec3([1.0, 0.0, 0.0]), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(1e30)], expect: V::Vec4([0.0, 1.0, 0.0, 0.0]), why: "clamped to 65504: 0.707^65504 → 0" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "subnormal power, N·H = 1", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(SUB_MAX)], expect: V::Vec4([0.0, 1.0, 0.0, 0.7152]), why: "1^y = 1" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "out of range: attenuation 2", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(2.0), V::F32(8.0)], expect: V::Vec4([0.0, 1.0, 0.0, 0.7152]), why: "clamped to 1" },
+    Row { func: "lighting::prepass::blinn_phong_light", case: "out of range: colour 1e9", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1e9, 0.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0, 65504.0, 0.0, 46848.46]), why: "clamped to 65504 (fp16 max)" },
+    Row { func: "lighting::prepass::phong_light", case: "NaN normal", args: &[V::Vec3([NAN, 0.0, 1.0]), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::phong_light", case: "zero to_eye", args: &[V::Vec3(ZN), V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::phong_light", case: "N·L = 0", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3([1.0, 0.0, 0.0]), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::phong_light", case: "NaN attenuation", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(NAN), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::phong_light", case: "R·V at its maximum 1, negative intensity", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([-1.0, 1.0, 0.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec4([0.0, 1.0, 0.0, 0.7152]), why: "clamped to [0, 1]; colour clamped at 0" },
+    Row { func: "lighting::prepass::point_light", case: "zero radius", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec4([0.0, 1.0, 0.0, 0.0]), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "attenuation 0" },
+    Row { func: "lighting::prepass::point_light", case: "negative radius", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec4([0.0, 1.0, 0.0, -2.0]), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "attenuation 0" },
+    Row { func: "lighting::prepass::point_light", case: "NaN radius", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec4([0.0, 1.0, 0.0, NAN]), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "attenuation 0" },
+    Row { func: "lighting::prepass::point_light", case: "zero to_light (light at the surface)", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0; 3]), V::Vec4([0.0, 1.0, 0.0, 2.0]), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "no direction → zero light" },
+    Row { func: "lighting::prepass::point_light", case: "+Inf to_light", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 0.0, INF]), V::Vec4([0.0, 1.0, 0.0, 2.0]), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "zero light" },
+    Row { func: "lighting::prepass::point_light", case: "negative intensity", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 0.0, 1e-30]), V::Vec4([-1.0, -1.0, -1.0, 2.0]), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "colour clamped to 0" },
+    Row { func: "lighting::prepass::spot_light", case: "zero-length axis", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec4([0.0, 1.0, 0.0, 2.0]), V::Vec4([0.0, 0.0, 0.0, 0.5]), V::F32(0.9), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "cosine 0: outside the cone" },
+    Row { func: "lighting::prepass::spot_light", case: "NaN cos_inner", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec4([0.0, 1.0, 0.0, 2.0]), V::Vec4([0.0, 0.0, -1.0, 0.5]), V::F32(NAN), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "cone factor 0" },
+    Row { func: "lighting::prepass::spot_light", case: "+Inf axis", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec4([0.0, 1.0, 0.0, 2.0]), V::Vec4([0.0, 0.0, -INF, 0.5]), V::F32(0.9), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "no axis: cosine 0, outside the cone" },
+    Row { func: "lighting::prepass::spot_light", case: "zero radius", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec4([0.0, 1.0, 0.0, 0.0]), V::Vec4([0.0, 0.0, -1.0, 0.5]), V::F32(0.9), V::F32(8.0)], expect: V::Vec4([0.0; 4]), why: "attenuation 0" },
+    Row { func: "lighting::prepass::blinn_phong_specular_rgb", case: "NaN power", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(NAN)], expect: V::Vec3([0.0; 3]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_specular_rgb", case: "zero-length normal", args: &[V::Vec3([-0.0; 3]), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec3([0.0; 3]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_specular_rgb", case: "attenuation 0", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([0.0, 1.0, 0.0]), V::F32(0.0), V::F32(8.0)], expect: V::Vec3([0.0; 3]), why: "zero light" },
+    Row { func: "lighting::prepass::blinn_phong_specular_rgb", case: "N·H at its maximum 1, negative intensity", args: &[V::Vec3(ZN), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([-5.0, 1.0, 0.0]), V::F32(1.0), V::F32(8.0)], expect: V::Vec3([0.0, 1.0, 0.0]), why: "(N·H)^n = 1; colour clamped at 0" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "NaN light", args: &[V::Vec4([NAN, 1.0, 0.0, 0.5]), V::F32(8.0)], expect: V::F32(0.0), why: "no specular" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "+Inf a", args: &[V::Vec4([0.0, 1.0, 0.0, INF]), V::F32(8.0)], expect: V::F32(0.0), why: "no specular" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "NaN material power", args: &[V::Vec4([0.0, 1.0, 0.0, 0.5]), V::F32(NAN)], expect: V::F32(0.0), why: "no specular" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "zero diffuse (lum 0)", args: &[V::Vec4([0.0, 0.0, 0.0, 0.5]), V::F32(8.0)], expect: V::F32(0.0), why: "nothing to divide by" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "negative diffuse", args: &[V::Vec4([-1.0, -1.0, -1.0, 0.5]), V::F32(8.0)], expect: V::F32(0.0), why: "clamped at 0: lum 0" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "subnormal luminance", args: &[V::Vec4([SUB_MAX, 0.0, 0.0, 0.5]), V::F32(8.0)], expect: V::F32(0.0), why: "lum below 2^-126 → 0" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "zero a", args: &[V::Vec4([0.0, 1.0, 0.0, 0.0]), V::F32(8.0)], expect: V::F32(0.0), why: "a ≤ 0 → 0" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "negative a", args: &[V::Vec4([0.0, 1.0, 0.0, -1.0]), V::F32(8.0)], expect: V::F32(0.0), why: "a ≤ 0 → 0" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "out of range: a > lum (ratio > 1)", args: &[V::Vec4([0.0, 1.0, 0.0, 5.0]), V::F32(8.0)], expect: V::F32(0.7152), why: "ratio clamped to 1: never above lum" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "negative material power", args: &[V::Vec4([0.0, 1.0, 0.0, 0.5]), V::F32(-2.0)], expect: V::F32(0.7152), why: "clamped to 0: ratio^0 = 1" },
+    Row { func: "lighting::prepass::reconstruct_specular", case: "out of range: material power 1e30", args: &[V::Vec4([0.0, 1.0, 0.0, 0.5]), V::F32(1e30)], expect: V::F32(0.0), why: "clamped to 65504: 0.7^65504 → 0" },
+    Row { func: "lighting::prepass::combine", case: "NaN albedo", args: &[V::Vec3([NAN, 1.0, 0.0]), V::Vec3([0.0; 3]), V::Vec4([1.0, 1.0, 0.0, 0.0]), V::F32(8.0)], expect: V::Vec3([0.0, 1.0, 0.0]), why: "NaN channel → 0" },
+    Row { func: "lighting::prepass::combine", case: "NaN light", args: &[V::Vec3([1.0; 3]), V::Vec3([1.0; 3]), V::Vec4([NAN, 1.0, 0.0, 0.5]), V::F32(8.0)], expect: V::Vec3([0.0, 1.0, 0.0]), why: "NaN channel → 0; no specular" },
+    Row { func: "lighting::prepass::combine", case: "+Inf gloss", args: &[V::Vec3([0.0; 3]), V::Vec3([INF, 0.0, 0.0]), V::Vec4([0.0, 1.0, 0.0, 5.0]), V::F32(8.0)], expect: V::Vec3([46848.46, 0.0, 0.0]), why: "gloss clamped to 65504" },
+    Row { func: "lighting::prepass::combine", case: "negative light", args: &[V::Vec3([1.0; 3]), V::Vec3([0.0; 3]), V::Vec4([-1.0, 2.0, 0.0, 0.0]), V::F32(8.0)], expect: V::Vec3([0.0, 2.0, 0.0]), why: "lights never subtract" },
+    Row { func: "lighting::prepass::combine_two_buffers", case: "NaN, −1 albedo", args: &[V::Vec3([NAN, 1.0, -1.0]), V::Vec3([0.0; 3]), V::Vec3([1.0; 3]), V::Vec3([1.0; 3])], expect: V::Vec3([0.0, 1.0, 0.0]), why: "NaN → 0, clamped at 0" },
+    Row { func: "lighting::prepass::combine_two_buffers", case: "+Inf diffuse", args: &[V::Vec3([1.0; 3]), V::Vec3([0.0; 3]), V::Vec3([INF, 2.0, 0.0]), V::Vec3([0.0; 3])], expect: V::Vec3([65504.0, 2.0, 0.0]), why: "clamped to 65504" },
+    Row { func: "lighting::prepass::combine_two_buffers", case: "−Inf specular", args: &[V::Vec3([0.0; 3]), V::Vec3([1.0; 3]), V::Vec3([0.0; 3]), V::Vec3([-INF, 3.0, NAN])], expect: V::Vec3([0.0, 3.0, 0.0]), why: "clamped at 0; NaN → 0" },
+    Row { func: "lighting::prepass::clamp_colour", case: "NaN, ±Inf", args: &[V::Vec3([NAN, -INF, INF])], expect: V::Vec3([0.0, 0.0, 65504.0]), why: "NaN → 0, clamped to [0, 65504]" },
+    Row { func: "lighting::prepass::clamp_colour", case: "−NaN, out of range", args: &[V::Vec3([NEG_NAN, -3.0, 1e9])], expect: V::Vec3([0.0, 0.0, 65504.0]), why: "clamped to [0, 65504]" },
+    Row { func: "lighting::prepass::exact::unit", case: "zero vector", args: &[V::F64x3([0.0; 3])], expect: V::F64x3([0.0; 3]), why: "zero, like the twins" },
+    Row { func: "lighting::prepass::exact::unit", case: "NaN", args: &[V::F64x3([f64::NAN, 0.0, 1.0])], expect: V::F64x3([f64::NAN; 3]), why: "propagates (reference only)" },
+    // Aggregate lights (accumulator (1, 2, 3, 4) where a skipped light must leave it unchanged).
+    Row { func: "lighting::aggregate::accumulate", case: "NaN vertex", args: &[V::Vec4([1.0, 2.0, 3.0, 4.0]), V::Vec3([NAN, 0.0, 0.0]), V::Vec3(ZN), V::F32(1.0)], expect: V::Vec4([1.0, 2.0, 3.0, 4.0]), why: "light skipped" },
+    Row { func: "lighting::aggregate::accumulate", case: "+Inf light position", args: &[V::Vec4([1.0, 2.0, 3.0, 4.0]), V::Vec3([0.0; 3]), V::Vec3([0.0, INF, 0.0]), V::F32(1.0)], expect: V::Vec4([1.0, 2.0, 3.0, 4.0]), why: "light skipped" },
+    Row { func: "lighting::aggregate::accumulate", case: "NaN weight", args: &[V::Vec4([1.0, 2.0, 3.0, 4.0]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::F32(NAN)], expect: V::Vec4([1.0, 2.0, 3.0, 4.0]), why: "light skipped" },
+    Row { func: "lighting::aggregate::accumulate", case: "+Inf weight", args: &[V::Vec4([1.0, 2.0, 3.0, 4.0]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::F32(INF)], expect: V::Vec4([1.0, 2.0, 3.0, 4.0]), why: "light skipped" },
+    Row { func: "lighting::aggregate::accumulate", case: "zero vector (light at the vertex)", args: &[V::Vec4([1.0, 2.0, 3.0, 4.0]), V::Vec3([5.0, 5.0, 5.0]), V::Vec3([5.0, 5.0, 5.0]), V::F32(1.0)], expect: V::Vec4([1.0, 2.0, 3.0, 4.0]), why: "no direction: skipped" },
+    Row { func: "lighting::aggregate::accumulate", case: "within 2^-64 of the vertex", args: &[V::Vec4([1.0, 2.0, 3.0, 4.0]), V::Vec3([0.0; 3]), V::Vec3([1e-20, -1e-20, 0.0]), V::F32(1.0)], expect: V::Vec4([1.0, 2.0, 3.0, 4.0]), why: "no direction: skipped" },
+    Row { func: "lighting::aggregate::accumulate", case: "P − V overflows", args: &[V::Vec4([1.0, 2.0, 3.0, 4.0]), V::Vec3([-3e38, 0.0, 0.0]), V::Vec3([3e38, 0.0, 0.0]), V::F32(1.0)], expect: V::Vec4([1.0, 2.0, 3.0, 4.0]), why: "non-finite: skipped" },
+    Row { func: "lighting::aggregate::accumulate", case: "negative intensity", args: &[V::Vec4([1.0, 2.0, 3.0, 4.0]), V::Vec3([0.0; 3]), V::Vec3([0.0, 3.0, 4.0]), V::F32(-5.0)], expect: V::Vec4([1.0, 2.0, 3.0, 4.0]), why: "clamped to 0: adds nothing" },
+    Row { func: "lighting::aggregate::accumulate", case: "subnormal weight", args: &[V::Vec4([1.0, 2.0, 3.0, 4.0]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::F32(SUB_MAX)], expect: V::Vec4([1.0, 2.0, 3.0, 4.0]), why: "adds below half an ULP of the sums" },
+    Row { func: "lighting::aggregate::accumulate", case: "out of range: weight 1e20", args: &[V::Vec4([0.0; 4]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::F32(1e20)], expect: V::Vec4([0.0, 0.0, 1_099_511_627_776.0, 1_099_511_627_776.0]), why: "clamped to 2^40" },
+    Row { func: "lighting::aggregate::direction", case: "NaN", args: &[V::Vec4([NAN, 0.0, 1.0, 1.0])], expect: V::Vec3([0.0; 3]), why: "zero direction" },
+    Row { func: "lighting::aggregate::direction", case: "+Inf", args: &[V::Vec4([0.0, -INF, 1.0, 1.0])], expect: V::Vec3([0.0; 3]), why: "zero direction" },
+    Row { func: "lighting::aggregate::direction", case: "zero vector (directions cancel)", args: &[V::Vec4([0.0, 0.0, 0.0, 2.0])], expect: V::Vec3([0.0; 3]), why: "zero direction" },
+    Row { func: "lighting::aggregate::direction", case: "subnormal", args: &[V::Vec4([SUB_MAX, 0.0, 0.0, 1.0])], expect: V::Vec3([0.0; 3]), why: "largest component subnormal → zero" },
+    Row { func: "lighting::aggregate::direction", case: "huge", args: &[V::Vec4([0.0, f32::MAX, 0.0, 1.0])], expect: V::Vec3([0.0, 1.0, 0.0]), why: "scaled first: no overflow" },
+    Row { func: "lighting::aggregate::position", case: "NaN acc", args: &[V::Vec4([NAN, 0.0, 1.0, 1.0]), V::Vec3([1.0, 2.0, 3.0])], expect: V::Vec3([1.0, 2.0, 3.0]), why: "the vertex" },
+    Row { func: "lighting::aggregate::position", case: "NaN weight sum", args: &[V::Vec4([0.0, 0.0, 1.0, NAN]), V::Vec3([1.0, 2.0, 3.0])], expect: V::Vec3([1.0, 2.0, 3.0]), why: "the vertex" },
+    Row { func: "lighting::aggregate::position", case: "+Inf weight sum", args: &[V::Vec4([0.0, 0.0, 1.0, INF]), V::Vec3([1.0, 2.0, 3.0])], expect: V::Vec3([1.0, 2.0, 3.0]), why: "the vertex" },
+    Row { func: "lighting::aggregate::position", case: "zero acc (nothing accumulated)", args: &[V::Vec4([0.0; 4]), V::Vec3([1.0, 2.0, 3.0])], expect: V::Vec3([1.0, 2.0, 3.0]), why: "the vertex" },
+    Row { func: "lighting::aggregate::position", case: "subnormal acc.xyz (directions cancel)", args: &[V::Vec4([SUB_MAX, 0.0, 0.0, 1.0]), V::Vec3([1.0, 2.0, 3.0])], expect: V::Vec3([1.0, 2.0, 3.0]), why: "the vertex" },
+    Row { func: "lighting::aggregate::position", case: "zero weight sum", args: &[V::Vec4([0.0, 0.0, 1.0, 0.0]), V::Vec3([1.0, 2.0, 3.0])], expect: V::Vec3([1.0, 2.0, 3.0]), why: "the vertex" },
+    Row { func: "lighting::aggregate::position", case: "negative weight sum", args: &[V::Vec4([0.0, 0.0, 1.0, -1.0]), V::Vec3([1.0, 2.0, 3.0])], expect: V::Vec3([1.0, 2.0, 3.0]), why: "the vertex" },
+    Row { func: "lighting::aggregate::accumulate_colour", case: "NaN colour", args: &[V::Vec3([1.0, 2.0, 3.0]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3([NAN, 1.0, 1.0]), V::Vec3(ZN)], expect: V::Vec3([1.0, 2.0, 3.0]), why: "light skipped" },
+    Row { func: "lighting::aggregate::accumulate_colour", case: "+Inf aggregate direction", args: &[V::Vec3([1.0, 2.0, 3.0]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3([1.0; 3]), V::Vec3([0.0, 0.0, INF])], expect: V::Vec3([1.0, 2.0, 3.0]), why: "light skipped" },
+    Row { func: "lighting::aggregate::accumulate_colour", case: "zero vector (light at the vertex)", args: &[V::Vec3([1.0, 2.0, 3.0]), V::Vec3(ZN), V::Vec3(ZN), V::Vec3([1.0; 3]), V::Vec3(ZN)], expect: V::Vec3([1.0, 2.0, 3.0]), why: "light skipped" },
+    Row { func: "lighting::aggregate::accumulate_colour", case: "zero aggregate direction (cancelled)", args: &[V::Vec3([1.0, 2.0, 3.0]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3([1.0; 3]), V::Vec3([0.0; 3])], expect: V::Vec3([1.0, 2.0, 3.0]), why: "colour term zero" },
+    Row { func: "lighting::aggregate::accumulate_colour", case: "negative intensity", args: &[V::Vec3([1.0, 2.0, 3.0]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3([-1.0, -2.0, -3.0]), V::Vec3(ZN)], expect: V::Vec3([1.0, 2.0, 3.0]), why: "clamped to 0: adds nothing" },
+    Row { func: "lighting::aggregate::accumulate_colour", case: "out of range: colour 1e20", args: &[V::Vec3([0.0; 3]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3([1e20, 0.0, 0.0]), V::Vec3(ZN)], expect: V::Vec3([1_099_511_627_776.0, 0.0, 0.0]), why: "clamped to 2^40" },
+    Row { func: "lighting::aggregate::diffuse", case: "NaN position", args: &[V::Vec3(ZN), V::Vec3([NAN, 0.0, 0.0]), V::Vec3(ZN), V::Vec3([1.0; 3])], expect: V::Vec3([0.0; 3]), why: "no light" },
+    Row { func: "lighting::aggregate::diffuse", case: "+Inf colour", args: &[V::Vec3(ZN), V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3([INF, 1.0, 1.0])], expect: V::Vec3([0.0; 3]), why: "no light" },
+    Row { func: "lighting::aggregate::diffuse", case: "zero-length normal", args: &[V::Vec3([0.0; 3]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3([1.0; 3])], expect: V::Vec3([0.0; 3]), why: "no light" },
+    Row { func: "lighting::aggregate::diffuse", case: "NaN normal", args: &[V::Vec3([0.0, NAN, 1.0]), V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3([1.0; 3])], expect: V::Vec3([0.0; 3]), why: "no light" },
+    Row { func: "lighting::aggregate::diffuse", case: "zero vector (P_agg = p)", args: &[V::Vec3(ZN), V::Vec3([1.0, 2.0, 3.0]), V::Vec3([1.0, 2.0, 3.0]), V::Vec3([1.0; 3])], expect: V::Vec3([0.0; 3]), why: "no direction → 0" },
+    Row { func: "lighting::aggregate::diffuse", case: "N·L < 0", args: &[V::Vec3(ZN), V::Vec3([0.0; 3]), V::Vec3([0.0, 0.0, -1.0]), V::Vec3([1.0; 3])], expect: V::Vec3([0.0; 3]), why: "clamped at 0" },
+    Row { func: "lighting::aggregate::diffuse", case: "negative intensity", args: &[V::Vec3(ZN), V::Vec3([0.0; 3]), V::Vec3(ZN), V::Vec3([-1.0, 2.0, 0.0])], expect: V::Vec3([0.0, 2.0, 0.0]), why: "channels clamped at 0" },
+    Row { func: "lighting::prepass::exact::cosines", case: "zero-length normal", args: &[V::F64x3([0.0; 3]), V::F64x3([0.0, 0.0, 1.0]), V::F64x3([0.0, 0.0, 1.0])], expect: V::F64x2([0.0, 0.0]), why: "no light, like the twins" },
+    Row { func: "lighting::prepass::exact::cosines", case: "NaN normal", args: &[V::F64x3([f64::NAN, 0.0, 1.0]), V::F64x3([0.0, 0.0, 1.0]), V::F64x3([0.0, 0.0, 1.0])], expect: V::F64x2([0.0, 0.0]), why: "max(NaN, 0) = 0: no light" },
+    Row { func: "lighting::prepass::exact::cosines", case: "N·L = 0", args: &[V::F64x3([0.0, 0.0, 1.0]), V::F64x3([0.0, 0.0, 1.0]), V::F64x3([1.0, 0.0, 0.0])], expect: V::F64x2([0.0, 0.0]), why: "no highlight without N·L" },
+    Row { func: "lighting::prepass::exact::multi_light_specular", case: "zero-length normal", args: &[V::F64x3([0.0; 3]), V::F64x3([0.0, 0.0, 1.0]), V::F64(8.0), V::F64x3([0.0, 0.0, 1.0]), V::F64(1.0), V::F64(1.0), V::F64(16.0)], expect: V::F64(0.0), why: "no light" },
+    Row { func: "lighting::aggregate::aggregate", case: "no lights", args: &[V::Vec3([1.0, 2.0, 3.0])], expect: V::Vec3x2([[1.0, 2.0, 3.0], [0.0; 3]]), why: "the vertex, no colour" },
+    Row { func: "lighting::aggregate::aggregate", case: "NaN light", args: &[V::Vec3([1.0, 2.0, 3.0]), V::Vec3([NAN, 2.0, 4.0]), V::F32(1.0), V::Vec3([1.0; 3])], expect: V::Vec3x2([[1.0, 2.0, 3.0], [0.0; 3]]), why: "skipped" },
+    Row { func: "lighting::aggregate::aggregate", case: "negative intensity", args: &[V::Vec3([1.0, 2.0, 3.0]), V::Vec3([1.0, 2.0, 4.0]), V::F32(-1.0), V::Vec3([1.0; 3])], expect: V::Vec3x2([[1.0, 2.0, 3.0], [0.0; 3]]), why: "weight 0: nothing accumulated" },
+    Row { func: "lighting::aggregate::aggregate", case: "zero vector (directions cancel)", args: &[V::Vec3([1.0, 2.0, 3.0]), V::Vec3([2.0, 2.0, 3.0]), V::F32(1.0), V::Vec3([1.0; 3]), V::Vec3([0.0, 2.0, 3.0]), V::F32(1.0), V::Vec3([1.0; 3])], expect: V::Vec3x2([[1.0, 2.0, 3.0], [0.0; 3]]), why: "zero direction: the vertex, no colour" },
+    // Light volumes (near 1, far 2 unless stated): bad input answers depth-fail and the full range.
+    Row { func: "lighting::volumes::near_corner_distance", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(1.0)], expect: V::F32(3.4e38), why: "stand-in for +Inf: depth-fail everywhere" },
+    Row { func: "lighting::volumes::near_corner_distance", case: "+Inf tan", args: &[V::F32(0.1), V::F32(INF), V::F32(1.0)], expect: V::F32(3.4e38), why: "stand-in for +Inf" },
+    Row { func: "lighting::volumes::near_corner_distance", case: "negative near", args: &[V::F32(-0.1), V::F32(1.0), V::F32(1.0)], expect: V::F32(3.4e38), why: "stand-in for +Inf" },
+    Row { func: "lighting::volumes::near_corner_distance", case: "negative tan", args: &[V::F32(0.1), V::F32(1.0), V::F32(-1.0)], expect: V::F32(3.4e38), why: "stand-in for +Inf" },
+    Row { func: "lighting::volumes::near_corner_distance", case: "zero near", args: &[V::F32(0.0), V::F32(1.0), V::F32(1.0)], expect: V::F32(0.0), why: "near·√… = 0" },
+    Row { func: "lighting::volumes::sphere_needs_depth_fail", case: "NaN centre", args: &[V::Vec3([NAN, 0.0, 10.0]), V::F32(1.0), V::F32(0.1)], expect: V::U32(1), why: "depth-fail (always correct)" },
+    Row { func: "lighting::volumes::sphere_needs_depth_fail", case: "+Inf radius", args: &[V::Vec3([0.0, 0.0, 10.0]), V::F32(INF), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::sphere_needs_depth_fail", case: "NaN near-corner distance", args: &[V::Vec3([0.0, 0.0, 10.0]), V::F32(1.0), V::F32(NAN)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::sphere_needs_depth_fail", case: "negative radius", args: &[V::Vec3([0.0, 0.0, 10.0]), V::F32(-1.0), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::sphere_needs_depth_fail", case: "negative near-corner distance", args: &[V::Vec3([0.0, 0.0, 10.0]), V::F32(1.0), V::F32(-0.1)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::sphere_needs_depth_fail", case: "zero vector, zero radius", args: &[V::Vec3([0.0; 3]), V::F32(0.0), V::F32(0.0)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::sphere_needs_depth_fail", case: "subnormal", args: &[V::Vec3([SUB_MAX, 0.0, 0.0]), V::F32(0.0), V::F32(0.0)], expect: V::U32(1), why: "depth-fail, flushed or not" },
+    Row { func: "lighting::volumes::sphere_needs_depth_fail", case: "huge centre (c·c would overflow)", args: &[V::Vec3([0.0, 0.0, 3e38]), V::F32(1.0), V::F32(0.1)], expect: V::U32(0), why: "scaled first: far away, depth-pass" },
+    Row { func: "lighting::volumes::cone_needs_depth_fail", case: "NaN apex", args: &[V::Vec3([NAN, 0.0, 100.0]), V::Vec3(ZN), V::Vec2([10.0, 0.5]), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::cone_needs_depth_fail", case: "zero-length axis", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3([0.0; 3]), V::Vec2([10.0, 0.5]), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::cone_needs_depth_fail", case: "subnormal axis", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3([0.0, SUB_MAX, 0.0]), V::Vec2([10.0, 0.5]), V::F32(0.1)], expect: V::U32(1), why: "depth-fail, flushed or not" },
+    Row { func: "lighting::volumes::cone_needs_depth_fail", case: "+Inf length", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3(ZN), V::Vec2([INF, 0.5]), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::cone_needs_depth_fail", case: "negative tan", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3(ZN), V::Vec2([10.0, -0.5]), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::cone_needs_depth_fail", case: "negative length", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3(ZN), V::Vec2([-10.0, 0.5]), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::cone_needs_depth_fail", case: "negative near-corner distance", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3(ZN), V::Vec2([10.0, 0.5]), V::F32(-0.1)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::cone_needs_depth_fail", case: "+Inf near-corner distance", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3(ZN), V::Vec2([10.0, 0.5]), V::F32(INF)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "lighting::volumes::cone_needs_depth_fail", case: "huge axis (any length)", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3([0.0, 0.0, f32::MAX]), V::Vec2([10.0, 0.5]), V::F32(0.1)], expect: V::U32(0), why: "scaled first: far away, depth-pass" },
+    Row { func: "lighting::volumes::window_depth", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::F32(NAN), why: "no guard: propagates" },
+    Row { func: "lighting::volumes::window_depth", case: "+Inf view depth, far +Inf", args: &[V::F32(INF), V::F32(1.0), V::F32(INF), V::U32(0)], expect: V::F32(1.0), why: "1 − n/∞ = 1" },
+    Row { func: "lighting::volumes::window_depth", case: "+Inf view depth, far +Inf, reversed", args: &[V::F32(INF), V::F32(1.0), V::F32(INF), V::U32(1)], expect: V::F32(0.0), why: "n/∞ = 0" },
+    Row { func: "lighting::volumes::window_depth", case: "out-of-range convention code 7", args: &[V::F32(INF), V::F32(1.0), V::F32(INF), V::U32(7)], expect: V::F32(0.0), why: "anything but 0 is reversed" },
+    Row { func: "lighting::volumes::window_depth", case: "out of range: beyond far", args: &[V::F32(INF), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::F32(2.0), why: "not clipped: f/(f − n) at vz = ∞" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "NaN centre", args: &[V::F32(NAN), V::F32(1.0), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range: culls nothing" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "+Inf radius", args: &[V::F32(1.5), V::F32(INF), V::F32(1.0), V::F32(2.0), V::U32(1)], expect: V::Vec2([0.0, 1.0]), why: "full range" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "negative radius", args: &[V::F32(1.5), V::F32(-1.0), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "zero near", args: &[V::F32(1.5), V::F32(1.0), V::F32(0.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "far ≤ near", args: &[V::F32(1.5), V::F32(1.0), V::F32(2.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "NaN far", args: &[V::F32(1.5), V::F32(1.0), V::F32(1.0), V::F32(NAN), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "−Inf far", args: &[V::F32(1.5), V::F32(1.0), V::F32(1.0), V::F32(-INF), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "out of range: in front of near", args: &[V::F32(0.25), V::F32(0.25), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([1.0, 0.0]), why: "empty range" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "out of range: behind far", args: &[V::F32(10.0), V::F32(1.0), V::F32(1.0), V::F32(2.0), V::U32(1)], expect: V::Vec2([1.0, 0.0]), why: "empty range" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "c + r overflows, far +Inf", args: &[V::F32(3e38), V::F32(3e38), V::F32(1.0), V::F32(INF), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "reaches infinity: window depth 1" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "out-of-range convention code", args: &[V::F32(3e38), V::F32(3e38), V::F32(1.0), V::F32(INF), V::U32(u32::MAX)], expect: V::Vec2([0.0, 1.0]), why: "reversed: infinity at 0" },
+    Row { func: "lighting::volumes::sphere_depth_bounds", case: "subnormal radius at the near plane", args: &[V::F32(1.0), V::F32(SUB_MAX), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 3.0 / 1_048_576.0]), why: "the point z = 0, widened by ε = 16u·(1 + 2) = 3·2^-20" },
+    Row { func: "lighting::volumes::sphere_depth_bounds24", case: "NaN centre", args: &[V::F32(NAN), V::F32(1.0), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::UVec2([0, MAX24]), why: "full range of codes" },
+    Row { func: "lighting::volumes::sphere_depth_bounds24", case: "zero near", args: &[V::F32(1.5), V::F32(1.0), V::F32(0.0), V::F32(INF), V::U32(1)], expect: V::UVec2([0, MAX24]), why: "full range of codes" },
+    Row { func: "lighting::volumes::sphere_depth_bounds24", case: "out of range: behind far", args: &[V::F32(10.0), V::F32(1.0), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::UVec2([MAX24, 0]), why: "empty range as codes" },
+    Row { func: "lighting::volumes::sphere_depth_bounds24", case: "subnormal radius at the near plane", args: &[V::F32(1.0), V::F32(SUB_MAX), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::UVec2([0, 48]), why: "ceil(48u·(2^24 − 1))" },
+    Row { func: "lighting::volumes::exact::window_depth", case: "NaN", args: &[V::F64(f64::NAN), V::F64(1.0), V::F64(2.0), V::U32(0)], expect: V::F64(f64::NAN), why: "propagates (reference only)" },
+    Row { func: "lighting::volumes::exact::window_depth", case: "+Inf view depth, far +Inf", args: &[V::F64(f64::INFINITY), V::F64(1.0), V::F64(f64::INFINITY), V::U32(1)], expect: V::F64(0.0), why: "n/∞ = 0" },
 ];
