@@ -247,6 +247,7 @@ fn composed_modules_match_their_snapshots() {
                 PositionChoice::View,
             ),
         ),
+        ("full_light_prepass", full_scene()),
     ];
     let update = std::env::var_os("UPDATE_SNAPSHOTS").is_some();
     for (name, s) in named {
