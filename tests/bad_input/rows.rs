@@ -26,6 +26,8 @@ pub enum V {
     Vec4([f32; 4]),
     F64(f64),
     OptU32(Option<u32>),
+    /// `normal::sanitize`'s result (Rust only).
+    OptVec3(Option<[f32; 3]>),
     // Rust-only argument and result types (the precision metrics and inputs).
     I64(i64),
     Bool(bool),
@@ -496,6 +498,21 @@ pub const FUNCS: &[Func] = &[
         )),
         twin: |a| V::Vec3(hemioct::decode_normal_hemioct24_unorm(normal_vec4(a[0])).to_array()),
     },
+    Func {
+        name: "normal::sanitize",
+        wgsl: None,
+        twin: |a| V::OptVec3(prepass::normal::sanitize(a[0].vec3()).map(|v| v.to_array())),
+    },
+    Func {
+        name: "normal::xy_fp16::pack2x16float",
+        wgsl: None,
+        twin: |a| V::U32(xy_fp16::pack2x16float(a[0].vec2())),
+    },
+    Func {
+        name: "normal::xy_fp16::unpack2x16float",
+        wgsl: Some((UNPACK2X16_WGSL, "bad_input_unpack2x16float")),
+        twin: |a| V::Vec2(xy_fp16::unpack2x16float(a[0].u32()).to_array()),
+    },
 ];
 
 /// WGSL functions in `wgsl/` that are not public API (private helpers a file needs), exempt
@@ -905,6 +922,22 @@ pub const ROWS: &[Row] = &[
     Row { func: "normal::hemioct::decode_normal_hemioct24_unorm", case: "NaN", args: &[V::Vec4([NAN, NAN, NAN, NAN])], expect: V::Vec3([-1.0, 0.0, 0.0]), why: "bytes 0: corner (0, 0) = −x" },
     Row { func: "normal::hemioct::decode_normal_hemioct24_unorm", case: "+Inf (alpha set)", args: &[V::Vec4([INF, INF, INF, INF])], expect: V::Vec3([1.0, 0.0, 0.0]), why: "alpha ignored; corner (M, M) = +x" },
     Row { func: "normal::hemioct::decode_normal_hemioct24_unorm", case: "out of range, −Inf, NaN", args: &[V::Vec4([INF, B15, -1.0, NAN])], expect: V::Vec3([0.0, 1.0, 0.0]), why: "code (0xfff, 0): +y" },
+    // The shared encoder front end and the f16 conversions (the WGSL builtins' twins).
+    Row { func: "normal::sanitize", case: "NaN", args: &[V::Vec3([NAN, 0.0, 1.0])], expect: V::OptVec3(None), why: "degenerate: the encoders use +z" },
+    Row { func: "normal::sanitize", case: "zero vector", args: &[V::Vec3([0.0, -0.0, 0.0])], expect: V::OptVec3(None), why: "degenerate" },
+    Row { func: "normal::sanitize", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MAX, 0.0])], expect: V::OptVec3(None), why: "all subnormal = zero: degenerate" },
+    Row { func: "normal::sanitize", case: "±Inf", args: &[V::Vec3([INF, -5.0, -INF])], expect: V::OptVec3(Some([1.0, -0.0, -1.0])), why: "signs of the infinities, signed zero elsewhere" },
+    Row { func: "normal::sanitize", case: "subnormal component", args: &[V::Vec3([-0.0, 1.0, SUB_MIN])], expect: V::OptVec3(Some([-0.0, 1.0, 0.0])), why: "flushed to signed zero" },
+    Row { func: "normal::sanitize", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, -3.0])], expect: V::OptVec3(Some([3.999_999_8, 0.0, -3.0 * f32::MIN_POSITIVE])), why: "scaled by 2^-126 into [1, 4); 2^-252 flushed" },
+    Row { func: "normal::sanitize", case: "non-unit: tiny", args: &[V::Vec3([0.0, -SUB_MAX, f32::MIN_POSITIVE])], expect: V::OptVec3(Some([0.0, -0.0, 1.0])), why: "scaled by 2^126; subnormal flushed first" },
+    Row { func: "normal::xy_fp16::pack2x16float", case: "NaN", args: &[V::Vec2([NAN, NEG_NAN])], expect: V::U32(0xfe00_7e00), why: "quiet f16 NaN, sign kept (WGSL: indeterminate)" },
+    Row { func: "normal::xy_fp16::pack2x16float", case: "NaN (signalling)", args: &[V::Vec2([SNAN, 0.0])], expect: V::U32(0x7e00), why: "stays NaN: quiet bit set" },
+    Row { func: "normal::xy_fp16::pack2x16float", case: "±Inf", args: &[V::Vec2([INF, -INF])], expect: V::U32(0xfc00_7c00), why: "±Inf halves" },
+    Row { func: "normal::xy_fp16::pack2x16float", case: "out of range", args: &[V::Vec2([65_520.0, -1e9])], expect: V::U32(0xfc00_7c00), why: "rounds to ±Inf (WGSL: indeterminate, clamp first)" },
+    Row { func: "normal::xy_fp16::pack2x16float", case: "subnormal", args: &[V::Vec2([-SUB_MIN, 5.960_464_5e-8])], expect: V::U32(0x0001_8000), why: "−0 half; 2^-24 → smallest f16 subnormal" },
+    Row { func: "normal::xy_fp16::unpack2x16float", case: "NaN and +Inf halves", args: &[V::U32(0x7e00_7c00)], expect: V::Vec2([INF, NAN]), why: "exact: +Inf, NaN" },
+    Row { func: "normal::xy_fp16::unpack2x16float", case: "−Inf and −NaN halves", args: &[V::U32(0xfc00_fe00)], expect: V::Vec2([NAN, -INF]), why: "exact: NaN, −Inf" },
+    Row { func: "normal::xy_fp16::unpack2x16float", case: "subnormal halves", args: &[V::U32(0x0001_8001)], expect: V::Vec2([-5.960_464_5e-8, 5.960_464_5e-8]), why: "exact: ±2^-24, normal in f32" },
 ];
 
 // Normal encodings: the channel values k/255 and the rounded decodes the rows above name.
@@ -917,6 +950,11 @@ const B247: f32 = 247.0 / 255.0;
 const R3: f32 = 0.577_350_26;
 /// 1/√2 as decoders compute it, `1/√2` with each step correctly rounded.
 const R2: f32 = 0.707_106_77;
+
+/// WGSL's builtin `unpack2x16float` (twin: `normal::xy_fp16::unpack2x16float`) behind a callable
+/// name.
+const UNPACK2X16_WGSL: &str =
+    "fn bad_input_unpack2x16float(p: u32) -> vec2<f32> { return unpack2x16float(p); }";
 
 /// A `vec4` argument (the rgba8unorm decoders' channels).
 fn normal_vec4(v: V) -> [f32; 4] {
