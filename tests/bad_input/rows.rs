@@ -513,6 +513,26 @@ pub const FUNCS: &[Func] = &[
         wgsl: Some((UNPACK2X16_WGSL, "bad_input_unpack2x16float")),
         twin: |a| V::Vec2(xy_fp16::unpack2x16float(a[0].u32()).to_array()),
     },
+    Func {
+        name: "normal::oct::max_code",
+        wgsl: None,
+        twin: |a| normal_or_panic(|| V::U32(oct::max_code(a[0].u32()))),
+    },
+    Func {
+        name: "normal::oct::encode_precise",
+        wgsl: None,
+        twin: |a| normal_or_panic(|| V::U32(oct::encode_precise(a[0].vec3(), a[1].u32()))),
+    },
+    Func {
+        name: "normal::oct::encode_round",
+        wgsl: None,
+        twin: |a| normal_or_panic(|| V::U32(oct::encode_round(a[0].vec3(), a[1].u32()))),
+    },
+    Func {
+        name: "normal::oct::decode",
+        wgsl: None,
+        twin: |a| normal_or_panic(|| V::Vec3(oct::decode(a[0].u32(), a[1].u32()).to_array())),
+    },
 ];
 
 /// WGSL functions in `wgsl/` that are not public API (private helpers a file needs), exempt
@@ -938,6 +958,17 @@ pub const ROWS: &[Row] = &[
     Row { func: "normal::xy_fp16::unpack2x16float", case: "NaN and +Inf halves", args: &[V::U32(0x7e00_7c00)], expect: V::Vec2([INF, NAN]), why: "exact: +Inf, NaN" },
     Row { func: "normal::xy_fp16::unpack2x16float", case: "−Inf and −NaN halves", args: &[V::U32(0xfc00_fe00)], expect: V::Vec2([NAN, -INF]), why: "exact: NaN, −Inf" },
     Row { func: "normal::xy_fp16::unpack2x16float", case: "subnormal halves", args: &[V::U32(0x0001_8001)], expect: V::Vec2([-5.960_464_5e-8, 5.960_464_5e-8]), why: "exact: ±2^-24, normal in f32" },
+    // The generic octahedral functions: any bits outside 1..=16 panic (see `oct::max_code`).
+    Row { func: "normal::oct::max_code", case: "out-of-range bits 0", args: &[V::U32(0)], expect: V::Text(BITS_PANIC), why: "no code fits 0 bits" },
+    Row { func: "normal::oct::max_code", case: "out-of-range bits 17", args: &[V::U32(17)], expect: V::Text(BITS_PANIC), why: "M² would overflow the u32 scores" },
+    Row { func: "normal::oct::max_code", case: "out-of-range bits u32::MAX", args: &[V::U32(u32::MAX)], expect: V::Text(BITS_PANIC), why: "never wraps" },
+    Row { func: "normal::oct::encode_precise", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0]), V::U32(12)], expect: V::U32(0x007f_f7ff), why: "code of +z, as encode_normal_oct24" },
+    Row { func: "normal::oct::encode_precise", case: "out-of-range bits 0", args: &[V::Vec3([0.0, 0.0, 1.0]), V::U32(0)], expect: V::Text(BITS_PANIC), why: "never wraps" },
+    Row { func: "normal::oct::encode_precise", case: "out-of-range bits 17", args: &[V::Vec3([0.0, 0.0, 1.0]), V::U32(17)], expect: V::Text(BITS_PANIC), why: "two codes need 34 bits" },
+    Row { func: "normal::oct::encode_round", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0]), V::U32(16)], expect: V::U32(0x8000_8000), why: "code of +z, as encode_normal_oct32_fast" },
+    Row { func: "normal::oct::encode_round", case: "out-of-range bits 32", args: &[V::Vec3([0.0, 0.0, 1.0]), V::U32(32)], expect: V::Text(BITS_PANIC), why: "never wraps" },
+    Row { func: "normal::oct::decode", case: "all ones", args: &[V::U32(u32::MAX), V::U32(8)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "high bits ignored; corner = −z" },
+    Row { func: "normal::oct::decode", case: "out-of-range bits 0", args: &[V::U32(0), V::U32(0)], expect: V::Text(BITS_PANIC), why: "never wraps" },
 ];
 
 // Normal encodings: the channel values k/255 and the rounded decodes the rows above name.
@@ -955,6 +986,14 @@ const R2: f32 = 0.707_106_77;
 /// name.
 const UNPACK2X16_WGSL: &str =
     "fn bad_input_unpack2x16float(p: u32) -> vec2<f32> { return unpack2x16float(p); }";
+
+/// What the generic octahedral functions do with `bits` outside 1..=16.
+const BITS_PANIC: &str = "panics";
+
+/// `f()`, or [`BITS_PANIC`] if it panics (the panic message still prints).
+fn normal_or_panic(f: impl FnOnce() -> V) -> V {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or(V::Text(BITS_PANIC))
+}
 
 /// A `vec4` argument (the rgba8unorm decoders' channels).
 fn normal_vec4(v: V) -> [f32; 4] {
