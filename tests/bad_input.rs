@@ -55,6 +55,8 @@ fn text(v: V) -> String {
         V::Text(t) => t.to_string(),
         V::OptU32(None) => "None".to_string(),
         V::OptU32(Some(x)) => format!("Some({x:#x})"),
+        V::OptVec3(None) => "None".to_string(),
+        V::OptVec3(Some(x)) => format!("Some({})", list(&x)),
         V::I64(x) => format!("{x}"),
         V::Bool(x) => format!("{x}"),
         V::F64x3(x) => {
@@ -90,6 +92,8 @@ fn same(a: V, b: V) -> bool {
         (V::Vec4(x), V::Vec4(y)) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
         (V::F64(x), V::F64(y)) => x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()),
         (V::OptU32(x), V::OptU32(y)) => x == y,
+        (V::OptVec3(None), V::OptVec3(None)) => true,
+        (V::OptVec3(Some(x)), V::OptVec3(Some(y))) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
         (V::F64x3(x), V::F64x3(y)) => x
             .iter()
             .zip(&y)

@@ -18,7 +18,16 @@ use super::{normalize, sanitize};
 use glam::{IVec3, UVec2, Vec2, Vec3};
 
 /// `M = 2^bits − 1`, the largest code per axis.
+///
+/// **Bad input:** panics unless `1 ≤ bits ≤ 16` (the two codes must fit a `u32`, and the precise
+/// encoder's exact `|D|² ≤ M²` a `u32`). Every generic function below starts from `max_code`, so
+/// [`encode_precise`], [`encode_round`], [`decode`], [`continuous`] and [`lattice`] panic alike
+/// instead of wrapping silently in release builds.
 pub const fn max_code(bits: u32) -> u32 {
+    assert!(
+        bits >= 1 && bits <= 16,
+        "octahedral codes have 1 to 16 bits per axis"
+    );
     (1 << bits) - 1
 }
 
@@ -68,7 +77,8 @@ fn sin2(s: Vec3, uv: UVec2, bits: u32) -> f32 {
     super::dot(x, x) / len2
 }
 
-/// The survey's precise encoder with `bits` bits per axis (1..=16).
+/// The survey's precise encoder with `bits` bits per axis (1..=16; panics otherwise, see
+/// [`max_code`]).
 ///
 /// Of the four codes `floor(c) + {0, 1}²` around the continuous coordinates `c`, returns the one
 /// with the smallest computed `sin²` of the angle between the input and the code's direction,

@@ -14,11 +14,17 @@ use half::f16;
 /// WGSL's `pack2x16float(v)`: `v.x` to the low half, `v.y` to the high half, each rounded to the
 /// nearest f16 (ties to even, what lavapipe does; WGSL leaves inexact conversions to the
 /// implementation, and out-of-range values indeterminate: callers clamp first).
+///
+/// **Bad input (this twin; the WGSL builtin leaves these indeterminate):** NaN gives an f16 NaN
+/// of the same sign, quiet bit set, top payload bits kept (`0x7e00` for the default NaN and for
+/// the signalling `0x7f800001`); ±Inf and values rounding past 65504 (from 65520 up) give ±Inf; f32 subnormals
+/// round to a signed zero half.
 pub fn pack2x16float(v: Vec2) -> u32 {
     u32::from(f16::from_f32(v.x).to_bits()) | (u32::from(f16::from_f32(v.y).to_bits()) << 16)
 }
 
-/// WGSL's `unpack2x16float(p)`: exact (every f16 is an f32).
+/// WGSL's `unpack2x16float(p)`: exact (every f16 is an f32). Every bit pattern is accepted: NaN
+/// halves give NaN, ±Inf halves ±Inf, subnormal halves their exact (normal f32) value.
 pub fn unpack2x16float(p: u32) -> Vec2 {
     Vec2::new(
         f16::from_bits(p as u16).to_f32(),

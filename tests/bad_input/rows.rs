@@ -13,6 +13,7 @@ use prepass::lighting::aggregate as agg;
 use prepass::lighting::prepass as lpp;
 use prepass::lighting::volumes as vol;
 use prepass::linear_depth as ld;
+use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
 use prepass::position as pos;
 use prepass::precision::inputs::{self, ChannelError};
 use prepass::precision::metrics;
@@ -35,6 +36,7 @@ pub enum V {
     F64x2([f64; 2]),
     F64(f64),
     OptU32(Option<u32>),
+    OptVec3(Option<[f32; 3]>),
     // Rust-only argument and result types (the precision metrics and inputs).
     I64(i64),
     Bool(bool),
@@ -769,6 +771,198 @@ pub const FUNCS: &[Func] = &[
             ))
         },
     },
+    // Normal encodings
+    Func {
+        name: "normal::xyz8::encode_normal_xyz8",
+        wgsl: Some((prepass::wgsl::NORMAL_XYZ8, "encode_normal_xyz8")),
+        twin: |a| V::U32(xyz8::encode_normal_xyz8(a[0].vec3())),
+    },
+    Func {
+        name: "normal::xyz8::decode_normal_xyz8",
+        wgsl: Some((prepass::wgsl::NORMAL_XYZ8, "decode_normal_xyz8")),
+        twin: |a| V::Vec3(xyz8::decode_normal_xyz8(a[0].u32()).to_array()),
+    },
+    Func {
+        name: "normal::xyz8::encode_normal_xyz8_unorm",
+        wgsl: Some((prepass::wgsl::NORMAL_XYZ8, "encode_normal_xyz8_unorm")),
+        twin: |a| V::Vec4(xyz8::encode_normal_xyz8_unorm(a[0].vec3())),
+    },
+    Func {
+        name: "normal::xyz8::decode_normal_xyz8_unorm",
+        wgsl: Some((prepass::wgsl::NORMAL_XYZ8, "decode_normal_xyz8_unorm")),
+        twin: |a| V::Vec3(xyz8::decode_normal_xyz8_unorm(normal_vec4(a[0])).to_array()),
+    },
+    Func {
+        name: "normal::xy_fp16::encode_normal_xy_fp16",
+        wgsl: Some((prepass::wgsl::NORMAL_XY_FP16, "encode_normal_xy_fp16")),
+        twin: |a| V::U32(xy_fp16::encode_normal_xy_fp16(a[0].vec3())),
+    },
+    Func {
+        name: "normal::xy_fp16::decode_normal_xy_fp16",
+        wgsl: Some((prepass::wgsl::NORMAL_XY_FP16, "decode_normal_xy_fp16")),
+        twin: |a| V::Vec3(xy_fp16::decode_normal_xy_fp16(a[0].u32()).to_array()),
+    },
+    Func {
+        name: "normal::xy_fp16::encode_normal_xy_fp16_unorm",
+        wgsl: Some((prepass::wgsl::NORMAL_XY_FP16, "encode_normal_xy_fp16_unorm")),
+        twin: |a| V::Vec4(xy_fp16::encode_normal_xy_fp16_unorm(a[0].vec3())),
+    },
+    Func {
+        name: "normal::xy_fp16::decode_normal_xy_fp16_unorm",
+        wgsl: Some((prepass::wgsl::NORMAL_XY_FP16, "decode_normal_xy_fp16_unorm")),
+        twin: |a| V::Vec3(xy_fp16::decode_normal_xy_fp16_unorm(normal_vec4(a[0])).to_array()),
+    },
+    Func {
+        name: "normal::oct::encode_normal_oct16",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct16")),
+        twin: |a| V::U32(oct::encode_normal_oct16(a[0].vec3())),
+    },
+    Func {
+        name: "normal::oct::encode_normal_oct16_fast",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct16_fast")),
+        twin: |a| V::U32(oct::encode_normal_oct16_fast(a[0].vec3())),
+    },
+    Func {
+        name: "normal::oct::decode_normal_oct16",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct16")),
+        twin: |a| V::Vec3(oct::decode_normal_oct16(a[0].u32()).to_array()),
+    },
+    // The WGSL render-target form of oct16 is rg8unorm (vec2); the twin takes [c0, c1, 0, 0].
+    Func {
+        name: "normal::oct::encode_normal_oct16_unorm",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct16_unorm")),
+        twin: |a| {
+            let c = oct::encode_normal_oct16_unorm(a[0].vec3());
+            V::Vec2([c[0], c[1]])
+        },
+    },
+    Func {
+        name: "normal::oct::decode_normal_oct16_unorm",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct16_unorm")),
+        twin: |a| {
+            let c = a[0].vec2();
+            V::Vec3(oct::decode_normal_oct16_unorm([c.x, c.y, 0.0, 0.0]).to_array())
+        },
+    },
+    Func {
+        name: "normal::oct::encode_normal_oct24",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct24")),
+        twin: |a| V::U32(oct::encode_normal_oct24(a[0].vec3())),
+    },
+    Func {
+        name: "normal::oct::encode_normal_oct24_fast",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct24_fast")),
+        twin: |a| V::U32(oct::encode_normal_oct24_fast(a[0].vec3())),
+    },
+    Func {
+        name: "normal::oct::decode_normal_oct24",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct24")),
+        twin: |a| V::Vec3(oct::decode_normal_oct24(a[0].u32()).to_array()),
+    },
+    Func {
+        name: "normal::oct::encode_normal_oct24_unorm",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct24_unorm")),
+        twin: |a| V::Vec4(oct::encode_normal_oct24_unorm(a[0].vec3())),
+    },
+    Func {
+        name: "normal::oct::decode_normal_oct24_unorm",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct24_unorm")),
+        twin: |a| V::Vec3(oct::decode_normal_oct24_unorm(normal_vec4(a[0])).to_array()),
+    },
+    Func {
+        name: "normal::oct::encode_normal_oct32",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct32")),
+        twin: |a| V::U32(oct::encode_normal_oct32(a[0].vec3())),
+    },
+    Func {
+        name: "normal::oct::encode_normal_oct32_fast",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct32_fast")),
+        twin: |a| V::U32(oct::encode_normal_oct32_fast(a[0].vec3())),
+    },
+    Func {
+        name: "normal::oct::decode_normal_oct32",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct32")),
+        twin: |a| V::Vec3(oct::decode_normal_oct32(a[0].u32()).to_array()),
+    },
+    Func {
+        name: "normal::oct::encode_normal_oct32_unorm",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct32_unorm")),
+        twin: |a| V::Vec4(oct::encode_normal_oct32_unorm(a[0].vec3())),
+    },
+    Func {
+        name: "normal::oct::decode_normal_oct32_unorm",
+        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct32_unorm")),
+        twin: |a| V::Vec3(oct::decode_normal_oct32_unorm(normal_vec4(a[0])).to_array()),
+    },
+    Func {
+        name: "normal::hemioct::encode_normal_hemioct24",
+        wgsl: Some((prepass::wgsl::NORMAL_HEMIOCT, "encode_normal_hemioct24")),
+        twin: |a| V::U32(hemioct::encode_normal_hemioct24(a[0].vec3())),
+    },
+    Func {
+        name: "normal::hemioct::encode_normal_hemioct24_fast",
+        wgsl: Some((
+            prepass::wgsl::NORMAL_HEMIOCT,
+            "encode_normal_hemioct24_fast",
+        )),
+        twin: |a| V::U32(hemioct::encode_normal_hemioct24_fast(a[0].vec3())),
+    },
+    Func {
+        name: "normal::hemioct::decode_normal_hemioct24",
+        wgsl: Some((prepass::wgsl::NORMAL_HEMIOCT, "decode_normal_hemioct24")),
+        twin: |a| V::Vec3(hemioct::decode_normal_hemioct24(a[0].u32()).to_array()),
+    },
+    Func {
+        name: "normal::hemioct::encode_normal_hemioct24_unorm",
+        wgsl: Some((
+            prepass::wgsl::NORMAL_HEMIOCT,
+            "encode_normal_hemioct24_unorm",
+        )),
+        twin: |a| V::Vec4(hemioct::encode_normal_hemioct24_unorm(a[0].vec3())),
+    },
+    Func {
+        name: "normal::hemioct::decode_normal_hemioct24_unorm",
+        wgsl: Some((
+            prepass::wgsl::NORMAL_HEMIOCT,
+            "decode_normal_hemioct24_unorm",
+        )),
+        twin: |a| V::Vec3(hemioct::decode_normal_hemioct24_unorm(normal_vec4(a[0])).to_array()),
+    },
+    Func {
+        name: "normal::sanitize",
+        wgsl: None,
+        twin: |a| V::OptVec3(prepass::normal::sanitize(a[0].vec3()).map(|v| v.to_array())),
+    },
+    Func {
+        name: "normal::xy_fp16::pack2x16float",
+        wgsl: None,
+        twin: |a| V::U32(xy_fp16::pack2x16float(a[0].vec2())),
+    },
+    Func {
+        name: "normal::xy_fp16::unpack2x16float",
+        wgsl: Some((UNPACK2X16_WGSL, "bad_input_unpack2x16float")),
+        twin: |a| V::Vec2(xy_fp16::unpack2x16float(a[0].u32()).to_array()),
+    },
+    Func {
+        name: "normal::oct::max_code",
+        wgsl: None,
+        twin: |a| normal_or_panic(|| V::U32(oct::max_code(a[0].u32()))),
+    },
+    Func {
+        name: "normal::oct::encode_precise",
+        wgsl: None,
+        twin: |a| normal_or_panic(|| V::U32(oct::encode_precise(a[0].vec3(), a[1].u32()))),
+    },
+    Func {
+        name: "normal::oct::encode_round",
+        wgsl: None,
+        twin: |a| normal_or_panic(|| V::U32(oct::encode_round(a[0].vec3(), a[1].u32()))),
+    },
+    Func {
+        name: "normal::oct::decode",
+        wgsl: None,
+        twin: |a| normal_or_panic(|| V::Vec3(oct::decode(a[0].u32(), a[1].u32()).to_array())),
+    },
 ];
 
 /// WGSL functions in `wgsl/` that are not public API (private helpers a file needs), exempt
@@ -829,6 +1023,63 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
     (
         "light_volume_finite3",
         "private to light_volumes.wgsl: finiteness test on bits, exercised by the NaN/Inf rows",
+    ),
+    // Normal encodings
+    (
+        "xyz8_sanitize",
+        "private to normal_xyz8.wgsl: NaN/Inf/subnormal handling, exercised by every encoder row",
+    ),
+    (
+        "xyfp16_sanitize",
+        "private to normal_xy_fp16.wgsl: NaN/Inf/subnormal handling, exercised by every encoder row",
+    ),
+    (
+        "oct_sanitize",
+        "private to normal_oct.wgsl: NaN/Inf/subnormal handling, exercised by every encoder row",
+    ),
+    (
+        "oct_continuous",
+        "private to normal_oct.wgsl: continuous code coordinates, behind every oct encoder row",
+    ),
+    (
+        "oct_lattice",
+        "private to normal_oct.wgsl: a code's integer vector, behind every oct decoder row",
+    ),
+    (
+        "oct_sin2",
+        "private to normal_oct.wgsl: the precise encoders' score, behind their rows",
+    ),
+    (
+        "oct_encode_precise",
+        "private to normal_oct.wgsl: body of encode_normal_oct16/24/32, each with rows",
+    ),
+    (
+        "oct_encode_round",
+        "private to normal_oct.wgsl: body of the _fast encoders, each with rows",
+    ),
+    (
+        "oct_decode",
+        "private to normal_oct.wgsl: body of the oct decoders, each with rows",
+    ),
+    (
+        "oct_unorm_bytes",
+        "private to normal_oct.wgsl: channels to bytes, exercised by the _unorm decoder rows",
+    ),
+    (
+        "hemioct_sanitize",
+        "private to normal_hemioct.wgsl: NaN/Inf/subnormal/z < 0 handling, behind every encoder row",
+    ),
+    (
+        "hemioct_continuous",
+        "private to normal_hemioct.wgsl: continuous code coordinates, behind the encoder rows",
+    ),
+    (
+        "hemioct_lattice",
+        "private to normal_hemioct.wgsl: a code's integer vector, behind the decoder rows",
+    ),
+    (
+        "hemioct_sin2",
+        "private to normal_hemioct.wgsl: the precise encoder's score, behind its rows",
     ),
 ];
 
@@ -1196,4 +1447,249 @@ pub const ROWS: &[Row] = &[
     Row { func: "lighting::volumes::sphere_depth_bounds24", case: "subnormal radius at the near plane", args: &[V::F32(1.0), V::F32(SUB_MAX), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::UVec2([0, 48]), why: "ceil(48u·(2^24 − 1))" },
     Row { func: "lighting::volumes::exact::window_depth", case: "NaN", args: &[V::F64(f64::NAN), V::F64(1.0), V::F64(2.0), V::U32(0)], expect: V::F64(f64::NAN), why: "propagates (reference only)" },
     Row { func: "lighting::volumes::exact::window_depth", case: "+Inf view depth, far +Inf", args: &[V::F64(f64::INFINITY), V::F64(1.0), V::F64(f64::INFINITY), V::U32(1)], expect: V::F64(0.0), why: "n/∞ = 0" },
+    // Normal encodings
+    // Encoders: NaN, zero and all-subnormal vectors give the code of +z; infinities give the
+    // direction of their signs; subnormal components count as 0; any finite length is normalised.
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x00ff_8080), why: "NaN anywhere → code of +z" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x00ff_8080), why: "every NaN → code of +z" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x0080_80ff), why: "infinities win: code of +x" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x0080_25da), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0x8080), why: "infinities win: code of −z" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x00ff_8080), why: "all subnormal = zero → code of +z" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0x0080_ff80), why: "subnormals count as 0: code of +y" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x00ff_8080), why: "code of +z" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x00ff_8080), why: "code of +z" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0x00c9_c9c9), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x0080_0080), why: "no underflow: code of −y" },
+    Row { func: "normal::xyz8::encode_normal_xyz8", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x0080_80ff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0), why: "NaN anywhere → code of +z" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0), why: "every NaN → code of +z" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x3c00), why: "infinities win: code of +x" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0xb9a8_39a8), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0), why: "infinities win: code of −z" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0), why: "all subnormal = zero → code of +z" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0x3c00_0000), why: "subnormals count as 0: code of +y" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0), why: "code of +z" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0), why: "code of +z" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0x389e_389e), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0xbc00_0000), why: "no underflow: code of −y" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x3c00), why: "the tiny one vanishes: code of +x" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16", case: "out of range: z < 0", args: &[V::Vec3([0.0, 0.0, -1.0])], expect: V::U32(0), why: "sign of z not stored: code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x7f7f), why: "NaN anywhere → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x7f7f), why: "every NaN → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x7fff), why: "infinities win: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x40bf), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0xffff), why: "infinities win: code of −z" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x7f7f), why: "all subnormal = zero → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0xff7f), why: "subnormals count as 0: code of +y" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x7f7f), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x7f7f), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0xaaaa), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x7f), why: "no underflow: code of −y" },
+    Row { func: "normal::oct::encode_normal_oct16", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x7fff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x8080), why: "NaN anywhere → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x8080), why: "every NaN → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x80ff), why: "infinities win: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x40bf), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0xffff), why: "infinities win: code of −z" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x8080), why: "all subnormal = zero → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0xff80), why: "subnormals count as 0: code of +y" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x8080), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x8080), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0xaaaa), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x80), why: "no underflow: code of −y" },
+    Row { func: "normal::oct::encode_normal_oct16_fast", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x80ff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x007f_f7ff), why: "NaN anywhere → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x007f_f7ff), why: "every NaN → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x007f_ffff), why: "infinities win: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x0040_0bff), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0x00ff_ffff), why: "infinities win: code of −z" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x007f_f7ff), why: "all subnormal = zero → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0x00ff_f7ff), why: "subnormals count as 0: code of +y" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x007f_f7ff), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x007f_f7ff), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0x00aa_aaaa), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x7ff), why: "no underflow: code of −y" },
+    Row { func: "normal::oct::encode_normal_oct24", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x007f_ffff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x0080_0800), why: "NaN anywhere → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x0080_0800), why: "every NaN → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x0080_0fff), why: "infinities win: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x0040_0bff), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0x00ff_ffff), why: "infinities win: code of −z" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x0080_0800), why: "all subnormal = zero → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0x00ff_f800), why: "subnormals count as 0: code of +y" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x0080_0800), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x0080_0800), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0x00aa_aaaa), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x800), why: "no underflow: code of −y" },
+    Row { func: "normal::oct::encode_normal_oct24_fast", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x0080_0fff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x7fff_7fff), why: "NaN anywhere → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x7fff_7fff), why: "every NaN → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x7fff_ffff), why: "infinities win: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x4000_bfff), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0xffff_ffff), why: "infinities win: code of −z" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x7fff_7fff), why: "all subnormal = zero → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0xffff_7fff), why: "subnormals count as 0: code of +y" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x7fff_7fff), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x7fff_7fff), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0xaaaa_aaaa), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x7fff), why: "no underflow: code of −y" },
+    Row { func: "normal::oct::encode_normal_oct32", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x7fff_ffff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x8000_8000), why: "NaN anywhere → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x8000_8000), why: "every NaN → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x8000_ffff), why: "infinities win: code of +x" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x4000_bfff), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0xffff_ffff), why: "infinities win: code of −z" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x8000_8000), why: "all subnormal = zero → code of +z" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0xffff_8000), why: "subnormals count as 0: code of +y" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x8000_8000), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x8000_8000), why: "code of +z" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0xaaaa_aaaa), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x8000), why: "no underflow: code of −y" },
+    Row { func: "normal::oct::encode_normal_oct32_fast", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x8000_ffff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x007f_f7ff), why: "NaN anywhere → code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x007f_f7ff), why: "every NaN → code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x00ff_ffff), why: "infinities win: code of +x" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x00ff_f7ff), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0x007f_f7ff), why: "−z clamped to the equator: zero → code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x007f_f7ff), why: "all subnormal = zero → code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0xfff), why: "subnormals count as 0: code of +y" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x007f_f7ff), why: "code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x007f_f7ff), why: "code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0x007f_fd54), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x00ff_f000), why: "no underflow: code of −y" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x00ff_ffff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24", case: "out of range: z < 0", args: &[V::Vec3([1.0, 0.0, -5.0])], expect: V::U32(0x00ff_ffff), why: "z clamped to 0: code of +x" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x0080_0800), why: "NaN anywhere → code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x0080_0800), why: "every NaN → code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x00ff_ffff), why: "infinities win: code of +x" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x00ff_f800), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0x0080_0800), why: "−z clamped to the equator: zero → code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x0080_0800), why: "all subnormal = zero → code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0xfff), why: "subnormals count as 0: code of +y" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x0080_0800), why: "code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x0080_0800), why: "code of +z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0x0080_0d55), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x00ff_f000), why: "no underflow: code of −y" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x00ff_ffff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_fast", case: "out of range: z < 0", args: &[V::Vec3([1.0, 0.0, -5.0])], expect: V::U32(0x00ff_ffff), why: "z clamped to 0: code of +x" },
+    // Normal decoders: every bit pattern gives a finite unit vector; unused high bits are ignored.
+    // No xyz8 code decodes to an exact f32 vector (three odd integers: |D|² ≡ 3 mod 8 is never a
+    // square), so its rows give v/√(v·v) with each step correctly rounded, as documented.
+    Row { func: "normal::xyz8::decode_normal_xyz8", case: "all ones (byte 3 set)", args: &[V::U32(u32::MAX)], expect: V::Vec3([R3, R3, R3]), why: "byte 3 ignored: (1, 1, 1)/√3, rounded" },
+    Row { func: "normal::xyz8::decode_normal_xyz8", case: "byte 3 only", args: &[V::U32(0xab00_0000)], expect: V::Vec3([-R3, -R3, -R3]), why: "byte 3 ignored: (−1, −1, −1)/√3, rounded" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16", case: "NaN halves", args: &[V::U32(0x7e00_7e00)], expect: V::Vec3([0.0, 0.0, 1.0]), why: "NaN halves count as 0: +z" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16", case: "−NaN halves (all ones)", args: &[V::U32(u32::MAX)], expect: V::Vec3([0.0, 0.0, 1.0]), why: "NaN halves count as 0: +z" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16", case: "+Inf half", args: &[V::U32(0x0000_7c00)], expect: V::Vec3([1.0, 0.0, 0.0]), why: "clamped to 1: +x" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16", case: "NaN and −Inf halves", args: &[V::U32(0xfc00_7e00)], expect: V::Vec3([0.0, -1.0, 0.0]), why: "x = 0, y clamped to −1: −y" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16", case: "±Inf halves: x² + y² > 1", args: &[V::U32(0x7c00_7c00)], expect: V::Vec3([R2, R2, 0.0]), why: "clamped to (1, 1), z = 0: (1, 1, 0)/√2, rounded" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16", case: "out-of-range half −2", args: &[V::U32(0xc000_0000)], expect: V::Vec3([0.0, -1.0, 0.0]), why: "clamped to −1: −y" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16", case: "subnormal half", args: &[V::U32(0x0000_0001)], expect: V::Vec3([5.960_464_5e-8, 0.0, 1.0]), why: "2^-24 is a normal f32: kept; z rounds to 1" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16", case: "−0.0 halves", args: &[V::U32(0x8000_8000)], expect: V::Vec3([-0.0, -0.0, 1.0]), why: "+z; the zeros keep their signs" },
+    Row { func: "normal::oct::decode_normal_oct16", case: "all ones (unused bits 16–31 set)", args: &[V::U32(u32::MAX)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "high bits ignored; corner (M, M) = −z" },
+    Row { func: "normal::oct::decode_normal_oct16", case: "unused bits 16–31 only", args: &[V::U32(0xabcd_0000)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "high bits ignored; corner (0, 0) = −z" },
+    Row { func: "normal::oct::decode_normal_oct24", case: "all ones (unused bits 24–31 set)", args: &[V::U32(u32::MAX)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "high bits ignored; corner (M, M) = −z" },
+    Row { func: "normal::oct::decode_normal_oct24", case: "unused bits 24–31 only", args: &[V::U32(0xff00_0000)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "high bits ignored; corner (0, 0) = −z" },
+    Row { func: "normal::oct::decode_normal_oct32", case: "all ones", args: &[V::U32(u32::MAX)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "corner (M, M) = −z" },
+    Row { func: "normal::oct::decode_normal_oct32", case: "corner (M, 0)", args: &[V::U32(0x0000_ffff)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "every corner is −z" },
+    Row { func: "normal::hemioct::decode_normal_hemioct24", case: "all ones (unused bits 24–31 set)", args: &[V::U32(u32::MAX)], expect: V::Vec3([1.0, 0.0, 0.0]), why: "high bits ignored; corner (M, M) = +x" },
+    Row { func: "normal::hemioct::decode_normal_hemioct24", case: "unused bits 24–31 only", args: &[V::U32(0xff00_0000)], expect: V::Vec3([-1.0, 0.0, 0.0]), why: "high bits ignored; corner (0, 0) = −x" },
+    Row { func: "normal::hemioct::decode_normal_hemioct24", case: "unused bits set, corner (M, 0)", args: &[V::U32(0xab00_0fff)], expect: V::Vec3([0.0, 1.0, 0.0]), why: "high bits ignored; +y" },
+    // Render-target forms: encoders write byte/255 (alpha 0 where free); decoders clamp each
+    // channel to [0, 1] (NaN counts as 0) and round it back to its byte.
+    Row { func: "normal::xyz8::encode_normal_xyz8_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec4([B128, B128, 1.0, 0.0]), why: "+z: bytes (128, 128, 255, 0)" },
+    Row { func: "normal::xyz8::encode_normal_xyz8_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec4([1.0, B128, B128, 0.0]), why: "+x: bytes (255, 128, 128, 0)" },
+    Row { func: "normal::xyz8::encode_normal_xyz8_unorm", case: "subnormal", args: &[V::Vec3([SUB_MAX, SUB_MIN, 0.0])], expect: V::Vec4([B128, B128, 1.0, 0.0]), why: "counts as zero: +z" },
+    Row { func: "normal::xyz8::encode_normal_xyz8_unorm", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::Vec4([B128, B128, 1.0, 0.0]), why: "+z" },
+    Row { func: "normal::xyz8::decode_normal_xyz8_unorm", case: "NaN", args: &[V::Vec4([NAN, NAN, NAN, NAN])], expect: V::Vec3([-R3, -R3, -R3]), why: "bytes 0: (−1, −1, −1)/√3, rounded" },
+    Row { func: "normal::xyz8::decode_normal_xyz8_unorm", case: "out of range, ±Inf, NaN", args: &[V::Vec4([2.0, -1.0, NAN, INF])], expect: V::Vec3([R3, -R3, -R3]), why: "bytes (255, 0, 0): (1, −1, −1)/√3, rounded" },
+    Row { func: "normal::xyz8::decode_normal_xyz8_unorm", case: "+Inf", args: &[V::Vec4([INF, INF, INF, -INF])], expect: V::Vec3([R3, R3, R3]), why: "clamped to 1: (1, 1, 1)/√3, rounded" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec4([0.0, 0.0, 0.0, 0.0]), why: "+z: both halves 0" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec4([0.0, B60, 0.0, 0.0]), why: "+x: x half 0x3c00" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16_unorm", case: "subnormal", args: &[V::Vec3([SUB_MAX, SUB_MIN, 0.0])], expect: V::Vec4([0.0, 0.0, 0.0, 0.0]), why: "counts as zero: +z" },
+    Row { func: "normal::xy_fp16::encode_normal_xy_fp16_unorm", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::Vec4([0.0, 0.0, 0.0, 0.0]), why: "+z" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16_unorm", case: "NaN", args: &[V::Vec4([NAN, NAN, NAN, NAN])], expect: V::Vec3([0.0, 0.0, 1.0]), why: "bytes 0: halves 0: +z" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16_unorm", case: "out of range, −Inf, NaN", args: &[V::Vec4([-1.0, B60, NAN, -INF])], expect: V::Vec3([1.0, 0.0, 0.0]), why: "bytes (0, 60, 0, 0): x half 1.0: +x" },
+    Row { func: "normal::xy_fp16::decode_normal_xy_fp16_unorm", case: "+Inf", args: &[V::Vec4([INF, INF, INF, INF])], expect: V::Vec3([0.0, 0.0, 1.0]), why: "bytes 255: NaN halves count as 0: +z" },
+    Row { func: "normal::oct::encode_normal_oct16_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec2([B127, B127]), why: "+z: code (127, 127)" },
+    Row { func: "normal::oct::encode_normal_oct16_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec2([1.0, B127]), why: "+x: code (255, 127)" },
+    Row { func: "normal::oct::encode_normal_oct16_unorm", case: "zero vector", args: &[V::Vec3([0.0, -0.0, 0.0])], expect: V::Vec2([B127, B127]), why: "+z" },
+    Row { func: "normal::oct::decode_normal_oct16_unorm", case: "NaN", args: &[V::Vec2([NAN, NAN])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "bytes 0: corner (0, 0) = −z" },
+    Row { func: "normal::oct::decode_normal_oct16_unorm", case: "out of range, +Inf", args: &[V::Vec2([INF, -1.0])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "bytes (255, 0): corner = −z" },
+    Row { func: "normal::oct::decode_normal_oct16_unorm", case: "out of range", args: &[V::Vec2([2.0, 7.0])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "clamped to 1: corner (255, 255) = −z" },
+    Row { func: "normal::oct::encode_normal_oct24_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec4([1.0, B247, B127, 0.0]), why: "+z: code 0x7ff7ff, alpha 0" },
+    Row { func: "normal::oct::encode_normal_oct24_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec4([1.0, 1.0, B127, 0.0]), why: "+x: code 0x7fffff" },
+    Row { func: "normal::oct::encode_normal_oct24_unorm", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::Vec4([1.0, B247, B127, 0.0]), why: "+z" },
+    Row { func: "normal::oct::decode_normal_oct24_unorm", case: "NaN", args: &[V::Vec4([NAN, NAN, NAN, NAN])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "bytes 0: corner (0, 0) = −z" },
+    Row { func: "normal::oct::decode_normal_oct24_unorm", case: "+Inf (alpha set)", args: &[V::Vec4([INF, INF, INF, INF])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "alpha ignored; corner (M, M) = −z" },
+    Row { func: "normal::oct::encode_normal_oct32_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec4([1.0, B127, 1.0, B127]), why: "+z: code 0x7fff7fff" },
+    Row { func: "normal::oct::encode_normal_oct32_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec4([1.0, 1.0, 1.0, B127]), why: "+x: code 0x7fffffff" },
+    Row { func: "normal::oct::encode_normal_oct32_unorm", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::Vec4([1.0, B127, 1.0, B127]), why: "+z" },
+    Row { func: "normal::oct::decode_normal_oct32_unorm", case: "NaN", args: &[V::Vec4([NAN, NAN, NAN, NAN])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "bytes 0: corner (0, 0) = −z" },
+    Row { func: "normal::oct::decode_normal_oct32_unorm", case: "out of range, ±Inf", args: &[V::Vec4([2.0, INF, -INF, -1.0])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "code (0xffff, 0): corner = −z" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec4([1.0, B247, B127, 0.0]), why: "+z: code 0x7ff7ff, alpha 0" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec4([1.0, 1.0, 1.0, 0.0]), why: "+x: code 0xffffff" },
+    Row { func: "normal::hemioct::encode_normal_hemioct24_unorm", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::Vec4([1.0, B247, B127, 0.0]), why: "+z" },
+    Row { func: "normal::hemioct::decode_normal_hemioct24_unorm", case: "NaN", args: &[V::Vec4([NAN, NAN, NAN, NAN])], expect: V::Vec3([-1.0, 0.0, 0.0]), why: "bytes 0: corner (0, 0) = −x" },
+    Row { func: "normal::hemioct::decode_normal_hemioct24_unorm", case: "+Inf (alpha set)", args: &[V::Vec4([INF, INF, INF, INF])], expect: V::Vec3([1.0, 0.0, 0.0]), why: "alpha ignored; corner (M, M) = +x" },
+    Row { func: "normal::hemioct::decode_normal_hemioct24_unorm", case: "out of range, −Inf, NaN", args: &[V::Vec4([INF, B15, -1.0, NAN])], expect: V::Vec3([0.0, 1.0, 0.0]), why: "code (0xfff, 0): +y" },
+    // The shared encoder front end and the f16 conversions (the WGSL builtins' twins).
+    Row { func: "normal::sanitize", case: "NaN", args: &[V::Vec3([NAN, 0.0, 1.0])], expect: V::OptVec3(None), why: "degenerate: the encoders use +z" },
+    Row { func: "normal::sanitize", case: "zero vector", args: &[V::Vec3([0.0, -0.0, 0.0])], expect: V::OptVec3(None), why: "degenerate" },
+    Row { func: "normal::sanitize", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MAX, 0.0])], expect: V::OptVec3(None), why: "all subnormal = zero: degenerate" },
+    Row { func: "normal::sanitize", case: "±Inf", args: &[V::Vec3([INF, -5.0, -INF])], expect: V::OptVec3(Some([1.0, -0.0, -1.0])), why: "signs of the infinities, signed zero elsewhere" },
+    Row { func: "normal::sanitize", case: "subnormal component", args: &[V::Vec3([-0.0, 1.0, SUB_MIN])], expect: V::OptVec3(Some([-0.0, 1.0, 0.0])), why: "flushed to signed zero" },
+    Row { func: "normal::sanitize", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, -3.0])], expect: V::OptVec3(Some([3.999_999_8, 0.0, -3.0 * f32::MIN_POSITIVE])), why: "scaled by 2^-126 into [1, 4); 2^-252 flushed" },
+    Row { func: "normal::sanitize", case: "non-unit: tiny", args: &[V::Vec3([0.0, -SUB_MAX, f32::MIN_POSITIVE])], expect: V::OptVec3(Some([0.0, -0.0, 1.0])), why: "scaled by 2^126; subnormal flushed first" },
+    Row { func: "normal::xy_fp16::pack2x16float", case: "NaN", args: &[V::Vec2([NAN, NEG_NAN])], expect: V::U32(0xfe00_7e00), why: "quiet f16 NaN, sign kept (WGSL: indeterminate)" },
+    Row { func: "normal::xy_fp16::pack2x16float", case: "NaN (signalling)", args: &[V::Vec2([SNAN, 0.0])], expect: V::U32(0x7e00), why: "stays NaN: quiet bit set" },
+    Row { func: "normal::xy_fp16::pack2x16float", case: "±Inf", args: &[V::Vec2([INF, -INF])], expect: V::U32(0xfc00_7c00), why: "±Inf halves" },
+    Row { func: "normal::xy_fp16::pack2x16float", case: "out of range", args: &[V::Vec2([65_520.0, -1e9])], expect: V::U32(0xfc00_7c00), why: "rounds to ±Inf (WGSL: indeterminate, clamp first)" },
+    Row { func: "normal::xy_fp16::pack2x16float", case: "subnormal", args: &[V::Vec2([-SUB_MIN, 5.960_464_5e-8])], expect: V::U32(0x0001_8000), why: "−0 half; 2^-24 → smallest f16 subnormal" },
+    Row { func: "normal::xy_fp16::unpack2x16float", case: "NaN and +Inf halves", args: &[V::U32(0x7e00_7c00)], expect: V::Vec2([INF, NAN]), why: "exact: +Inf, NaN" },
+    Row { func: "normal::xy_fp16::unpack2x16float", case: "−Inf and −NaN halves", args: &[V::U32(0xfc00_fe00)], expect: V::Vec2([NAN, -INF]), why: "exact: NaN, −Inf" },
+    Row { func: "normal::xy_fp16::unpack2x16float", case: "subnormal halves", args: &[V::U32(0x0001_8001)], expect: V::Vec2([-5.960_464_5e-8, 5.960_464_5e-8]), why: "exact: ±2^-24, normal in f32" },
+    // The generic octahedral functions: any bits outside 1..=16 panic (see `oct::max_code`).
+    Row { func: "normal::oct::max_code", case: "out-of-range bits 0", args: &[V::U32(0)], expect: V::Text(BITS_PANIC), why: "no code fits 0 bits" },
+    Row { func: "normal::oct::max_code", case: "out-of-range bits 17", args: &[V::U32(17)], expect: V::Text(BITS_PANIC), why: "M² would overflow the u32 scores" },
+    Row { func: "normal::oct::max_code", case: "out-of-range bits u32::MAX", args: &[V::U32(u32::MAX)], expect: V::Text(BITS_PANIC), why: "never wraps" },
+    Row { func: "normal::oct::encode_precise", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0]), V::U32(12)], expect: V::U32(0x007f_f7ff), why: "code of +z, as encode_normal_oct24" },
+    Row { func: "normal::oct::encode_precise", case: "out-of-range bits 0", args: &[V::Vec3([0.0, 0.0, 1.0]), V::U32(0)], expect: V::Text(BITS_PANIC), why: "never wraps" },
+    Row { func: "normal::oct::encode_precise", case: "out-of-range bits 17", args: &[V::Vec3([0.0, 0.0, 1.0]), V::U32(17)], expect: V::Text(BITS_PANIC), why: "two codes need 34 bits" },
+    Row { func: "normal::oct::encode_round", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0]), V::U32(16)], expect: V::U32(0x8000_8000), why: "code of +z, as encode_normal_oct32_fast" },
+    Row { func: "normal::oct::encode_round", case: "out-of-range bits 32", args: &[V::Vec3([0.0, 0.0, 1.0]), V::U32(32)], expect: V::Text(BITS_PANIC), why: "never wraps" },
+    Row { func: "normal::oct::decode", case: "all ones", args: &[V::U32(u32::MAX), V::U32(8)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "high bits ignored; corner = −z" },
+    Row { func: "normal::oct::decode", case: "out-of-range bits 0", args: &[V::U32(0), V::U32(0)], expect: V::Text(BITS_PANIC), why: "never wraps" },
 ];
+
+// Normal encodings: the channel values k/255 and the rounded decodes the rows above name.
+const B15: f32 = 15.0 / 255.0;
+const B60: f32 = 60.0 / 255.0;
+const B127: f32 = 127.0 / 255.0;
+const B128: f32 = 128.0 / 255.0;
+const B247: f32 = 247.0 / 255.0;
+/// 1/√3 as decoders compute it, `255/√195075` with each step correctly rounded.
+const R3: f32 = 0.577_350_26;
+/// 1/√2 as decoders compute it, `1/√2` with each step correctly rounded.
+const R2: f32 = 0.707_106_77;
+
+/// WGSL's builtin `unpack2x16float` (twin: `normal::xy_fp16::unpack2x16float`) behind a callable
+/// name.
+const UNPACK2X16_WGSL: &str =
+    "fn bad_input_unpack2x16float(p: u32) -> vec2<f32> { return unpack2x16float(p); }";
+
+/// What the generic octahedral functions do with `bits` outside 1..=16.
+const BITS_PANIC: &str = "panics";
+
+/// `f()`, or [`BITS_PANIC`] if it panics (the panic message still prints).
+fn normal_or_panic(f: impl FnOnce() -> V) -> V {
+    std::panic::catch_unwind(std::panic::AssertUnwindSafe(f)).unwrap_or(V::Text(BITS_PANIC))
+}
+
+/// A `vec4` argument (the rgba8unorm decoders' channels).
+fn normal_vec4(v: V) -> [f32; 4] {
+    match v {
+        V::Vec4(x) => x,
+        v => panic!("{v:?} is not a vec4"),
+    }
+}
