@@ -247,8 +247,13 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     ctx.csv("error_vs_cost.csv", &csv)?;
 
     // One Pareto plot per family: max error against the best cost measure available.
-    let mut families: Vec<&str> = variants.iter().map(|v| v.family).collect();
-    families.dedup();
+    // Families in first-seen order; a section may interleave two families' variants.
+    let mut families: Vec<&str> = Vec::new();
+    for v in &variants {
+        if !families.contains(&v.family) {
+            families.push(v.family);
+        }
+    }
     for family in &families {
         let members: Vec<(&Variant, &Costs)> = variants
             .iter()
