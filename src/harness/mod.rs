@@ -455,25 +455,14 @@ impl Kernel<'_> {
                 contents: &vec![0u8; codegen::uniform_words(args.len()) * 4],
                 usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             });
-        let mut entries = vec![wgpu::BindGroupEntry {
-            binding: 0,
-            resource: params.as_entire_binding(),
-        }];
-        for (b, (_, buf, _)) in columns.iter().enumerate() {
-            entries.push(wgpu::BindGroupEntry {
-                binding: b as u32 + 1,
-                resource: buf.as_entire_binding(),
-            });
-        }
-        entries.push(wgpu::BindGroupEntry {
-            binding: columns.len() as u32 + 1,
-            resource: out.as_entire_binding(),
-        });
-        let bind_group = gpu.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("prepass harness"),
-            layout: &pipeline.get_bind_group_layout(0),
-            entries: &entries,
-        });
+        let bind_group = bind_group(
+            &gpu.device,
+            &pipeline,
+            &params,
+            columns.iter().map(|(_, buf, _)| buf),
+            &out,
+            "prepass harness",
+        );
 
         let mut first = 0u64;
         while first < n {
@@ -562,6 +551,37 @@ impl Kernel<'_> {
         }
         Ok(pipeline)
     }
+}
+
+/// The harness's bind group 0: uniforms at binding 0, the column buffers from binding 1 in
+/// parameter order, the output buffer last (the layout `codegen` declares).
+pub(crate) fn bind_group<'b>(
+    device: &wgpu::Device,
+    pipeline: &wgpu::ComputePipeline,
+    params: &wgpu::Buffer,
+    columns: impl Iterator<Item = &'b wgpu::Buffer>,
+    out: &wgpu::Buffer,
+    label: &str,
+) -> wgpu::BindGroup {
+    let mut entries = vec![wgpu::BindGroupEntry {
+        binding: 0,
+        resource: params.as_entire_binding(),
+    }];
+    for buf in columns {
+        entries.push(wgpu::BindGroupEntry {
+            binding: entries.len() as u32,
+            resource: buf.as_entire_binding(),
+        });
+    }
+    entries.push(wgpu::BindGroupEntry {
+        binding: entries.len() as u32,
+        resource: out.as_entire_binding(),
+    });
+    device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some(label),
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &entries,
+    })
 }
 
 fn read_back(gpu: &Gpu, staging: &wgpu::Buffer, bytes: u64) -> Result<Vec<u32>, HarnessError> {

@@ -242,25 +242,8 @@ impl Kernel<'_> {
                 codegen::timing_entry_point(sig, &feeds, body)
             );
             let pipeline = self.compile(&source, &label)?;
-            let mut entries = vec![wgpu::BindGroupEntry {
-                binding: 0,
-                resource: params.as_entire_binding(),
-            }];
-            for (b, buf) in columns.iter().enumerate() {
-                entries.push(wgpu::BindGroupEntry {
-                    binding: b as u32 + 1,
-                    resource: buf.as_entire_binding(),
-                });
-            }
-            entries.push(wgpu::BindGroupEntry {
-                binding: columns.len() as u32 + 1,
-                resource: out.as_entire_binding(),
-            });
-            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some(&label),
-                layout: &pipeline.get_bind_group_layout(0),
-                entries: &entries,
-            });
+            let bind_group =
+                super::bind_group(device, &pipeline, &params, columns.iter(), &out, &label);
             kernels.push((pipeline, bind_group));
         }
         // Round 0 is an untimed warm-up (first-use costs: shader JIT, page faults). The two
