@@ -13,6 +13,8 @@ pub struct Options {
     pub out: PathBuf,
     /// Small run (CI, notebooks): fewer cases and repeats; exhaustive sweeps stay exhaustive.
     pub quick: bool,
+    /// Also decode all 2^32 codes of the 32-bit normal encodings (about 15 minutes on lavapipe).
+    pub exhaustive32: bool,
 }
 
 /// The report being built.

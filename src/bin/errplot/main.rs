@@ -3,7 +3,7 @@
 //! the plots, tables and CSV files that show them.
 //!
 //! ```text
-//! cargo run --release --all-features --bin errplot -- [--out DIR] [--quick]
+//! cargo run --release --all-features --bin errplot -- [--out DIR] [--quick] [--exhaustive32]
 //! ```
 //! Output goes to `errplot-out/` by default: `report.md` (tables, plots embedded), one CSV per
 //! sweep (columns documented in `report.md`'s "Files" section), each plot as SVG and PNG.
@@ -54,17 +54,20 @@ fn parse_args() -> Result<Options, String> {
     let mut o = Options {
         out: PathBuf::from("errplot-out"),
         quick: false,
+        exhaustive32: false,
     };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--out" => o.out = args.next().ok_or("--out needs a directory")?.into(),
             "--quick" => o.quick = true,
+            "--exhaustive32" => o.exhaustive32 = true,
             "-h" | "--help" => {
                 println!(
-                    "usage: errplot [--out DIR] [--quick]\n\n\
+                    "usage: errplot [--out DIR] [--quick] [--exhaustive32]\n\n\
                      Writes report.md, CSV files and SVG/PNG plots into DIR (default errplot-out).\n\
                      --quick: fewer channel cases and timing repeats (CI, notebooks).\n\
+                     --exhaustive32: also decode all 2^32 codes of oct32 and xy fp16 (~15 min on lavapipe).\n\
                      PREPASS_ADAPTER=NAME picks an adapter by name; WGPU_BACKEND restricts backends."
                 );
                 std::process::exit(0);

@@ -173,6 +173,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         )?;
     }
 
+    exhaustive32(ctx)?;
+
     // Cost-table variants: each encoder and each decoder, timed on spread-out inputs.
     // Quick runs (CI, notebooks) time the precise encodings only, to stay under a minute.
     let tile_dirs: Vec<[f32; 3]> = fibonacci_directions(1 << 16);
@@ -225,5 +227,43 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             twin: Some(twin_timer(codes, dec)),
         });
     }
+    Ok(())
+}
+
+/// With `--exhaustive32`: every one of the 2^32 codes of the 32-bit encodings through the WGSL
+/// decoder (the tests run a documented stratified 2^26 of them; this is the full sweep).
+fn exhaustive32(ctx: &mut Ctx) -> Result<(), String> {
+    if !ctx.opts.exhaustive32 {
+        return Ok(());
+    }
+    let Some(g) = ctx.gpu() else {
+        ctx.line(format!(
+            "All 2^32 decodes (--exhaustive32): {}.",
+            crate::ctx::NEEDS_ADAPTER
+        ));
+        return Ok(());
+    };
+    let mut rows = Vec::new();
+    for name in ["oct32", "xy fp16"] {
+        let codec = prepass::sweep::normal::codec(name);
+        let t = std::time::Instant::now();
+        let c = prepass::sweep::normal::decode_all_32(g, codec).map_err(|e| e.to_string())?;
+        rows.push((name, c, t.elapsed().as_secs_f64()));
+    }
+    ctx.line("### Every 32-bit code decoded (`--exhaustive32`)");
+    ctx.line("");
+    ctx.line("| encoding | codes | not unit | max abs(len − 1) | max angle to the exact decode (°) | Rust twin differs | seconds |");
+    ctx.line("|---|---|---|---|---|---|---|");
+    for (name, c, secs) in rows {
+        ctx.line(format!(
+            "| {name} | {} | {} | {} | {} | {} | {secs:.0} |",
+            c.codes,
+            c.not_unit,
+            num(c.max_len_error),
+            num(c.max_angle_deg),
+            c.twin.count
+        ));
+    }
+    ctx.line("");
     Ok(())
 }
