@@ -309,6 +309,11 @@ pub const BUILDERS: &[Entry] = &[
                 PositionChoice::World,
                 PositionChoice::CameraRelative,
             ][usize::from((b >> 3) % 4)];
+            use prepass::scene::{
+                LightBuffers, LightingChoice, Lights, NormalChoice, NormalEncoding,
+                RoughnessChoice, Specular,
+            };
+            let (n, l) = (i.u8(), i.u8());
             let scene = Scene {
                 depth: DepthChoice {
                     storage,
@@ -316,6 +321,36 @@ pub const BUILDERS: &[Entry] = &[
                     infinite_far: b & 0x40 != 0,
                 },
                 position,
+                normal: NormalChoice {
+                    encoding: [None]
+                        .into_iter()
+                        .chain(NormalEncoding::ALL.map(Some))
+                        .nth(usize::from(n % 7))
+                        .flatten(),
+                    fast_encoder: n & 0x80 != 0,
+                },
+                roughness: if n & 0x40 != 0 {
+                    RoughnessChoice::Log8
+                } else {
+                    RoughnessChoice::None
+                },
+                lighting: LightingChoice {
+                    lights: [
+                        Lights::None,
+                        Lights::Point,
+                        Lights::Spot,
+                        Lights::PointAndSpot,
+                    ][usize::from(l % 4)],
+                    specular: [Specular::None, Specular::BlinnPhong, Specular::Phong]
+                        [usize::from((l >> 2) % 3)],
+                    buffers: if l & 0x10 != 0 {
+                        LightBuffers::Two
+                    } else {
+                        LightBuffers::One
+                    },
+                    aggregate_vertex_lights: l & 0x20 != 0,
+                    light_volumes: l & 0x40 != 0,
+                },
             };
             match (scene.roots(), scene.gbuffer()) {
                 (Ok(roots), Ok(g)) => {
