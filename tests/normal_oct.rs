@@ -184,28 +184,7 @@ fn bad_input_gets_the_documented_code_on_both_sides() {
         "oct32 fast",
     ] {
         let c = codec(name);
-        let k = gpu().kernel(c.source, c.encode).unwrap();
-        let got = k
-            .run(&[prepass::harness::Arg::column(&bad)], bad.len() as u64)
-            .unwrap()
-            .into_words();
-        let want = k
-            .run(&[prepass::harness::Arg::column(&good)], good.len() as u64)
-            .unwrap()
-            .into_words();
-        for i in 0..bad.len() {
-            assert_eq!(
-                got[i], want[i],
-                "{name}: {:?} should encode like {:?}",
-                bad[i], good[i]
-            );
-            assert_eq!(
-                got[i],
-                (c.twin_encode)(Vec3::from(bad[i])),
-                "{name}: twin differs on {:?}",
-                bad[i]
-            );
-        }
+        let got = common::assert_encodes_like(name, &bad, &good);
         assert!(
             got.iter().all(|&p| p.checked_shr(c.bits).unwrap_or(0) == 0),
             "{name}: bits above the code must be zero"

@@ -7,7 +7,6 @@ mod common;
 
 use common::gpu;
 use glam::Vec3;
-use prepass::harness::Arg;
 use prepass::normal::xy_fp16;
 use prepass::sweep::normal::{
     UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, fibonacci_directions,
@@ -137,32 +136,10 @@ fn stratified_codes_decode_to_unit_vectors() {
 
 #[test]
 fn bad_input_gets_the_documented_code_on_both_sides() {
-    let c = codec("xy fp16");
     let cases = bad_inputs();
     let bad: Vec<[f32; 3]> = cases.iter().map(|c| c.0).collect();
     let good: Vec<[f32; 3]> = cases.iter().map(|c| c.1).collect();
-    let k = gpu().kernel(c.source, c.encode).unwrap();
-    let got = k
-        .run(&[Arg::column(&bad)], bad.len() as u64)
-        .unwrap()
-        .into_words();
-    let want = k
-        .run(&[Arg::column(&good)], good.len() as u64)
-        .unwrap()
-        .into_words();
-    for i in 0..bad.len() {
-        assert_eq!(
-            got[i], want[i],
-            "{:?} should encode like {:?}",
-            bad[i], good[i]
-        );
-        assert_eq!(
-            got[i],
-            xy_fp16::encode_normal_xy_fp16(Vec3::from(bad[i])),
-            "twin differs on {:?}",
-            bad[i]
-        );
-    }
+    common::assert_encodes_like("xy fp16", &bad, &good);
     assert_eq!(xy_fp16::encode_normal_xy_fp16(Vec3::ZERO), 0);
     // Decoder: NaN halves count as 0, infinities clamp.
     assert_eq!(xy_fp16::decode_normal_xy_fp16(0x7e00_7e00), Vec3::Z);

@@ -92,32 +92,10 @@ fn every_code_decodes_to_a_unit_vector_and_byte_3_is_ignored() {
 
 #[test]
 fn bad_input_gets_the_documented_code_on_both_sides() {
-    let c = codec("xyz8");
     let cases = bad_inputs();
     let bad: Vec<[f32; 3]> = cases.iter().map(|c| c.0).collect();
     let good: Vec<[f32; 3]> = cases.iter().map(|c| c.1).collect();
-    let k = gpu().kernel(c.source, c.encode).unwrap();
-    let got = k
-        .run(&[Arg::column(&bad)], bad.len() as u64)
-        .unwrap()
-        .into_words();
-    let want = k
-        .run(&[Arg::column(&good)], good.len() as u64)
-        .unwrap()
-        .into_words();
-    for i in 0..bad.len() {
-        assert_eq!(
-            got[i], want[i],
-            "{:?} should encode like {:?}",
-            bad[i], good[i]
-        );
-        assert_eq!(
-            got[i],
-            xyz8::encode_normal_xyz8(Vec3::from(bad[i])),
-            "twin differs on {:?}",
-            bad[i]
-        );
-    }
+    common::assert_encodes_like("xyz8", &bad, &good);
     // +z: bytes round(127.5) = 128 (half to even), 128, 255.
     assert_eq!(xyz8::encode_normal_xyz8(Vec3::ZERO), 0x00ff_8080);
 }

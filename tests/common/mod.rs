@@ -23,3 +23,35 @@ pub fn gpu() -> &'static Gpu {
         Err(e) => panic!("{e}"),
     }
 }
+
+/// Each `bad` input must encode, with `codec`'s WGSL encoder on the adapter, to the same code as
+/// its documented equivalent in `good` (same index), and the Rust twin must give that code too.
+/// Returns the adapter's codes for further checks.
+#[allow(dead_code)]
+pub fn assert_encodes_like(codec: &str, bad: &[[f32; 3]], good: &[[f32; 3]]) -> Vec<u32> {
+    use prepass::harness::Arg;
+    let c = prepass::sweep::normal::codec(codec);
+    let k = gpu().kernel(c.source, c.encode).unwrap();
+    let got = k
+        .run(&[Arg::column(bad)], bad.len() as u64)
+        .unwrap()
+        .into_words();
+    let want = k
+        .run(&[Arg::column(good)], good.len() as u64)
+        .unwrap()
+        .into_words();
+    for i in 0..bad.len() {
+        assert_eq!(
+            got[i], want[i],
+            "{codec}: {:?} should encode like {:?}",
+            bad[i], good[i]
+        );
+        assert_eq!(
+            got[i],
+            (c.twin_encode)(glam::Vec3::from(bad[i])),
+            "{codec}: twin differs on {:?}",
+            bad[i]
+        );
+    }
+    got
+}
