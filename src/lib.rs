@@ -19,12 +19,15 @@
 //! | `precision::strategies`, `precision::check` | any | proptest strategies with adversarial cases; batched checks of any WGSL against a Rust reference, shrinking on the adapter (features `proptest`; `check` also `harness`) |
 //! | [`wgsl`] | all | embedded sources; naga validation/translation (feature `validate`) |
 //! | `harness` | any | run any WGSL function on a wgpu adapter (feature `harness`) |
+//! | `conforming` | any | the worst conforming adapter emulated on yours: any module rewritten so every operation the WGSL spec leaves free lands at a chosen end of its interval (feature `validate`; run with `harness`) |
 //!
 //! Features: none by default (glam + half only); `validate` adds naga, `harness` adds wgpu,
 //! `proptest` adds strategies for downstream precision suites.
 
 #![warn(missing_docs)]
 
+#[cfg(feature = "validate")]
+pub mod conforming;
 pub mod depth;
 #[cfg(feature = "harness")]
 pub mod harness;

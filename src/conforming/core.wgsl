@@ -1,0 +1,518 @@
+// prepass conforming-adapter emulation: the helper library that src/conforming/rewrite.rs calls
+// in place of every f32 operation whose result WGSL does not pin. Conventions: README,
+// "Conventions"; policy, host allowances and derivations: src/conforming/mod.rs.
+//
+// Every helper takes a `site` (a number unique to the rewritten expression) so that the seeded
+// policy draws an independent choice per operation and per invocation (the operands' bits enter
+// the hash). The PREPASS_CF_* constants are written in front of this text by the rewrite.
+//
+// The helpers rely on the host adapter rounding + - * to nearest, without contraction,
+// reassociation or flushing (lavapipe does): the error-free transformations below (TwoSum,
+// Dekker's product, Fast2Sum) need exactly that. The emulator self-tests check it.
+
+var<private> prepass_cf_undefined: u32;
+
+// Freedom bits (Freedoms in Rust).
+const PREPASS_CF_DIVISION: u32 = 1u;
+const PREPASS_CF_INVERSE_SQRT: u32 = 2u;
+const PREPASS_CF_EXP_LOG: u32 = 4u;
+const PREPASS_CF_UNPACK: u32 = 8u;
+const PREPASS_CF_PACK: u32 = 16u;
+const PREPASS_CF_ROUNDING: u32 = 32u;
+const PREPASS_CF_FLUSH: u32 = 64u;
+const PREPASS_CF_FUSION: u32 = 128u;
+const PREPASS_CF_REASSOCIATION: u32 = 256u;
+const PREPASS_CF_INHERITED: u32 = 512u;
+
+// Mark the current evaluation as outside the spec's domain (indeterminate result).
+fn prepass_cf_undefined_if(c: bool) {
+    if (c) {
+        prepass_cf_undefined = 1u;
+    }
+}
+
+fn prepass_cf_hash(v: u32) -> u32 {
+    var x = v;
+    x = x ^ (x >> 16u);
+    x = x * 0x7feb352du;
+    x = x ^ (x >> 15u);
+    x = x * 0x846ca68bu;
+    x = x ^ (x >> 16u);
+    return x;
+}
+
+fn prepass_cf_rand(site: u32, x: f32, y: f32) -> u32 {
+    let h = prepass_cf_hash(bitcast<u32>(x) ^ prepass_cf_hash(bitcast<u32>(y) + 0x9e3779b9u));
+    return prepass_cf_hash(PREPASS_CF_SEED ^ prepass_cf_hash(site ^ h));
+}
+
+fn prepass_cf_on(freedom: u32) -> bool {
+    return PREPASS_CF_POLICY != 0u && (PREPASS_CF_FREEDOMS & freedom) != 0u;
+}
+
+// Direction of a push inside an interval: +1 (upper end), -1 (lower end), or seeded -1/0/+1.
+fn prepass_cf_dir(freedom: u32, site: u32, x: f32, y: f32) -> i32 {
+    if (!prepass_cf_on(freedom)) {
+        return 0;
+    }
+    if (PREPASS_CF_POLICY == 1u) {
+        return 1;
+    }
+    if (PREPASS_CF_POLICY == 2u) {
+        return -1;
+    }
+    return i32(prepass_cf_rand(site, x, y) % 3u) - 1;
+}
+
+// One of two allowed results: the larger (upper), the smaller (lower) or a seeded choice.
+fn prepass_cf_pick(freedom: u32, site: u32, a: f32, b: f32) -> f32 {
+    if (!prepass_cf_on(freedom)) {
+        return a;
+    }
+    if (PREPASS_CF_POLICY == 1u) {
+        return max(a, b);
+    }
+    if (PREPASS_CF_POLICY == 2u) {
+        return min(a, b);
+    }
+    return select(a, b, (prepass_cf_rand(site ^ 0x5bd1e995u, a, b) & 1u) == 1u);
+}
+
+fn prepass_cf_finite(x: f32) -> bool {
+    return (bitcast<u32>(x) & 0x7f800000u) != 0x7f800000u;
+}
+
+fn prepass_cf_is_subnormal(x: f32) -> bool {
+    let a = bitcast<u32>(x) & 0x7fffffffu;
+    return a != 0u && a < 0x00800000u;
+}
+
+// Largest finite float with x's sign in place of an infinity (no push may overflow).
+fn prepass_cf_clamp_finite(x: f32) -> f32 {
+    if ((bitcast<u32>(x) & 0x7fffffffu) == 0x7f800000u) {
+        return bitcast<f32>((bitcast<u32>(x) & 0x80000000u) | 0x7f7fffffu);
+    }
+    return x;
+}
+
+// The adjacent float above (up) or below x; +0 and -0 count as one value.
+fn prepass_cf_next(x: f32, up: bool) -> f32 {
+    let b = bitcast<u32>(x);
+    if ((b & 0x7fffffffu) == 0u) {
+        return select(bitcast<f32>(0x80000001u), bitcast<f32>(1u), up);
+    }
+    if (((b >> 31u) == 0u) == up) {
+        return bitcast<f32>(b + 1u);
+    }
+    return bitcast<f32>(b - 1u);
+}
+
+// Spacing of the floats just below |x|. Any real that rounds to x (to either neighbour) has an
+// ULP at least this large, so a push measured in it never leaves the spec's k-ULP interval.
+fn prepass_cf_ulp_below(x: f32) -> f32 {
+    let a = bitcast<u32>(x) & 0x7fffffffu;
+    let e = i32((max(a, 1u) - 1u) >> 23u);
+    let p = max(e, 1) - 150;
+    if (p >= -126) {
+        return bitcast<f32>(u32(p + 127) << 23u);
+    }
+    return bitcast<f32>(1u << u32(p + 149));
+}
+
+// x moved by halves/2 ULPs (signed), rounded back toward x where the target is not a float.
+fn prepass_cf_push(x: f32, halves: i32) -> f32 {
+    if (halves == 0 || !prepass_cf_finite(x)) {
+        return x;
+    }
+    let u = prepass_cf_ulp_below(x);
+    var d = f32(halves) * u * 0.5;
+    if (bitcast<u32>(u) == 1u) {
+        // Smallest subnormal spacing: push in whole spacings (half of one is not a float).
+        d = f32(halves / 2) * u;
+    }
+    var t = x + d;
+    if (abs(t - x) > abs(d)) {
+        t = prepass_cf_next(t, d < 0.0);
+    }
+    return prepass_cf_clamp_finite(t);
+}
+
+// A subnormal flushed to zero (keeping its sign) or kept: both are allowed for the operations
+// of the accuracy table.
+fn prepass_cf_ftz(site: u32, x: f32) -> f32 {
+    if (!prepass_cf_is_subnormal(x)) {
+        return x;
+    }
+    return prepass_cf_pick(PREPASS_CF_FLUSH, site, x, bitcast<f32>(bitcast<u32>(x) & 0x80000000u));
+}
+
+// Exact a*b - p for p = a*b rounded to nearest (Dekker), or 0 where the split could overflow or
+// underflow: there the host's rounding, one allowed neighbour, stands.
+fn prepass_cf_mul_err(a: f32, b: f32, p: f32) -> f32 {
+    let big = bitcast<f32>(0x5d800000u); // 2^60
+    let small = bitcast<f32>(0x0d800000u); // 2^-100
+    if (!(abs(a) < big && abs(b) < big && abs(p) > small && prepass_cf_finite(p))) {
+        return 0.0;
+    }
+    let ca = 4097.0 * a;
+    let ah = ca - (ca - a);
+    let al = a - ah;
+    let cb = 4097.0 * b;
+    let bh = cb - (cb - b);
+    let bl = b - bh;
+    return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+}
+
+// Exact a + b - s for s = a + b rounded to nearest (Knuth's TwoSum).
+fn prepass_cf_add_err(a: f32, b: f32, s: f32) -> f32 {
+    if (!prepass_cf_finite(s)) {
+        return 0.0;
+    }
+    let bb = s - a;
+    return (a - (s - bb)) + (b - bb);
+}
+
+// s or its other neighbour across the exact value s + err: either rounding is allowed.
+fn prepass_cf_round(site: u32, s: f32, err: f32, x: f32, y: f32) -> f32 {
+    let dir = prepass_cf_dir(PREPASS_CF_ROUNDING, site, x, y);
+    if ((dir > 0 && err > 0.0) || (dir < 0 && err < 0.0)) {
+        return prepass_cf_clamp_finite(prepass_cf_next(s, err > 0.0));
+    }
+    return s;
+}
+
+// a + b: flush choices on inputs and output, either neighbour of the exact sum.
+fn prepass_cf_add(site: u32, a0: f32, b0: f32) -> f32 {
+    let a = prepass_cf_ftz(site + 1u, a0);
+    let b = prepass_cf_ftz(site + 2u, b0);
+    let s = a + b;
+    var r = s;
+    if (prepass_cf_on(PREPASS_CF_ROUNDING)) {
+        r = prepass_cf_round(site, s, prepass_cf_add_err(a, b, s), a, b);
+    }
+    return prepass_cf_ftz(site + 3u, r);
+}
+
+fn prepass_cf_sub(site: u32, a: f32, b: f32) -> f32 {
+    return prepass_cf_add(site, a, -b);
+}
+
+// a * b: flush choices, either neighbour of the exact product.
+fn prepass_cf_mul(site: u32, a0: f32, b0: f32) -> f32 {
+    let a = prepass_cf_ftz(site + 1u, a0);
+    let b = prepass_cf_ftz(site + 2u, b0);
+    let p = a * b;
+    var r = p;
+    if (prepass_cf_on(PREPASS_CF_ROUNDING)) {
+        r = prepass_cf_round(site, p, prepass_cf_mul_err(a, b, p), a, b);
+    }
+    return prepass_cf_ftz(site + 3u, r);
+}
+
+// a / b within 2.5 ULP: the host's quotient (within DIV_HOST) pushed by the rest of the budget.
+// Divisors outside +-[2^-126, 2^126] make the result indeterminate.
+fn prepass_cf_div(site: u32, a0: f32, b0: f32) -> f32 {
+    let a = prepass_cf_ftz(site + 1u, a0);
+    let b = prepass_cf_ftz(site + 2u, b0);
+    prepass_cf_undefined_if(!(abs(b) >= bitcast<f32>(0x00800000u) && abs(b) <= bitcast<f32>(0x7e800000u)));
+    let q = a / b;
+    let halves = prepass_cf_dir(PREPASS_CF_DIVISION, site, a, b) * PREPASS_CF_DIV_HALVES;
+    return prepass_cf_ftz(site + 3u, prepass_cf_push(q, halves));
+}
+
+// inverseSqrt(x) within 2 ULP; x <= 0, subnormal or infinite is outside the domain.
+fn prepass_cf_inverse_sqrt(site: u32, x0: f32) -> f32 {
+    let x = prepass_cf_ftz(site + 1u, x0);
+    prepass_cf_undefined_if(!(x >= bitcast<f32>(0x00800000u) && x <= bitcast<f32>(0x7f7fffffu)));
+    let halves = prepass_cf_dir(PREPASS_CF_INVERSE_SQRT, site, x, x) * PREPASS_CF_ISQRT_HALVES;
+    return prepass_cf_ftz(site + 3u, prepass_cf_push(inverseSqrt(x), halves));
+}
+
+// sqrt(x) as the spec defines its accuracy: 1.0 / inverseSqrt(x). sqrt(+-0) stays 0: the
+// inherited interval is unbounded there, and every implementation known returns 0.
+fn prepass_cf_sqrt(site: u32, x: f32) -> f32 {
+    if (!prepass_cf_on(PREPASS_CF_INHERITED)) {
+        return sqrt(x);
+    }
+    if (x == 0.0) {
+        return x;
+    }
+    return prepass_cf_div(site + 8u, 1.0, prepass_cf_inverse_sqrt(site, x));
+}
+
+// Budget of exp and exp2, 3 + 2|x| ULP, less the host's own error, in half ULPs.
+fn prepass_cf_exp_halves(site: u32, x: f32) -> i32 {
+    let budget = 2.0 * (3.0 + 2.0 * min(abs(x), 1000.0)) - f32(PREPASS_CF_EXP_HOST_HALVES);
+    return prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x) * i32(floor(max(budget, 0.0)));
+}
+
+fn prepass_cf_exp2(site: u32, x0: f32) -> f32 {
+    let x = prepass_cf_ftz(site + 1u, x0);
+    let r = exp2(x);
+    prepass_cf_undefined_if(!(x < 128.0) || !prepass_cf_finite(r));
+    return prepass_cf_ftz(site + 3u, prepass_cf_push(r, prepass_cf_exp_halves(site, x)));
+}
+
+fn prepass_cf_exp(site: u32, x0: f32) -> f32 {
+    let x = prepass_cf_ftz(site + 1u, x0);
+    let r = exp(x);
+    prepass_cf_undefined_if(!(x < 88.0) || !prepass_cf_finite(r));
+    return prepass_cf_ftz(site + 3u, prepass_cf_push(r, prepass_cf_exp_halves(site, x)));
+}
+
+// log and log2: absolute 2^-21 on [0.5, 2], 3 ULP elsewhere; x <= 0, subnormal or infinite is
+// outside the domain.
+fn prepass_cf_log_push(site: u32, x: f32, r: f32) -> f32 {
+    let dir = prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x);
+    if (x >= 0.5 && x <= 2.0) {
+        return r + f32(dir) * PREPASS_CF_LOG_ABS_PUSH;
+    }
+    return prepass_cf_push(r, dir * PREPASS_CF_LOG_HALVES);
+}
+
+fn prepass_cf_log2(site: u32, x0: f32) -> f32 {
+    let x = prepass_cf_ftz(site + 1u, x0);
+    prepass_cf_undefined_if(!(x >= bitcast<f32>(0x00800000u) && x <= bitcast<f32>(0x7f7fffffu)));
+    return prepass_cf_ftz(site + 3u, prepass_cf_log_push(site, x, log2(x)));
+}
+
+fn prepass_cf_log(site: u32, x0: f32) -> f32 {
+    let x = prepass_cf_ftz(site + 1u, x0);
+    prepass_cf_undefined_if(!(x >= bitcast<f32>(0x00800000u) && x <= bitcast<f32>(0x7f7fffffu)));
+    return prepass_cf_ftz(site + 3u, prepass_cf_log_push(site, x, log(x)));
+}
+
+// pow(x, y) as inherited: exp2(y * log2(x)).
+fn prepass_cf_pow(site: u32, x: f32, y: f32) -> f32 {
+    if (!prepass_cf_on(PREPASS_CF_INHERITED)) {
+        return pow(x, y);
+    }
+    return prepass_cf_exp2(site + 8u, prepass_cf_mul(site + 16u, y, prepass_cf_log2(site + 24u, x)));
+}
+
+// a*b + c rounded once, from error-free transformations (within one rounding of the exact
+// value: what a fused multiply-add may return).
+fn prepass_cf_fused(a: f32, b: f32, c: f32) -> f32 {
+    let p = a * b;
+    let ep = prepass_cf_mul_err(a, b, p);
+    let s = p + c;
+    let es = prepass_cf_add_err(p, c, s);
+    return s + (es + ep);
+}
+
+// a*b + c, fused or not.
+fn prepass_cf_mad(site: u32, a: f32, b: f32, c: f32) -> f32 {
+    let unfused = prepass_cf_add(site, prepass_cf_mul(site + 8u, a, b), c);
+    if (!prepass_cf_on(PREPASS_CF_FUSION)) {
+        return unfused;
+    }
+    let fa = prepass_cf_ftz(site + 16u, a);
+    let fb = prepass_cf_ftz(site + 17u, b);
+    let fc = prepass_cf_ftz(site + 18u, c);
+    return prepass_cf_pick(PREPASS_CF_FUSION, site + 19u, unfused, prepass_cf_fused(fa, fb, fc));
+}
+
+// a*b - c, fused or not.
+fn prepass_cf_msub(site: u32, a: f32, b: f32, c: f32) -> f32 {
+    let unfused = prepass_cf_sub(site, prepass_cf_mul(site + 8u, a, b), c);
+    if (!prepass_cf_on(PREPASS_CF_FUSION)) {
+        return unfused;
+    }
+    let fa = prepass_cf_ftz(site + 16u, a);
+    let fb = prepass_cf_ftz(site + 17u, b);
+    let fc = prepass_cf_ftz(site + 18u, c);
+    return prepass_cf_pick(PREPASS_CF_FUSION, site + 19u, unfused, prepass_cf_fused(fa, fb, -fc));
+}
+
+// c - a*b, fused or not.
+fn prepass_cf_nmad(site: u32, a: f32, b: f32, c: f32) -> f32 {
+    let unfused = prepass_cf_sub(site, c, prepass_cf_mul(site + 8u, a, b));
+    if (!prepass_cf_on(PREPASS_CF_FUSION)) {
+        return unfused;
+    }
+    let fa = prepass_cf_ftz(site + 16u, a);
+    let fb = prepass_cf_ftz(site + 17u, b);
+    let fc = prepass_cf_ftz(site + 18u, c);
+    return prepass_cf_pick(PREPASS_CF_FUSION, site + 19u, unfused, prepass_cf_fused(-fa, fb, fc));
+}
+
+// fma(a, b, c): inherited from a*b + c, so it may be fused or not.
+fn prepass_cf_fma(site: u32, a: f32, b: f32, c: f32) -> f32 {
+    if (!prepass_cf_on(PREPASS_CF_INHERITED)) {
+        return fma(a, b, c);
+    }
+    return prepass_cf_mad(site, a, b, c);
+}
+
+// (a + b) + c, or a + (b + c).
+fn prepass_cf_add3(site: u32, a: f32, b: f32, c: f32) -> f32 {
+    let left = prepass_cf_add(site, prepass_cf_add(site + 8u, a, b), c);
+    if (!prepass_cf_on(PREPASS_CF_REASSOCIATION)) {
+        return left;
+    }
+    let right = prepass_cf_add(site + 16u, a, prepass_cf_add(site + 24u, b, c));
+    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
+}
+
+// (a - b) + c, or (a + c) - b.
+fn prepass_cf_sub_add(site: u32, a: f32, b: f32, c: f32) -> f32 {
+    let left = prepass_cf_add(site, prepass_cf_sub(site + 8u, a, b), c);
+    if (!prepass_cf_on(PREPASS_CF_REASSOCIATION)) {
+        return left;
+    }
+    let right = prepass_cf_sub(site + 16u, prepass_cf_add(site + 24u, a, c), b);
+    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
+}
+
+// (a * b) / c, or (a / c) * b.
+fn prepass_cf_mul_div(site: u32, a: f32, b: f32, c: f32) -> f32 {
+    let left = prepass_cf_div(site, prepass_cf_mul(site + 8u, a, b), c);
+    if (!prepass_cf_on(PREPASS_CF_REASSOCIATION)) {
+        return left;
+    }
+    let right = prepass_cf_mul(site + 16u, prepass_cf_div(site + 24u, a, c), b);
+    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
+}
+
+// fract(x) as inherited: x - floor(x).
+fn prepass_cf_fract(site: u32, x: f32) -> f32 {
+    if (!prepass_cf_on(PREPASS_CF_INHERITED)) {
+        return fract(x);
+    }
+    return prepass_cf_sub(site, x, floor(x));
+}
+
+// mix(a, b, t) as inherited: a*(1 - t) + b*t.
+fn prepass_cf_mix(site: u32, a: f32, b: f32, t: f32) -> f32 {
+    if (!prepass_cf_on(PREPASS_CF_INHERITED)) {
+        return mix(a, b, t);
+    }
+    let left = prepass_cf_mul(site + 40u, a, prepass_cf_sub(site + 48u, 1.0, t));
+    return prepass_cf_mad(site, b, t, left);
+}
+
+// v / s within unpack's 3 ULP: the host's quotient (within DIV_HOST) pushed by the rest.
+fn prepass_cf_unpack_lane(site: u32, q: f32) -> f32 {
+    let halves = prepass_cf_dir(PREPASS_CF_UNPACK, site, q, q) * PREPASS_CF_UNPACK_HALVES;
+    return prepass_cf_push(q, halves);
+}
+
+fn prepass_cf_unpack4x8unorm(site: u32, p: u32) -> vec4<f32> {
+    if (!prepass_cf_on(PREPASS_CF_UNPACK)) {
+        return unpack4x8unorm(p);
+    }
+    var r: vec4<f32>;
+    for (var i = 0u; i < 4u; i++) {
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, f32((p >> (8u * i)) & 0xffu) / 255.0);
+    }
+    return r;
+}
+
+fn prepass_cf_unpack4x8snorm(site: u32, p: u32) -> vec4<f32> {
+    if (!prepass_cf_on(PREPASS_CF_UNPACK)) {
+        return unpack4x8snorm(p);
+    }
+    var r: vec4<f32>;
+    for (var i = 0u; i < 4u; i++) {
+        let v = bitcast<i32>(p << (24u - 8u * i)) >> 24u;
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, max(f32(v) / 127.0, -1.0));
+    }
+    return r;
+}
+
+fn prepass_cf_unpack2x16unorm(site: u32, p: u32) -> vec2<f32> {
+    if (!prepass_cf_on(PREPASS_CF_UNPACK)) {
+        return unpack2x16unorm(p);
+    }
+    var r: vec2<f32>;
+    for (var i = 0u; i < 2u; i++) {
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, f32((p >> (16u * i)) & 0xffffu) / 65535.0);
+    }
+    return r;
+}
+
+fn prepass_cf_unpack2x16snorm(site: u32, p: u32) -> vec2<f32> {
+    if (!prepass_cf_on(PREPASS_CF_UNPACK)) {
+        return unpack2x16snorm(p);
+    }
+    var r: vec2<f32>;
+    for (var i = 0u; i < 2u; i++) {
+        let v = bitcast<i32>(p << (16u - 16u * i)) >> 16u;
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, max(f32(v) / 32767.0, -1.0));
+    }
+    return r;
+}
+
+// floor(0.5 + t), exact for the |t| <= 65535 of pack's scaled lanes.
+fn prepass_cf_round_half_up(t: f32) -> f32 {
+    let f = floor(t);
+    return f + select(0.0, 1.0, t - f >= 0.5);
+}
+
+// The integer a pack stores for lane c (already clamped) with scale 2^k - 1 = s2 - 1:
+// floor(0.5 + (s2 - 1)*c) of either rounding of the product, which differ only at .5 ties.
+fn prepass_cf_pack_lane(site: u32, c: f32, s2: f32) -> f32 {
+    let hi = c * s2;
+    let t = hi - c;
+    let e = (-c) - (t - hi);
+    var t2 = t;
+    if (e != 0.0) {
+        t2 = prepass_cf_next(t, e > 0.0);
+    }
+    return prepass_cf_pick(PREPASS_CF_PACK, site, prepass_cf_round_half_up(t), prepass_cf_round_half_up(t2));
+}
+
+fn prepass_cf_pack4x8unorm(site: u32, v: vec4<f32>) -> u32 {
+    if (!prepass_cf_on(PREPASS_CF_PACK)) {
+        return pack4x8unorm(v);
+    }
+    var r = 0u;
+    for (var i = 0u; i < 4u; i++) {
+        let b = prepass_cf_pack_lane(site + 8u * i, clamp(v[i], 0.0, 1.0), 256.0);
+        r = r | (u32(b) << (8u * i));
+    }
+    return r;
+}
+
+fn prepass_cf_pack4x8snorm(site: u32, v: vec4<f32>) -> u32 {
+    if (!prepass_cf_on(PREPASS_CF_PACK)) {
+        return pack4x8snorm(v);
+    }
+    var r = 0u;
+    for (var i = 0u; i < 4u; i++) {
+        let b = prepass_cf_pack_lane(site + 8u * i, clamp(v[i], -1.0, 1.0), 128.0);
+        r = r | ((bitcast<u32>(i32(b)) & 0xffu) << (8u * i));
+    }
+    return r;
+}
+
+fn prepass_cf_pack2x16unorm(site: u32, v: vec2<f32>) -> u32 {
+    if (!prepass_cf_on(PREPASS_CF_PACK)) {
+        return pack2x16unorm(v);
+    }
+    var r = 0u;
+    for (var i = 0u; i < 2u; i++) {
+        let b = prepass_cf_pack_lane(site + 8u * i, clamp(v[i], 0.0, 1.0), 65536.0);
+        r = r | (u32(b) << (16u * i));
+    }
+    return r;
+}
+
+fn prepass_cf_pack2x16snorm(site: u32, v: vec2<f32>) -> u32 {
+    if (!prepass_cf_on(PREPASS_CF_PACK)) {
+        return pack2x16snorm(v);
+    }
+    var r = 0u;
+    for (var i = 0u; i < 2u; i++) {
+        let b = prepass_cf_pack_lane(site + 8u * i, clamp(v[i], -1.0, 1.0), 32768.0);
+        r = r | ((bitcast<u32>(i32(b)) & 0xffffu) << (16u * i));
+    }
+    return r;
+}
+
+// pack2x16float: indeterminate when a lane leaves +-65504 (the rounding of in-range lanes to
+// either neighbouring f16 is not emulated).
+fn prepass_cf_pack2x16float(site: u32, v: vec2<f32>) -> u32 {
+    prepass_cf_undefined_if(!(abs(v.x) <= 65504.0 && abs(v.y) <= 65504.0));
+    return pack2x16float(v);
+}

@@ -1,0 +1,51 @@
+//! Running an emulated module on the adapter (feature `harness`).
+
+use super::{Emulated, Emulation, emulate};
+use crate::harness::{Arg, Gpu, HarnessError, Kernel, Output};
+
+/// A function of an emulated module, ready to run, with its "not defined by the spec" twin.
+pub struct EmulatedKernel<'g> {
+    /// The emulated module.
+    pub emulated: Emulated,
+    values: Kernel<'g>,
+    undefined: Option<Kernel<'g>>,
+}
+
+impl<'g> EmulatedKernel<'g> {
+    /// Emulate `source` as `emulation` says and prepare `function` on `gpu`.
+    pub fn new(
+        gpu: &'g Gpu,
+        source: &str,
+        function: &str,
+        emulation: &Emulation,
+    ) -> Result<Self, HarnessError> {
+        let emulated =
+            emulate(source, emulation).map_err(|e| HarnessError::Shader(e.to_string()))?;
+        let values = gpu.kernel(&emulated.source, function)?;
+        let undefined = match emulated.undefined_function(function) {
+            Some(u) => Some(gpu.kernel(&emulated.source, u)?),
+            None => None,
+        };
+        Ok(EmulatedKernel {
+            emulated,
+            values,
+            undefined,
+        })
+    }
+
+    /// The kernel computing the function's values.
+    pub fn values(&self) -> &Kernel<'g> {
+        &self.values
+    }
+
+    /// Run `n` elements: the results, and per element whether an operation of its evaluation
+    /// left the spec's domain (its result is then not defined by the spec).
+    pub fn run(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<bool>), HarnessError> {
+        let out = self.values.run(args, n)?;
+        let flags = match &self.undefined {
+            Some(k) => k.run(args, n)?.as_u32().iter().map(|&f| f != 0).collect(),
+            None => vec![false; out.len()],
+        };
+        Ok((out, flags))
+    }
+}

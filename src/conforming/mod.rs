@@ -1,0 +1,386 @@
+//! The worst conforming adapter, emulated on the one you have (feature `validate`; running it
+//! needs `harness`).
+//!
+//! WGSL pins few f32 results. `+ − ×` may round to either neighbour; `/` may be 2.5 ULP off,
+//! `inverseSqrt` 2 ULP, `exp`/`exp2` `3 + 2|x|` ULP, `log`/`log2` 3 ULP (absolute 2^-21 on
+//! [0.5, 2]), the `unpack*norm` builtins 3 ULP; `sqrt`, `length`, `normalize`, `distance`, `dot`,
+//! `pow`, `fma`, `mix`, `fract`, `cross` and `reflect` inherit the accuracy of their defining
+//! expressions; `pack*norm` may store either integer at a .5 tie; subnormal inputs and outputs may
+//! be flushed; `a·b + c` may be fused; and an implementation may reassociate,
+//! `(a+b)+c ↔ a+(b+c)`, `(a−b)+c ↔ (a+c)−b`, `(a·b)/c ↔ (a/c)·b` (WGSL spec, "Floating Point
+//! Evaluation"). A correctly rounded adapter such as lavapipe uses none of that freedom, so a
+//! figure measured there holds on one adapter.
+//!
+//! [`emulate`] rewrites any WGSL module at the naga IR level so that every such operation is
+//! evaluated at a chosen point of its allowed interval, then writes the module back as WGSL with
+//! naga's backend: the result runs through [`crate::harness`] exactly like the original, and
+//! [`crate::precision::check::PrecisionCheck::emulated`] runs property checks on it.
+//!
+//! ```
+//! use prepass::conforming::{emulate, Emulation, Policy};
+//! let src = "fn to_unit(d: u32) -> f32 { return f32(d) / 16777215.0; }";
+//! let worst = emulate(src, &Emulation::new(Policy::Upper))?;
+//! assert!(worst.source.contains("fn to_unit("));
+//! assert_eq!(worst.sites, 1); // the one division
+//! # Ok::<(), prepass::conforming::EmulateError>(())
+//! ```
+//!
+//! # Policies
+//! - [`Policy::Identity`]: every helper evaluates the original operation; the module computes
+//!   bit for bit what the unmodified one does (a self-test checks it).
+//! - [`Policy::Upper`] / [`Policy::Lower`]: every interval at its upper / lower end; where the
+//!   freedom is a choice between forms (fused or not, reassociated or not, flushed or not, the
+//!   two bytes of a pack tie), the larger / smaller of the two results.
+//! - [`Policy::Seeded`]: a choice per operation and per invocation — the hash of the seed, the
+//!   operation's site and its operands' bits — among the lower end, the host's result and the
+//!   upper end (both ends included), and between the forms.
+//!
+//! The fixed policies are greedy — each operation at its own extreme — which is not always the
+//! composite's extreme; the seeded policy explores mixtures. Neither is a proof: the
+//! everywhere-bounds in [`crate::linear_depth`] and the other modules are derived by hand from the
+//! accuracy table, and the emulation checks that the functions stay inside them.
+//!
+//! # The host's own error
+//! The helpers start from the host adapter's result, which is itself off: lavapipe's `/` is
+//! correctly rounded (0.5 ULP), its `inverseSqrt` is `1/sqrt` (about 1 ULP). A push of the whole
+//! allowance would leave the interval, so each push is the allowance *less* the host's error,
+//! [`HostAccuracy`], measured in ULPs of the exact result. Pushes are counted in the spacing of
+//! the floats just below the host's result, never more than the exact result's ULP, and rounded
+//! back toward the host's result where the target is not a float: a pushed value stays inside
+//! `exact ± allowance`. The emulator self-tests (`tests/conforming.rs`) measure the host's error
+//! and check every emulated result against the spec interval computed in f64.
+//!
+//! The either-neighbour rounding of `+ − ×` is found exactly with error-free transformations
+//! (TwoSum, Dekker's product, Fast2Sum), and the fused `a·b + c` is built the same way; they need
+//! the host to round to nearest without contraction, reassociation or flushing, as lavapipe does.
+//! Dekker's split is skipped where it could overflow or underflow (operands beyond 2^±60,
+//! products below 2^-100): there the host's rounding, one allowed neighbour, stands.
+//!
+//! # Not emulated
+//! Left at the host's accuracy, and listed in [`Emulated::uncovered`] when a module uses them:
+//! trigonometric and hyperbolic functions, `smoothstep`, `refract`, `faceForward`, `%` on f32,
+//! `quantizeToF16`, matrix arithmetic, and the rounding of in-range `pack2x16float` lanes to
+//! either neighbouring f16 (its out-of-range lanes are flagged). `sqrt(±0)` returns 0: the
+//! inherited interval `1/inverseSqrt(0)` is unbounded, and every implementation known returns 0.
+//!
+//! # Indeterminate results
+//! An operation outside its domain — a divisor outside ±[2^-126, 2^126], `inverseSqrt`, `log`
+//! or `log2` of a value ≤ 0, subnormal or infinite, `exp2` that overflows, a `pack2x16float` lane
+//! beyond ±65504 — makes the spec's result indeterminate. The helpers then raise a private flag;
+//! for every function `f` of the module the emulation adds `prepass_cf_undefined__f` (same
+//! parameters, returns 1 when any operation of that evaluation left its domain), which the
+//! harness runs beside `f` ([`crate::conforming::EmulatedKernel`]): a check reports such inputs
+//! as "not defined by the spec" instead of failing them.
+
+mod rewrite;
+
+#[cfg(feature = "harness")]
+mod kernel;
+#[cfg(feature = "harness")]
+pub use kernel::EmulatedKernel;
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+
+/// Where in its allowed interval every free operation is evaluated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Policy {
+    /// The original operation: bit-identical to the unmodified module.
+    Identity,
+    /// Every interval at its upper end; every choice of form the larger result.
+    Upper,
+    /// Every interval at its lower end; every choice of form the smaller result.
+    Lower,
+    /// A per-operation, per-invocation choice from this seed, both ends included.
+    Seeded(u32),
+}
+
+impl Policy {
+    /// The policies a suite runs: upper, lower and three seeds.
+    pub const WORST: [Policy; 5] = [
+        Policy::Upper,
+        Policy::Lower,
+        Policy::Seeded(1),
+        Policy::Seeded(2),
+        Policy::Seeded(3),
+    ];
+
+    fn code(self) -> (u32, u32) {
+        match self {
+            Policy::Identity => (0, 0),
+            Policy::Upper => (1, 0),
+            Policy::Lower => (2, 0),
+            Policy::Seeded(s) => (3, s),
+        }
+    }
+}
+
+impl std::fmt::Display for Policy {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Policy::Identity => write!(f, "identity"),
+            Policy::Upper => write!(f, "upper"),
+            Policy::Lower => write!(f, "lower"),
+            Policy::Seeded(s) => write!(f, "seeded({s})"),
+        }
+    }
+}
+
+/// Which freedoms of the spec the emulation uses (all by default); bit values match
+/// `core.wgsl`'s `PREPASS_CF_*` constants.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Freedoms(pub u32);
+
+impl Freedoms {
+    /// `/` within 2.5 ULP.
+    pub const DIVISION: Freedoms = Freedoms(1);
+    /// `inverseSqrt` within 2 ULP (and `sqrt` through it).
+    pub const INVERSE_SQRT: Freedoms = Freedoms(2);
+    /// `exp`, `exp2`, `log`, `log2` (and `pow` through them).
+    pub const EXP_LOG: Freedoms = Freedoms(4);
+    /// `unpack4x8unorm/snorm`, `unpack2x16unorm/snorm` within 3 ULP.
+    pub const UNPACK: Freedoms = Freedoms(8);
+    /// `pack4x8unorm/snorm`, `pack2x16unorm/snorm`: either integer at a .5 tie.
+    pub const PACK: Freedoms = Freedoms(16);
+    /// `+ − ×` rounded to either neighbour.
+    pub const ROUNDING: Freedoms = Freedoms(32);
+    /// Subnormal inputs and outputs flushed to zero.
+    pub const FLUSH: Freedoms = Freedoms(64);
+    /// `a·b + c` fused into one rounding.
+    pub const FUSION: Freedoms = Freedoms(128);
+    /// The spec's reassociations.
+    pub const REASSOCIATION: Freedoms = Freedoms(256);
+    /// `sqrt`, `length`, `normalize`, `distance`, `dot`, `pow`, `fma`, `mix`, `fract`,
+    /// `cross`, `reflect` evaluated as their defining expressions.
+    pub const INHERITED: Freedoms = Freedoms(512);
+    /// Every freedom.
+    pub const ALL: Freedoms = Freedoms(1023);
+
+    /// Both sets.
+    pub const fn union(self, other: Freedoms) -> Freedoms {
+        Freedoms(self.0 | other.0)
+    }
+}
+
+/// The host adapter's own error per operation, in ULPs of the exact result (absolute for `log`
+/// on [0.5, 2]); each push is the spec's allowance less this. Defaults: lavapipe's, measured by
+/// `tests/conforming.rs` (which fails, naming the field, when the running adapter is worse).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HostAccuracy {
+    /// `/` (and the `v / 255`-style quotient of the unpack helpers): 0.5, correctly rounded.
+    pub division_ulp: f64,
+    /// `inverseSqrt`: 1.0.
+    pub inverse_sqrt_ulp: f64,
+    /// `exp`, `exp2`: 1.0.
+    pub exp_ulp: f64,
+    /// `log`, `log2` outside [0.5, 2]: 1.0.
+    pub log_ulp: f64,
+    /// `log`, `log2` on [0.5, 2], absolute: 2^-22.
+    pub log_abs: f64,
+}
+
+impl Default for HostAccuracy {
+    fn default() -> Self {
+        HostAccuracy {
+            division_ulp: 0.5,
+            inverse_sqrt_ulp: 1.0,
+            exp_ulp: 1.0,
+            log_ulp: 1.0,
+            log_abs: f64::powi(2.0, -22),
+        }
+    }
+}
+
+/// The spec's allowances that the pushes fill (WGSL "Floating Point Accuracy", f32).
+pub mod allowance {
+    /// `/`, ULP.
+    pub const DIVISION_ULP: f64 = 2.5;
+    /// `inverseSqrt`, ULP.
+    pub const INVERSE_SQRT_ULP: f64 = 2.0;
+    /// `log`, `log2` outside [0.5, 2], ULP.
+    pub const LOG_ULP: f64 = 3.0;
+    /// `log`, `log2` on [0.5, 2], absolute: 2^-21.
+    pub const LOG_ABS: f64 = 4.76837158203125e-7;
+    /// `unpack*norm`, ULP.
+    pub const UNPACK_ULP: f64 = 3.0;
+    /// `exp`, `exp2` at `x`, ULP: `3 + 2|x|`.
+    pub fn exp_ulp(x: f64) -> f64 {
+        3.0 + 2.0 * x.abs()
+    }
+}
+
+/// What to emulate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Emulation {
+    /// Where each operation lands.
+    pub policy: Policy,
+    /// Which freedoms are used.
+    pub freedoms: Freedoms,
+    /// The host adapter's own error.
+    pub host: HostAccuracy,
+}
+
+impl Emulation {
+    /// Every freedom, lavapipe's host accuracy.
+    pub fn new(policy: Policy) -> Self {
+        Emulation {
+            policy,
+            freedoms: Freedoms::ALL,
+            host: HostAccuracy::default(),
+        }
+    }
+
+    /// Only these freedoms.
+    pub fn with_freedoms(mut self, freedoms: Freedoms) -> Self {
+        self.freedoms = freedoms;
+        self
+    }
+
+    /// A different host accuracy.
+    pub fn with_host(mut self, host: HostAccuracy) -> Self {
+        self.host = host;
+        self
+    }
+
+    fn halves(allowance: f64, host: f64) -> i32 {
+        (2.0 * (allowance - host)).floor().max(0.0) as i32
+    }
+
+    fn prelude(&self) -> String {
+        let (policy, seed) = self.policy.code();
+        let h = &self.host;
+        let mut s = String::new();
+        let _ = writeln!(s, "const PREPASS_CF_POLICY: u32 = {policy}u;");
+        let _ = writeln!(s, "const PREPASS_CF_SEED: u32 = {seed}u;");
+        let _ = writeln!(s, "const PREPASS_CF_FREEDOMS: u32 = {}u;", self.freedoms.0);
+        let div = Self::halves(allowance::DIVISION_ULP, h.division_ulp);
+        let _ = writeln!(s, "const PREPASS_CF_DIV_HALVES: i32 = {div};");
+        let isqrt = Self::halves(allowance::INVERSE_SQRT_ULP, h.inverse_sqrt_ulp);
+        let _ = writeln!(s, "const PREPASS_CF_ISQRT_HALVES: i32 = {isqrt};");
+        let exp_host = (2.0 * h.exp_ulp).ceil() as i32;
+        let _ = writeln!(s, "const PREPASS_CF_EXP_HOST_HALVES: i32 = {exp_host};");
+        let log = Self::halves(allowance::LOG_ULP, h.log_ulp);
+        let _ = writeln!(s, "const PREPASS_CF_LOG_HALVES: i32 = {log};");
+        let log_abs = ((allowance::LOG_ABS - h.log_abs).max(0.0)) as f32;
+        let _ = writeln!(s, "const PREPASS_CF_LOG_ABS_PUSH: f32 = {log_abs:e}f;");
+        let unpack = Self::halves(allowance::UNPACK_ULP, h.division_ulp);
+        let _ = writeln!(s, "const PREPASS_CF_UNPACK_HALVES: i32 = {unpack};");
+        s
+    }
+}
+
+/// A module rewritten for emulation.
+#[derive(Clone, Debug)]
+pub struct Emulated {
+    /// The emulating module's WGSL (naga's WGSL backend): the original functions under their
+    /// names, the helper library, and one `prepass_cf_undefined__f` per function `f`.
+    pub source: String,
+    /// How many operations were rewritten.
+    pub sites: usize,
+    /// Inexact operations the module uses that are left at the host's accuracy.
+    pub uncovered: Vec<String>,
+    /// The policy it was built for.
+    pub emulation: Emulation,
+    undefined: BTreeMap<String, String>,
+}
+
+impl Emulated {
+    /// Name of the function that returns 1 where `function`'s result is not defined by the spec
+    /// (an operation left its domain), 0 elsewhere; `None` for functions whose parameters the
+    /// wrapper cannot spell (pointers, arrays).
+    pub fn undefined_function(&self, function: &str) -> Option<&str> {
+        self.undefined.get(function).map(String::as_str)
+    }
+}
+
+/// Why a module could not be emulated.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct EmulateError(pub String);
+
+impl std::fmt::Display for EmulateError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "conforming-adapter emulation failed: {}", self.0)
+    }
+}
+
+impl std::error::Error for EmulateError {}
+
+/// The helper library, `core.wgsl`.
+pub const CORE_WGSL: &str = include_str!("core.wgsl");
+
+fn parse(
+    source: &str,
+    stage: &str,
+) -> Result<(naga::Module, naga::valid::ModuleInfo), EmulateError> {
+    let checked = crate::wgsl::parse_and_validate(source)
+        .map_err(|e| EmulateError(format!("{stage}: {e}")))?;
+    Ok((checked.module, checked.info))
+}
+
+/// Rewrite `source` so that every f32 operation the WGSL spec leaves free is evaluated as
+/// `emulation` says; see the module docs for what is covered and how the host's error is
+/// accounted for.
+pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateError> {
+    // Pass 1: which vector wrappers the module needs, and the parameter lists of its functions.
+    let (m1, i1) = parse(source, "the source")?;
+    let plan1 = rewrite::plan(&m1, &i1);
+    let mut text = String::with_capacity(source.len() + CORE_WGSL.len() + 4096);
+    // Helpers first: a call may only reach a function earlier in naga's arena, and the front
+    // end keeps source order where no dependency decides it.
+    text.push_str(&emulation.prelude());
+    text.push_str(CORE_WGSL);
+    for w in plan1.wrappers.values() {
+        text.push_str(w);
+    }
+    text.push_str(source);
+    text.push('\n');
+    let mut undefined = BTreeMap::new();
+    for (_, f) in m1.functions.iter() {
+        let Some(name) = f.name.as_deref() else {
+            continue;
+        };
+        if name.starts_with(rewrite::PREFIX) {
+            continue;
+        }
+        let params: Option<Vec<String>> = f
+            .arguments
+            .iter()
+            .enumerate()
+            .map(|(k, a)| rewrite::wgsl_type(&m1, a.ty).map(|t| format!("a{k}: {t}")))
+            .collect();
+        let Some(params) = params else { continue };
+        let args: Vec<String> = (0..params.len()).map(|k| format!("a{k}")).collect();
+        let wrapper = format!("{}undefined__{name}", rewrite::PREFIX);
+        let call = format!("{name}({})", args.join(", "));
+        let body = if f.result.is_some() {
+            format!("_ = {call};")
+        } else {
+            format!("{call};")
+        };
+        let _ = writeln!(
+            text,
+            "fn {wrapper}({}) -> u32 {{\n    prepass_cf_undefined = 0u;\n    {body}\n    return prepass_cf_undefined;\n}}",
+            params.join(", ")
+        );
+        undefined.insert(name.to_string(), wrapper);
+    }
+    // Pass 2: the same plan on the combined module (its own handles), applied.
+    let (mut m2, i2) = parse(&text, "the module with the helper library")?;
+    let plan2 = rewrite::plan(&m2, &i2);
+    let sites = rewrite::apply(&mut m2, &plan2).map_err(EmulateError)?;
+    let info = naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32,
+    )
+    .validate(&m2)
+    .map_err(|e| EmulateError(format!("the rewritten module is invalid: {e:?}")))?;
+    let source = naga::back::wgsl::write_string(&m2, &info, naga::back::wgsl::WriterFlags::empty())
+        .map_err(|e| EmulateError(format!("naga's WGSL backend: {e}")))?;
+    Ok(Emulated {
+        source,
+        sites,
+        uncovered: plan1.uncovered.into_iter().collect(),
+        emulation: *emulation,
+        undefined,
+    })
+}

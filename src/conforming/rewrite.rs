@@ -1,0 +1,648 @@
+//! The naga IR pass: find every f32 operation whose result WGSL leaves free, and turn it into a
+//! call of the helper in `core.wgsl` (or a generated vector wrapper of it).
+//!
+//! An expression `e` that is rewritten keeps its handle, so everything that uses it still does:
+//! `e` becomes `CallResult(helper)`, its `Emit` range is split around it, and a `Call` statement
+//! computing it from the original operands is put in its place. Operands have smaller handles
+//! than `e` (naga's arena order), so they are already evaluated where the call stands.
+
+use naga::{
+    BinaryOperator, Block, Expression, Function, Handle, Literal, MathFunction, Module, Range,
+    ScalarKind, Span, Statement, TypeInner, VectorSize,
+};
+use std::collections::{BTreeMap, BTreeSet, HashMap, HashSet};
+use std::fmt::Write as _;
+
+/// Prefix of everything the emulation adds to a module.
+pub const PREFIX: &str = "prepass_cf_";
+
+/// Lanes of an f32 value: 1 for a scalar, 2–4 for a vector.
+type Lanes = u8;
+
+/// One operand: an existing expression, with its lane count.
+#[derive(Clone, Copy, Debug)]
+struct Operand {
+    expr: Handle<Expression>,
+    lanes: Lanes,
+}
+
+/// What an expression becomes.
+#[derive(Clone, Debug)]
+struct Site {
+    expr: Handle<Expression>,
+    /// Helper function name.
+    helper: String,
+    operands: Vec<Handle<Expression>>,
+}
+
+/// A helper the module needs: its name and, for generated ones, its WGSL.
+#[derive(Default)]
+pub struct Plan {
+    sites: HashMap<String, Vec<Site>>,
+    /// Generated wrappers by name.
+    pub wrappers: BTreeMap<String, String>,
+    /// Inexact operations left at the host's accuracy (not emulated), by name.
+    pub uncovered: BTreeSet<String>,
+}
+
+fn f32_lanes(inner: &TypeInner) -> Option<Lanes> {
+    match *inner {
+        TypeInner::Scalar(s) if s.kind == ScalarKind::Float && s.width == 4 => Some(1),
+        TypeInner::Vector { size, scalar }
+            if scalar.kind == ScalarKind::Float && scalar.width == 4 =>
+        {
+            Some(size as u8)
+        }
+        _ => None,
+    }
+}
+
+fn ty_name(lanes: Lanes) -> String {
+    if lanes == 1 {
+        "f32".into()
+    } else {
+        format!("vec{lanes}<f32>")
+    }
+}
+
+fn lane(arg: &str, lanes: Lanes, k: u8) -> String {
+    if lanes == 1 {
+        arg.to_string()
+    } else {
+        format!("{arg}[{k}]")
+    }
+}
+
+/// A component-wise wrapper of the scalar core helper `core` for these operand shapes.
+fn componentwise(plan: &mut Plan, core: &str, shapes: &[Lanes]) -> String {
+    let n = shapes.iter().copied().max().unwrap_or(1);
+    let core_name = format!("{PREFIX}{core}");
+    if n == 1 {
+        return core_name;
+    }
+    let sig: String = shapes.iter().map(|l| l.to_string()).collect();
+    let name = format!("{PREFIX}{core}_v{sig}");
+    plan.wrappers.entry(name.clone()).or_insert_with(|| {
+        let params: Vec<String> = shapes
+            .iter()
+            .enumerate()
+            .map(|(i, &l)| format!("a{i}: {}", ty_name(l)))
+            .collect();
+        let lanes: Vec<String> = (0..n)
+            .map(|k| {
+                let args: Vec<String> = shapes
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &l)| lane(&format!("a{i}"), l, k))
+                    .collect();
+                format!(
+                    "{core_name}(site + {}u, {})",
+                    1024 * u32::from(k),
+                    args.join(", ")
+                )
+            })
+            .collect();
+        format!(
+            "fn {name}(site: u32, {}) -> {} {{\n    return {}({});\n}}\n",
+            params.join(", "),
+            ty_name(n),
+            ty_name(n),
+            lanes.join(", ")
+        )
+    });
+    name
+}
+
+/// `dot`, `length`, `normalize`, `distance`, `reflect`, `cross` of `n` lanes, as their
+/// defining expressions (the spec's "inherited" accuracy).
+fn inherited(plan: &mut Plan, what: &str, n: Lanes) -> String {
+    let name = format!("{PREFIX}{what}{n}");
+    if plan.wrappers.contains_key(&name) {
+        return name;
+    }
+    let t = ty_name(n);
+    let p = PREFIX;
+    let mut s = String::new();
+    let guard = |s: &mut String, builtin: &str| {
+        let _ = writeln!(
+            s,
+            "    if (!{p}on(PREPASS_CF_INHERITED)) {{\n        return {builtin};\n    }}"
+        );
+    };
+    match what {
+        "dot" => {
+            let _ = writeln!(s, "fn {name}(site: u32, a: {t}, b: {t}) -> f32 {{");
+            guard(&mut s, if n == 1 { "a * b" } else { "dot(a, b)" });
+            for k in 0..n {
+                let _ = writeln!(
+                    s,
+                    "    let p{k} = {p}mul(site + {}u, {}, {});",
+                    64 * u32::from(k),
+                    lane("a", n, k),
+                    lane("b", n, k)
+                );
+            }
+            // The written order, left to right.
+            let _ = writeln!(s, "    var r = p0;");
+            for k in 1..n {
+                let _ = writeln!(
+                    s,
+                    "    r = {p}add(site + {}u, r, p{k});",
+                    512 + 64 * u32::from(k)
+                );
+            }
+            if n > 2 {
+                // Reassociated: right to left.
+                let _ = writeln!(s, "    var q = p{};", n - 1);
+                for k in (0..n - 1).rev() {
+                    let _ = writeln!(
+                        s,
+                        "    q = {p}add(site + {}u, p{k}, q);",
+                        1024 + 64 * u32::from(k)
+                    );
+                }
+                let _ = writeln!(
+                    s,
+                    "    r = {p}pick(PREPASS_CF_REASSOCIATION, site + 1600u, r, q);"
+                );
+            }
+            if n > 1 {
+                // Fused: every product after the first folded into a multiply-add.
+                let _ = writeln!(s, "    var m = p0;");
+                for k in 1..n {
+                    let _ = writeln!(
+                        s,
+                        "    m = {p}mad(site + {}u, {}, {}, m);",
+                        2048 + 64 * u32::from(k),
+                        lane("a", n, k),
+                        lane("b", n, k)
+                    );
+                }
+                let _ = writeln!(s, "    r = {p}pick(PREPASS_CF_FUSION, site + 2600u, r, m);");
+            }
+            let _ = writeln!(s, "    return r;\n}}");
+        }
+        "length" => {
+            let dot = inherited(plan, "dot", n);
+            let _ = writeln!(s, "fn {name}(site: u32, v: {t}) -> f32 {{");
+            guard(&mut s, "length(v)");
+            let _ = writeln!(
+                s,
+                "    return {p}sqrt(site, {dot}(site + 8192u, v, v));\n}}"
+            );
+        }
+        "distance" => {
+            let len = inherited(plan, "length", n);
+            let sub = componentwise(plan, "sub", &[n, n]);
+            let _ = writeln!(s, "fn {name}(site: u32, a: {t}, b: {t}) -> f32 {{");
+            guard(&mut s, "distance(a, b)");
+            let _ = writeln!(s, "    return {len}(site, {sub}(site + 16384u, a, b));\n}}");
+        }
+        "normalize" => {
+            let len = inherited(plan, "length", n);
+            let div = componentwise(plan, "div", &[n, 1]);
+            let _ = writeln!(s, "fn {name}(site: u32, v: {t}) -> {t} {{");
+            guard(&mut s, "normalize(v)");
+            let _ = writeln!(s, "    return {div}(site + 16384u, v, {len}(site, v));\n}}");
+        }
+        "reflect" => {
+            let dot = inherited(plan, "dot", n);
+            let nmad = componentwise(plan, "nmad", &[1, n, n]);
+            let _ = writeln!(s, "fn {name}(site: u32, e1: {t}, e2: {t}) -> {t} {{");
+            guard(&mut s, "reflect(e1, e2)");
+            let _ = writeln!(
+                s,
+                "    let k = 2.0 * {dot}(site, e2, e1);\n    return {nmad}(site + 16384u, k, e2, e1);\n}}"
+            );
+        }
+        "cross" => {
+            let _ = writeln!(
+                s,
+                "fn {name}(site: u32, a: vec3<f32>, b: vec3<f32>) -> vec3<f32> {{"
+            );
+            guard(&mut s, "cross(a, b)");
+            let _ = writeln!(
+                s,
+                "    return vec3<f32>(\n        \
+                 {p}msub(site, a.y, b.z, {p}mul(site + 64u, a.z, b.y)),\n        \
+                 {p}msub(site + 1024u, a.z, b.x, {p}mul(site + 1088u, a.x, b.z)),\n        \
+                 {p}msub(site + 2048u, a.x, b.y, {p}mul(site + 2112u, a.y, b.x)));\n}}"
+            );
+        }
+        _ => unreachable!("no inherited helper {what}"),
+    }
+    plan.wrappers.insert(name.clone(), s);
+    name
+}
+
+fn binary_operands(
+    f: &Function,
+    e: Handle<Expression>,
+    want: BinaryOperator,
+) -> Option<(Handle<Expression>, Handle<Expression>)> {
+    match f.expressions[e] {
+        Expression::Binary { op, left, right } if op == want => Some((left, right)),
+        _ => None,
+    }
+}
+
+/// The helper (and its operands) for expression `e`, if it is an operation the spec leaves free.
+fn site_for(
+    plan: &mut Plan,
+    module: &Module,
+    f: &Function,
+    lanes_of: &dyn Fn(Handle<Expression>) -> Option<Lanes>,
+    e: Handle<Expression>,
+) -> Option<(String, Vec<Handle<Expression>>)> {
+    let result = lanes_of(e);
+    let ops = |hs: &[Handle<Expression>]| -> Option<Vec<Operand>> {
+        hs.iter()
+            .map(|&h| lanes_of(h).map(|lanes| Operand { expr: h, lanes }))
+            .collect()
+    };
+    let call = |plan: &mut Plan, core: &str, hs: &[Handle<Expression>]| {
+        let o = ops(hs)?;
+        let shapes: Vec<Lanes> = o.iter().map(|x| x.lanes).collect();
+        Some((
+            componentwise(plan, core, &shapes),
+            o.iter().map(|x| x.expr).collect(),
+        ))
+    };
+    match f.expressions[e] {
+        Expression::Binary { op, left, right } => {
+            result?;
+            lanes_of(left)?;
+            lanes_of(right)?;
+            use BinaryOperator as B;
+            let mul = |h| {
+                binary_operands(f, h, B::Multiply)
+                    .filter(|&(a, b)| lanes_of(a).is_some() && lanes_of(b).is_some())
+            };
+            let add = |h| {
+                binary_operands(f, h, B::Add)
+                    .filter(|&(a, b)| lanes_of(a).is_some() && lanes_of(b).is_some())
+            };
+            let sub = |h| {
+                binary_operands(f, h, B::Subtract)
+                    .filter(|&(a, b)| lanes_of(a).is_some() && lanes_of(b).is_some())
+            };
+            match op {
+                B::Add => {
+                    if let Some((a, b)) = mul(left) {
+                        call(plan, "mad", &[a, b, right])
+                    } else if let Some((a, b)) = mul(right) {
+                        call(plan, "mad", &[a, b, left])
+                    } else if let Some((a, b)) = add(left) {
+                        call(plan, "add3", &[a, b, right])
+                    } else if let Some((a, b)) = add(right) {
+                        call(plan, "add3", &[a, b, left])
+                    } else if let Some((a, b)) = sub(left) {
+                        call(plan, "sub_add", &[a, b, right])
+                    } else if let Some((a, b)) = sub(right) {
+                        call(plan, "sub_add", &[a, b, left])
+                    } else {
+                        call(plan, "add", &[left, right])
+                    }
+                }
+                B::Subtract => {
+                    if let Some((a, b)) = mul(left) {
+                        call(plan, "msub", &[a, b, right])
+                    } else if let Some((a, b)) = mul(right) {
+                        call(plan, "nmad", &[a, b, left])
+                    } else {
+                        call(plan, "sub", &[left, right])
+                    }
+                }
+                B::Multiply => call(plan, "mul", &[left, right]),
+                B::Divide => {
+                    if let Some((a, b)) = mul(left) {
+                        call(plan, "mul_div", &[a, b, right])
+                    } else {
+                        call(plan, "div", &[left, right])
+                    }
+                }
+                B::Modulo => {
+                    plan.uncovered.insert("f32 %".into());
+                    None
+                }
+                _ => None,
+            }
+        }
+        Expression::Math {
+            fun,
+            arg,
+            arg1,
+            arg2,
+            ..
+        } => {
+            use MathFunction as M;
+            let n = lanes_of(arg);
+            let both = |plan: &mut Plan, what: &str| -> Option<(String, Vec<Handle<Expression>>)> {
+                let n = n?;
+                Some((inherited(plan, what, n), vec![arg, arg1?]))
+            };
+            match fun {
+                M::InverseSqrt => call(plan, "inverse_sqrt", &[arg]),
+                M::Sqrt => call(plan, "sqrt", &[arg]),
+                M::Exp => call(plan, "exp", &[arg]),
+                M::Exp2 => call(plan, "exp2", &[arg]),
+                M::Log => call(plan, "log", &[arg]),
+                M::Log2 => call(plan, "log2", &[arg]),
+                M::Fract => call(plan, "fract", &[arg]),
+                M::Pow => call(plan, "pow", &[arg, arg1?]),
+                M::Fma => call(plan, "fma", &[arg, arg1?, arg2?]),
+                M::Mix => call(plan, "mix", &[arg, arg1?, arg2?]),
+                M::Dot => both(plan, "dot").map(|(h, a)| (h, a)),
+                M::Distance => both(plan, "distance"),
+                M::Reflect => both(plan, "reflect"),
+                M::Cross => both(plan, "cross"),
+                M::Length => Some((inherited(plan, "length", n?), vec![arg])),
+                M::Normalize if n? > 1 => Some((inherited(plan, "normalize", n?), vec![arg])),
+                M::Unpack4x8unorm | M::Unpack4x8snorm | M::Unpack2x16unorm | M::Unpack2x16snorm => {
+                    let name = match fun {
+                        M::Unpack4x8unorm => "unpack4x8unorm",
+                        M::Unpack4x8snorm => "unpack4x8snorm",
+                        M::Unpack2x16unorm => "unpack2x16unorm",
+                        _ => "unpack2x16snorm",
+                    };
+                    Some((format!("{PREFIX}{name}"), vec![arg]))
+                }
+                M::Pack4x8unorm
+                | M::Pack4x8snorm
+                | M::Pack2x16unorm
+                | M::Pack2x16snorm
+                | M::Pack2x16float => {
+                    let name = match fun {
+                        M::Pack4x8unorm => "pack4x8unorm",
+                        M::Pack4x8snorm => "pack4x8snorm",
+                        M::Pack2x16unorm => "pack2x16unorm",
+                        M::Pack2x16snorm => "pack2x16snorm",
+                        _ => "pack2x16float",
+                    };
+                    Some((format!("{PREFIX}{name}"), vec![arg]))
+                }
+                M::Sin
+                | M::Cos
+                | M::Tan
+                | M::Asin
+                | M::Acos
+                | M::Atan
+                | M::Atan2
+                | M::Sinh
+                | M::Cosh
+                | M::Tanh
+                | M::Asinh
+                | M::Acosh
+                | M::Atanh
+                | M::SmoothStep
+                | M::Refract
+                | M::FaceForward
+                | M::Degrees
+                | M::Radians
+                | M::Modf
+                | M::Frexp
+                | M::QuantizeToF16 => {
+                    if n.is_some() {
+                        plan.uncovered.insert(format!("{fun:?}"));
+                    }
+                    let _ = module;
+                    None
+                }
+                _ => None,
+            }
+        }
+        _ => None,
+    }
+}
+
+fn emitted(block: &Block, out: &mut HashSet<Handle<Expression>>) {
+    for stmt in block.iter() {
+        match stmt {
+            Statement::Emit(range) => out.extend(range.clone()),
+            Statement::Block(b) => emitted(b, out),
+            Statement::If { accept, reject, .. } => {
+                emitted(accept, out);
+                emitted(reject, out);
+            }
+            Statement::Switch { cases, .. } => cases.iter().for_each(|c| emitted(&c.body, out)),
+            Statement::Loop {
+                body, continuing, ..
+            } => {
+                emitted(body, out);
+                emitted(continuing, out);
+            }
+            _ => {}
+        }
+    }
+}
+
+fn function_key(module: &Module, f: &Function, entry: Option<usize>) -> String {
+    match entry {
+        Some(i) => format!("entry:{}", module.entry_points[i].name),
+        None => format!("fn:{}", f.name.as_deref().unwrap_or("")),
+    }
+}
+
+/// Find every site in the module's functions and entry points (the emulation's own helpers
+/// excepted).
+pub fn plan(module: &Module, info: &naga::valid::ModuleInfo) -> Plan {
+    let mut plan = Plan::default();
+    let visit = |f: &Function, fi: &naga::valid::FunctionInfo, key: String, plan: &mut Plan| {
+        if f.name.as_deref().is_some_and(|n| n.starts_with(PREFIX)) {
+            return;
+        }
+        let mut live = HashSet::new();
+        emitted(&f.body, &mut live);
+        let lanes_of = |h: Handle<Expression>| f32_lanes(fi[h].ty.inner_with(&module.types));
+        let mut sites = Vec::new();
+        for (h, _) in f.expressions.iter() {
+            if !live.contains(&h) {
+                continue;
+            }
+            if let Some((helper, operands)) = site_for(plan, module, f, &lanes_of, h) {
+                sites.push(Site {
+                    expr: h,
+                    helper,
+                    operands,
+                });
+            }
+        }
+        plan.sites.insert(key, sites);
+    };
+    for (h, f) in module.functions.iter() {
+        visit(f, &info[h], function_key(module, f, None), &mut plan);
+    }
+    for (i, ep) in module.entry_points.iter().enumerate() {
+        visit(
+            &ep.function,
+            info.get_entry_point(i),
+            function_key(module, &ep.function, Some(i)),
+            &mut plan,
+        );
+    }
+    plan
+}
+
+fn rebuild(block: Block, calls: &mut HashMap<Handle<Expression>, Statement>) -> Block {
+    let mut out = Block::with_capacity(block.len());
+    for (stmt, span) in block.span_into_iter() {
+        match stmt {
+            Statement::Emit(range) => {
+                let mut run: Option<(Handle<Expression>, Handle<Expression>)> = None;
+                let flush = |out: &mut Block, run: &mut Option<(Handle<Expression>, Handle<Expression>)>| {
+                    if let Some((a, b)) = run.take() {
+                        out.push(Statement::Emit(Range::new_from_bounds(a, b)), span);
+                    }
+                };
+                for h in range {
+                    if let Some(call) = calls.remove(&h) {
+                        flush(&mut out, &mut run);
+                        out.push(call, span);
+                    } else {
+                        run = Some(match run {
+                            Some((a, _)) => (a, h),
+                            None => (h, h),
+                        });
+                    }
+                }
+                flush(&mut out, &mut run);
+            }
+            Statement::Block(b) => out.push(Statement::Block(rebuild(b, calls)), span),
+            Statement::If {
+                condition,
+                accept,
+                reject,
+            } => out.push(
+                Statement::If {
+                    condition,
+                    accept: rebuild(accept, calls),
+                    reject: rebuild(reject, calls),
+                },
+                span,
+            ),
+            Statement::Switch {
+                selector,
+                mut cases,
+            } => {
+                for c in cases.iter_mut() {
+                    c.body = rebuild(std::mem::take(&mut c.body), calls);
+                }
+                out.push(Statement::Switch { selector, cases }, span);
+            }
+            Statement::Loop {
+                body,
+                continuing,
+                break_if,
+            } => out.push(
+                Statement::Loop {
+                    body: rebuild(body, calls),
+                    continuing: rebuild(continuing, calls),
+                    break_if,
+                },
+                span,
+            ),
+            other => out.push(other, span),
+        }
+    }
+    out
+}
+
+fn apply_to(
+    f: &mut Function,
+    sites: &[Site],
+    helpers: &HashMap<String, Handle<Function>>,
+    next_site: &mut u32,
+) -> Result<usize, String> {
+    let mut calls = HashMap::new();
+    for s in sites {
+        let Some(&function) = helpers.get(&s.helper) else {
+            return Err(format!("helper {} is missing from the module", s.helper));
+        };
+        *next_site = next_site.wrapping_add(1);
+        let id = f.expressions.append(
+            Expression::Literal(Literal::U32(next_site.wrapping_mul(1 << 16))),
+            Span::UNDEFINED,
+        );
+        let mut arguments = vec![id];
+        arguments.extend(&s.operands);
+        f.expressions[s.expr] = Expression::CallResult(function);
+        calls.insert(
+            s.expr,
+            Statement::Call {
+                function,
+                arguments,
+                result: Some(s.expr),
+            },
+        );
+    }
+    let n = calls.len();
+    f.body = rebuild(std::mem::take(&mut f.body), &mut calls);
+    if !calls.is_empty() {
+        return Err("an emulated expression was not found in the function body".into());
+    }
+    Ok(n)
+}
+
+/// Rewrite `module` (which holds the helper library) according to `plan`; returns the number of
+/// sites rewritten.
+pub fn apply(module: &mut Module, plan: &Plan) -> Result<usize, String> {
+    let helpers: HashMap<String, Handle<Function>> = module
+        .functions
+        .iter()
+        .filter_map(|(h, f)| f.name.clone().map(|n| (n, h)))
+        .collect();
+    let mut next_site = 0u32;
+    let mut total = 0;
+    let keys: Vec<(Option<Handle<Function>>, Option<usize>, String)> = module
+        .functions
+        .iter()
+        .map(|(h, f)| (Some(h), None, function_key(module, f, None)))
+        .chain(
+            module
+                .entry_points
+                .iter()
+                .enumerate()
+                .map(|(i, ep)| (None, Some(i), function_key(module, &ep.function, Some(i)))),
+        )
+        .collect();
+    for (fh, ep, key) in keys {
+        let Some(sites) = plan.sites.get(&key) else {
+            continue;
+        };
+        let f = match (fh, ep) {
+            (Some(h), _) => &mut module.functions[h],
+            (None, Some(i)) => &mut module.entry_points[i].function,
+            _ => continue,
+        };
+        total += apply_to(f, sites, &helpers, &mut next_site)?;
+    }
+    Ok(total)
+}
+
+/// WGSL spelling of a parameter type, where it has one the wrapper can write.
+pub fn wgsl_type(module: &Module, ty: Handle<naga::Type>) -> Option<String> {
+    let t = &module.types[ty];
+    let scalar = |s: naga::Scalar| -> Option<&'static str> {
+        Some(match (s.kind, s.width) {
+            (ScalarKind::Float, 4) => "f32",
+            (ScalarKind::Float, 2) => "f16",
+            (ScalarKind::Uint, 4) => "u32",
+            (ScalarKind::Sint, 4) => "i32",
+            (ScalarKind::Bool, _) => "bool",
+            _ => return None,
+        })
+    };
+    match t.inner {
+        TypeInner::Scalar(s) => scalar(s).map(str::to_string),
+        TypeInner::Vector { size, scalar: s } => {
+            let n = match size {
+                VectorSize::Bi => 2,
+                VectorSize::Tri => 3,
+                VectorSize::Quad => 4,
+            };
+            Some(format!("vec{n}<{}>", scalar(s)?))
+        }
+        TypeInner::Struct { .. } => t.name.clone(),
+        _ => None,
+    }
+}
