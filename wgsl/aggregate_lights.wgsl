@@ -20,6 +20,7 @@
 
 const AGGREGATE_LIGHT_WEIGHT_MAX = 1099511627776.0; // 2^40
 
+// True when no component of v is NaN or ±Inf (judged from the bits).
 fn aggregate_light_finite3(v: vec3<f32>) -> bool {
     return all((bitcast<vec3<u32>>(v) & vec3<u32>(0x7fffffffu)) < vec3<u32>(0x7f800000u));
 }

@@ -20,10 +20,12 @@
 const LIGHT_VOLUME_U = 5.9604645e-8; // 2^-24, the unit roundoff of f32
 const LIGHT_VOLUME_DEPTH24_MAX = 16777215.0;
 
+// True when x is neither NaN nor ±Inf (judged from the bits).
 fn light_volume_finite(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7fffffffu) < 0x7f800000u;
 }
 
+// True when no component of v is NaN or ±Inf (judged from the bits).
 fn light_volume_finite3(v: vec3<f32>) -> bool {
     return all((bitcast<vec3<u32>>(v) & vec3<u32>(0x7fffffffu)) < vec3<u32>(0x7f800000u));
 }

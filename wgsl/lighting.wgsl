@@ -20,10 +20,12 @@
 const LPP_LUMINANCE = vec3<f32>(0.2126, 0.7152, 0.0722);
 const LPP_COLOUR_MAX = 65504.0;
 
+// True when x is neither NaN nor ±Inf (judged from the bits).
 fn lpp_finite(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7fffffffu) < 0x7f800000u;
 }
 
+// True when no component of v is NaN or ±Inf (judged from the bits).
 fn lpp_finite3(v: vec3<f32>) -> bool {
     return all((bitcast<vec3<u32>>(v) & vec3<u32>(0x7fffffffu)) < vec3<u32>(0x7f800000u));
 }
@@ -112,6 +114,7 @@ fn lpp_cosines(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, phong:
     return vec2<f32>(n_dot_l, clamp(dot(n, h), 0.0, 1.0));
 }
 
+// The one-buffer P of the two lights below; phong picks R·V instead of N·H as the cosine.
 fn lpp_light(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, colour: vec3<f32>,
              attenuation: f32, power: f32, phong: bool) -> vec4<f32> {
     if (!lpp_finite3(colour) || !lpp_finite(attenuation) || !lpp_finite(power)) {

@@ -12,6 +12,7 @@
 // finite length). A negative z is first clamped to 0 (the nearest point of the hemisphere, on
 // the equator); (0, 0, -1) thereby becomes the zero vector and encodes +z.
 
+// The input made safe as oct_sanitize does (see the header), after clamping z to >= 0.
 fn hemioct_sanitize(n: vec3<f32>) -> vec3<f32> {
     let bits = bitcast<vec3<u32>>(n);
     let mag = bits & vec3<u32>(0x7fffffffu);
@@ -47,6 +48,7 @@ fn hemioct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
     return clamp(q * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(1.0)) * f32(m);
 }
 
+// The exact integer direction D that code (u, v) stands for (see the header).
 fn hemioct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
     let mi = i32(m);
     let a = 2 * i32(uv.x) - mi;
@@ -88,6 +90,7 @@ fn encode_normal_hemioct24_fast(n: vec3<f32>) -> u32 {
     return uv.x | (uv.y << 12u);
 }
 
+// The unit vector (z >= 0) of a 2x12-bit hemi-oct code; bits 24-31 are ignored.
 fn decode_normal_hemioct24(p: u32) -> vec3<f32> {
     let uv = vec2<u32>(p & 0xfffu, (p >> 12u) & 0xfffu);
     return normalize(vec3<f32>(hemioct_lattice(uv, 4095u)));
@@ -99,6 +102,7 @@ fn encode_normal_hemioct24_unorm(n: vec3<f32>) -> vec4<f32> {
     return unpack4x8unorm(encode_normal_hemioct24(n));
 }
 
+// The unit vector from sampled rgba8unorm channels (bytes rounded back, then decoded).
 fn decode_normal_hemioct24_unorm(c: vec4<f32>) -> vec3<f32> {
     let is_nan = (bitcast<vec4<u32>>(c) & vec4<u32>(0x7fffffffu)) > vec4<u32>(0x7f800000u);
     let b = vec4<u32>(round(clamp(select(c, vec4<f32>(0.0), is_nan), vec4<f32>(0.0), vec4<f32>(1.0)) * 255.0));

@@ -112,6 +112,7 @@ fn oct_encode_round(n: vec3<f32>, bits: u32) -> u32 {
     return uv.x | (uv.y << bits);
 }
 
+// The unit vector of code p with `bits` bits per axis: its integer direction D, normalised.
 fn oct_decode(p: u32, bits: u32) -> vec3<f32> {
     let m = (1u << bits) - 1u;
     let uv = vec2<u32>(p & m, (p >> bits) & m);
@@ -126,12 +127,15 @@ fn oct_unorm_bytes(c: vec4<f32>) -> u32 {
 }
 
 // ---- 2 x 8 bits (RG8) ----
+// The 2x8-bit code whose direction is closest to n: u in bits 0-7, v in bits 8-15.
 fn encode_normal_oct16(n: vec3<f32>) -> u32 {
     return oct_encode_precise(n, 8u);
 }
+// The 2x8-bit code by rounding each axis: cheaper, not always the closest direction.
 fn encode_normal_oct16_fast(n: vec3<f32>) -> u32 {
     return oct_encode_round(n, 8u);
 }
+// The unit vector of a 2x8-bit code; bits 16-31 are ignored.
 fn decode_normal_oct16(p: u32) -> vec3<f32> {
     return oct_decode(p, 8u);
 }
@@ -140,40 +144,51 @@ fn decode_normal_oct16(p: u32) -> vec3<f32> {
 fn encode_normal_oct16_unorm(n: vec3<f32>) -> vec2<f32> {
     return unpack4x8unorm(encode_normal_oct16(n)).xy;
 }
+// The unit vector from sampled rg8unorm channels (bytes rounded back, then decoded).
 fn decode_normal_oct16_unorm(c: vec2<f32>) -> vec3<f32> {
     return oct_decode(oct_unorm_bytes(vec4<f32>(c, 0.0, 0.0)), 8u);
 }
 
 // ---- 2 x 12 bits (three bytes of an RGBA8 texel; alpha left zero for the material) ----
+// The 2x12-bit code whose direction is closest to n: u in bits 0-11, v in bits 12-23.
 fn encode_normal_oct24(n: vec3<f32>) -> u32 {
     return oct_encode_precise(n, 12u);
 }
+// The 2x12-bit code by rounding each axis: cheaper, not always the closest direction.
 fn encode_normal_oct24_fast(n: vec3<f32>) -> u32 {
     return oct_encode_round(n, 12u);
 }
+// The unit vector of a 2x12-bit code; bits 24-31 are ignored.
 fn decode_normal_oct24(p: u32) -> vec3<f32> {
     return oct_decode(p, 12u);
 }
+// The rgba8unorm channels to write for encode_normal_oct24(n) (alpha 0, for the material).
 fn encode_normal_oct24_unorm(n: vec3<f32>) -> vec4<f32> {
     return unpack4x8unorm(encode_normal_oct24(n));
 }
+// The unit vector from sampled rgba8unorm channels (bytes rounded back; alpha ignored).
 fn decode_normal_oct24_unorm(c: vec4<f32>) -> vec3<f32> {
     return oct_decode(oct_unorm_bytes(c), 12u);
 }
 
 // ---- 2 x 16 bits (a whole RGBA8 texel, or RG16) ----
+// The 2x16-bit code whose direction is closest to n: u in bits 0-15, v in bits 16-31.
 fn encode_normal_oct32(n: vec3<f32>) -> u32 {
     return oct_encode_precise(n, 16u);
 }
+// The 2x16-bit code by rounding each axis: cheaper, not always the closest direction.
 fn encode_normal_oct32_fast(n: vec3<f32>) -> u32 {
     return oct_encode_round(n, 16u);
 }
+// The unit vector of a 2x16-bit code (every bit pattern decodes).
 fn decode_normal_oct32(p: u32) -> vec3<f32> {
     return oct_decode(p, 16u);
 }
+// The rgba8unorm channels to write for encode_normal_oct32(n) (all four bytes of the code).
 fn encode_normal_oct32_unorm(n: vec3<f32>) -> vec4<f32> {
     return unpack4x8unorm(encode_normal_oct32(n));
 }
+// The unit vector from sampled rgba8unorm channels (bytes rounded back, then decoded).
 fn decode_normal_oct32_unorm(c: vec4<f32>) -> vec3<f32> {
     return oct_decode(oct_unorm_bytes(c), 16u);
 }

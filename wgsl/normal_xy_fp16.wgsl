@@ -12,6 +12,7 @@
 // Decoder: every bit pattern gives a finite unit vector; NaN halves count as 0, infinite or
 // out-of-range halves are clamped to [-1, 1], and x^2 + y^2 > 1 gives z = 0 (then normalised).
 
+// The input made safe (see the header); w = 0 marks the degenerate cases, which encode +z.
 fn xyfp16_sanitize(n: vec3<f32>) -> vec4<f32> {
     let bits = bitcast<vec3<u32>>(n);
     let mag = bits & vec3<u32>(0x7fffffffu);
@@ -37,12 +38,14 @@ fn xyfp16_sanitize(n: vec3<f32>) -> vec4<f32> {
     return vec4<f32>(select(s, bitcast<vec3<f32>>(sb & vec3<u32>(0x80000000u)), s_sub), 1.0);
 }
 
+// x and y of the normalised n as two halves: x in bits 0-15, y in bits 16-31.
 fn encode_normal_xy_fp16(n: vec3<f32>) -> u32 {
     let s = xyfp16_sanitize(n).xyz;
     let u = s / sqrt(dot(s, s));
     return pack2x16float(clamp(u.xy, vec2<f32>(-1.0), vec2<f32>(1.0)));
 }
 
+// The unit vector (x, y, +sqrt(1 - x^2 - y^2)) of two halves x (bits 0-15) and y (16-31).
 fn decode_normal_xy_fp16(p: u32) -> vec3<f32> {
     let h = unpack2x16float(p);
     let is_nan = (bitcast<vec2<u32>>(h) & vec2<u32>(0x7fffffffu)) > vec2<u32>(0x7f800000u);
@@ -62,6 +65,7 @@ fn encode_normal_xy_fp16_unorm(n: vec3<f32>) -> vec4<f32> {
     return unpack4x8unorm(encode_normal_xy_fp16(n));
 }
 
+// The unit vector from sampled rgba8unorm channels (bytes rounded back, then decoded).
 fn decode_normal_xy_fp16_unorm(c: vec4<f32>) -> vec3<f32> {
     let is_nan = (bitcast<vec4<u32>>(c) & vec4<u32>(0x7fffffffu)) > vec4<u32>(0x7f800000u);
     let b = vec4<u32>(round(clamp(select(c, vec4<f32>(0.0), is_nan), vec4<f32>(0.0), vec4<f32>(1.0)) * 255.0));

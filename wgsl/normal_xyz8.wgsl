@@ -38,6 +38,7 @@ fn xyz8_sanitize(n: vec3<f32>) -> vec4<f32> {
     return vec4<f32>(select(s, bitcast<vec3<f32>>(sb & vec3<u32>(0x80000000u)), s_sub), 1.0);
 }
 
+// The normalised n as bytes round(255 (c/2 + 1/2)) for x, y, z in bits 0-23; byte 3 zero.
 fn encode_normal_xyz8(n: vec3<f32>) -> u32 {
     let s = xyz8_sanitize(n).xyz;
     // sqrt and / rather than normalize(): correctly rounded on IEEE hardware, where
@@ -49,6 +50,7 @@ fn encode_normal_xyz8(n: vec3<f32>) -> u32 {
     return b.x | (b.y << 8u) | (b.z << 16u);
 }
 
+// The unit vector of bytes 0-2: the odd-integer vector (2b - 255), normalised; byte 3 ignored.
 fn decode_normal_xyz8(p: u32) -> vec3<f32> {
     let b = vec3<i32>(vec3<u32>(p, p >> 8u, p >> 16u) & vec3<u32>(0xffu));
     return normalize(vec3<f32>(2 * b - vec3<i32>(255)));
@@ -61,6 +63,7 @@ fn encode_normal_xyz8_unorm(n: vec3<f32>) -> vec4<f32> {
     return unpack4x8unorm(encode_normal_xyz8(n));
 }
 
+// The unit vector from sampled rgba8unorm channels (bytes rounded back; alpha ignored).
 fn decode_normal_xyz8_unorm(c: vec4<f32>) -> vec3<f32> {
     let is_nan = (bitcast<vec4<u32>>(c) & vec4<u32>(0x7fffffffu)) > vec4<u32>(0x7f800000u);
     let b = vec4<u32>(round(clamp(select(c, vec4<f32>(0.0), is_nan), vec4<f32>(0.0), vec4<f32>(1.0)) * 255.0));

@@ -158,6 +158,7 @@ fn log_roughness_boundary_bits(j: u32, l: u32) -> u32 {
     return LOG_ROUGHNESS_BOUNDARY_STEPS[n % 510u] + ((n / 510u) << 23u);
 }
 
+// The code of power: nearest to 255·log2(power)/log2(max_power), ties upwards.
 fn encode_log_roughness(power: f32, max_power: f32) -> u32 {
     let l = log_roughness_range_log2(max_power);
     let b = bitcast<u32>(power);
@@ -189,6 +190,7 @@ fn encode_log_roughness(power: f32, max_power: f32) -> u32 {
     return u32(clamp(floor(t + 0.5), 0.0, 255.0));
 }
 
+// The power max_power^(k/255) that code k stands for; codes above 255 decode as 255.
 fn decode_log_roughness(code: u32, max_power: f32) -> f32 {
     let k = min(code, 255u);
     let l = log_roughness_range_log2(max_power);

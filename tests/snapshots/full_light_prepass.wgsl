@@ -4,10 +4,12 @@
 
 const LIGHT_VOLUME_U = 5.9604645e-8;
 
+// True when x is neither NaN nor ±Inf (judged from the bits).
 fn light_volume_finite(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7fffffffu) < 0x7f800000u;
 }
 
+// True when no component of v is NaN or ±Inf (judged from the bits).
 fn light_volume_finite3(v: vec3<f32>) -> bool {
     return all((bitcast<vec3<u32>>(v) & vec3<u32>(0x7fffffffu)) < vec3<u32>(0x7f800000u));
 }
@@ -141,10 +143,12 @@ const LPP_LUMINANCE = vec3<f32>(0.2126, 0.7152, 0.0722);
 
 const LPP_COLOUR_MAX = 65504.0;
 
+// True when x is neither NaN nor ±Inf (judged from the bits).
 fn lpp_finite(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7fffffffu) < 0x7f800000u;
 }
 
+// True when no component of v is NaN or ±Inf (judged from the bits).
 fn lpp_finite3(v: vec3<f32>) -> bool {
     return all((bitcast<vec3<u32>>(v) & vec3<u32>(0x7fffffffu)) < vec3<u32>(0x7f800000u));
 }
@@ -233,6 +237,7 @@ fn lpp_cosines(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, phong:
     return vec2<f32>(n_dot_l, clamp(dot(n, h), 0.0, 1.0));
 }
 
+// The one-buffer P of the two lights below; phong picks R·V instead of N·H as the cosine.
 fn lpp_light(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, colour: vec3<f32>,
              attenuation: f32, power: f32, phong: bool) -> vec4<f32> {
     if (!lpp_finite3(colour) || !lpp_finite(attenuation) || !lpp_finite(power)) {
@@ -427,6 +432,7 @@ fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
     return best.x | (best.y << bits);
 }
 
+// The unit vector of code p with `bits` bits per axis: its integer direction D, normalised.
 fn oct_decode(p: u32, bits: u32) -> vec3<f32> {
     let m = (1u << bits) - 1u;
     let uv = vec2<u32>(p & m, (p >> bits) & m);
@@ -441,18 +447,22 @@ fn oct_unorm_bytes(c: vec4<f32>) -> u32 {
 }
 
 // ---- 2 x 12 bits (three bytes of an RGBA8 texel; alpha left zero for the material) ----
+// The 2x12-bit code whose direction is closest to n: u in bits 0-11, v in bits 12-23.
 fn encode_normal_oct24(n: vec3<f32>) -> u32 {
     return oct_encode_precise(n, 12u);
 }
 
+// The unit vector of a 2x12-bit code; bits 24-31 are ignored.
 fn decode_normal_oct24(p: u32) -> vec3<f32> {
     return oct_decode(p, 12u);
 }
 
+// The rgba8unorm channels to write for encode_normal_oct24(n) (alpha 0, for the material).
 fn encode_normal_oct24_unorm(n: vec3<f32>) -> vec4<f32> {
     return unpack4x8unorm(encode_normal_oct24(n));
 }
 
+// The unit vector from sampled rgba8unorm channels (bytes rounded back; alpha ignored).
 fn decode_normal_oct24_unorm(c: vec4<f32>) -> vec3<f32> {
     return oct_decode(oct_unorm_bytes(c), 12u);
 }
@@ -618,6 +628,7 @@ fn log_roughness_boundary_bits(j: u32, l: u32) -> u32 {
     return LOG_ROUGHNESS_BOUNDARY_STEPS[n % 510u] + ((n / 510u) << 23u);
 }
 
+// The code of power: nearest to 255·log2(power)/log2(max_power), ties upwards.
 fn encode_log_roughness(power: f32, max_power: f32) -> u32 {
     let l = log_roughness_range_log2(max_power);
     let b = bitcast<u32>(power);
@@ -649,6 +660,7 @@ fn encode_log_roughness(power: f32, max_power: f32) -> u32 {
     return u32(clamp(floor(t + 0.5), 0.0, 255.0));
 }
 
+// The power max_power^(k/255) that code k stands for; codes above 255 decode as 255.
 fn decode_log_roughness(code: u32, max_power: f32) -> f32 {
     let k = min(code, 255u);
     let l = log_roughness_range_log2(max_power);
