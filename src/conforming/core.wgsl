@@ -107,34 +107,54 @@ fn prepass_cf_next(x: f32, up: bool) -> f32 {
     return bitcast<f32>(b - 1u);
 }
 
-// Spacing of the floats just below |x|. Any real that rounds to x (to either neighbour) has an
-// ULP at least this large, so a push measured in it never leaves the spec's k-ULP interval.
-fn prepass_cf_ulp_below(x: f32) -> f32 {
+// Exponent p of the spacing 2^p of the floats just below |x|. Any real that rounds to x (to
+// either neighbour) has an ULP of at least 2^p, so a push counted in it stays inside the spec's
+// k-ULP interval.
+fn prepass_cf_spacing_exp_below(x: f32) -> i32 {
     let a = bitcast<u32>(x) & 0x7fffffffu;
-    let e = i32((max(a, 1u) - 1u) >> 23u);
-    let p = max(e, 1) - 150;
-    if (p >= -126) {
-        return bitcast<f32>(u32(p + 127) << 23u);
-    }
-    return bitcast<f32>(1u << u32(p + 149));
+    return max(i32((max(a, 1u) - 1u) >> 23u), 1) - 150;
 }
 
-// x moved by halves/2 ULPs (signed), rounded back toward x where the target is not a float.
+// Exponent of the spacing between x and its neighbour n.
+fn prepass_cf_pair_exp(x: f32, n: f32) -> i32 {
+    let a = min(bitcast<u32>(x) & 0x7fffffffu, bitcast<u32>(n) & 0x7fffffffu);
+    let sx = (bitcast<u32>(x) >> 31u) != (bitcast<u32>(n) >> 31u);
+    if (sx) {
+        return -149; // across zero: the smallest spacing
+    }
+    return max(i32(a >> 23u), 1) - 150;
+}
+
+// x moved by halves/2 ULPs (signed), float by float, never farther: the last float whose
+// distance from x is within the budget. Integer bookkeeping only (quarters of the spacing below
+// x), so no compiler identity such as (x + d) - x = d can change it. At most 1024 floats.
 fn prepass_cf_push(x: f32, halves: i32) -> f32 {
     if (halves == 0 || !prepass_cf_finite(x)) {
         return x;
     }
-    let u = prepass_cf_ulp_below(x);
-    var d = f32(halves) * u * 0.5;
-    if (bitcast<u32>(u) == 1u) {
-        // Smallest subnormal spacing: push in whole spacings (half of one is not a float).
-        d = f32(halves / 2) * u;
+    let up = halves > 0;
+    let budget = 2 * abs(halves);
+    let base = prepass_cf_spacing_exp_below(x);
+    var t = x;
+    var spent = 0;
+    for (var i = 0; i < 1024; i++) {
+        let n = prepass_cf_next(t, up);
+        if (!prepass_cf_finite(n)) {
+            break;
+        }
+        let q = prepass_cf_pair_exp(t, n) - base + 2;
+        if (q < 0) {
+            // Below a quarter of the base spacing (deep into the subnormals): count a quarter.
+            spent += 1;
+        } else {
+            spent += 1 << u32(min(q, 30));
+        }
+        if (spent > budget) {
+            break;
+        }
+        t = n;
     }
-    var t = x + d;
-    if (abs(t - x) > abs(d)) {
-        t = prepass_cf_next(t, d < 0.0);
-    }
-    return prepass_cf_clamp_finite(t);
+    return t;
 }
 
 // A subnormal flushed to zero (keeping its sign) or kept: both are allowed for the operations
@@ -164,10 +184,17 @@ fn prepass_cf_mul_err(a: f32, b: f32, p: f32) -> f32 {
 }
 
 // Exact a + b - s for s = a + b rounded to nearest (Knuth's TwoSum).
-fn prepass_cf_add_err(a: f32, b: f32, s: f32) -> f32 {
-    if (!prepass_cf_finite(s)) {
+// Tiny operands are scaled by 2^64 first (exact, and rounding commutes with it while the sum
+// stays normal) so the error term itself cannot fall into the subnormals; subnormal sums are
+// exact and need no error term.
+fn prepass_cf_add_err(a0: f32, b0: f32, s0: f32) -> f32 {
+    if (!prepass_cf_finite(s0) || abs(s0) < bitcast<f32>(0x00800000u)) {
         return 0.0;
     }
+    let k = select(1.0, bitcast<f32>(0x5f800000u), max(abs(a0), abs(b0)) < bitcast<f32>(0x21800000u));
+    let a = a0 * k;
+    let b = b0 * k;
+    let s = s0 * k;
     let bb = s - a;
     return (a - (s - bb)) + (b - bb);
 }
@@ -186,6 +213,7 @@ fn prepass_cf_add(site: u32, a0: f32, b0: f32) -> f32 {
     let a = prepass_cf_ftz(site + 1u, a0);
     let b = prepass_cf_ftz(site + 2u, b0);
     let s = a + b;
+    prepass_cf_undefined_if(!prepass_cf_finite(s));
     var r = s;
     if (prepass_cf_on(PREPASS_CF_ROUNDING)) {
         r = prepass_cf_round(site, s, prepass_cf_add_err(a, b, s), a, b);
@@ -202,6 +230,7 @@ fn prepass_cf_mul(site: u32, a0: f32, b0: f32) -> f32 {
     let a = prepass_cf_ftz(site + 1u, a0);
     let b = prepass_cf_ftz(site + 2u, b0);
     let p = a * b;
+    prepass_cf_undefined_if(!prepass_cf_finite(p));
     var r = p;
     if (prepass_cf_on(PREPASS_CF_ROUNDING)) {
         r = prepass_cf_round(site, p, prepass_cf_mul_err(a, b, p), a, b);
@@ -216,16 +245,43 @@ fn prepass_cf_div(site: u32, a0: f32, b0: f32) -> f32 {
     let b = prepass_cf_ftz(site + 2u, b0);
     prepass_cf_undefined_if(!(abs(b) >= bitcast<f32>(0x00800000u) && abs(b) <= bitcast<f32>(0x7e800000u)));
     let q = a / b;
+    prepass_cf_undefined_if(!prepass_cf_finite(q));
     let halves = prepass_cf_dir(PREPASS_CF_DIVISION, site, a, b) * PREPASS_CF_DIV_HALVES;
     return prepass_cf_ftz(site + 3u, prepass_cf_push(q, halves));
 }
 
 // inverseSqrt(x) within 2 ULP; x <= 0, subnormal or infinite is outside the domain.
+// 1/sqrt(x) to within about 0.5 ULP whatever the host's inverseSqrt does (lavapipe's is
+// 1/sqrt, up to 1.44 ULP off): from y = sqrt(x) and r = 1/y, corrected by the exact residuals
+// x - y^2 and 1 - r*y (Dekker). x is scaled by 2^-+64 first so that no product overflows.
+fn prepass_cf_inverse_sqrt_refined(x0: f32) -> f32 {
+    var x = x0;
+    var scale = 1.0;
+    if (x0 > bitcast<f32>(0x5f800000u)) {
+        x = x0 * bitcast<f32>(0x1f800000u);
+        scale = bitcast<f32>(0x2f800000u);
+    } else if (x0 < bitcast<f32>(0x1f800000u)) {
+        x = x0 * bitcast<f32>(0x5f800000u);
+        scale = bitcast<f32>(0x4f800000u);
+    }
+    let y = sqrt(x);
+    let p = y * y;
+    let ry = (x - p) - prepass_cf_mul_err(y, y, p);
+    let r = 1.0 / y;
+    let q = r * y;
+    let rr = (1.0 - q) - prepass_cf_mul_err(r, y, q);
+    return (r + r * (rr - 0.5 * ry * r * r)) * scale;
+}
+
 fn prepass_cf_inverse_sqrt(site: u32, x0: f32) -> f32 {
     let x = prepass_cf_ftz(site + 1u, x0);
     prepass_cf_undefined_if(!(x >= bitcast<f32>(0x00800000u) && x <= bitcast<f32>(0x7f7fffffu)));
-    let halves = prepass_cf_dir(PREPASS_CF_INVERSE_SQRT, site, x, x) * PREPASS_CF_ISQRT_HALVES;
-    return prepass_cf_ftz(site + 3u, prepass_cf_push(inverseSqrt(x), halves));
+    let dir = prepass_cf_dir(PREPASS_CF_INVERSE_SQRT, site, x, x);
+    if (dir == 0) {
+        return prepass_cf_ftz(site + 3u, inverseSqrt(x));
+    }
+    let halves = dir * PREPASS_CF_ISQRT_HALVES;
+    return prepass_cf_ftz(site + 3u, prepass_cf_push(prepass_cf_inverse_sqrt_refined(x), halves));
 }
 
 // sqrt(x) as the spec defines its accuracy: 1.0 / inverseSqrt(x). sqrt(+-0) stays 0: the
@@ -391,7 +447,26 @@ fn prepass_cf_mix(site: u32, a: f32, b: f32, t: f32) -> f32 {
     return prepass_cf_mad(site, b, t, left);
 }
 
-// v / s within unpack's 3 ULP: the host's quotient (within DIV_HOST) pushed by the rest.
+// v / (s2 - 1) correctly rounded, whatever the host's division does: the quotient corrected by
+// its exact residual v - q*(s2 - 1) (q*s2 is exact, the subtraction's error comes from
+// Fast2Sum).
+fn prepass_cf_unorm_quotient(v: f32, s2: f32) -> f32 {
+    var q = v / (s2 - 1.0);
+    if (v == 0.0) {
+        return q;
+    }
+    let hi = q * s2;
+    let t = hi - q;
+    let e = (-q) - (t - hi);
+    let r = (v - t) - e;
+    let spacing = abs(prepass_cf_next(q, true) - q);
+    if (2.0 * abs(r) > (s2 - 1.0) * spacing) {
+        q = prepass_cf_next(q, r > 0.0);
+    }
+    return q;
+}
+
+// A correctly rounded v / s pushed by the rest of unpack's 3 ULP.
 fn prepass_cf_unpack_lane(site: u32, q: f32) -> f32 {
     let halves = prepass_cf_dir(PREPASS_CF_UNPACK, site, q, q) * PREPASS_CF_UNPACK_HALVES;
     return prepass_cf_push(q, halves);
@@ -403,7 +478,7 @@ fn prepass_cf_unpack4x8unorm(site: u32, p: u32) -> vec4<f32> {
     }
     var r: vec4<f32>;
     for (var i = 0u; i < 4u; i++) {
-        r[i] = prepass_cf_unpack_lane(site + 8u * i, f32((p >> (8u * i)) & 0xffu) / 255.0);
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, prepass_cf_unorm_quotient(f32((p >> (8u * i)) & 0xffu), 256.0));
     }
     return r;
 }
@@ -415,7 +490,7 @@ fn prepass_cf_unpack4x8snorm(site: u32, p: u32) -> vec4<f32> {
     var r: vec4<f32>;
     for (var i = 0u; i < 4u; i++) {
         let v = bitcast<i32>(p << (24u - 8u * i)) >> 24u;
-        r[i] = prepass_cf_unpack_lane(site + 8u * i, max(f32(v) / 127.0, -1.0));
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, max(prepass_cf_unorm_quotient(f32(v), 128.0), -1.0));
     }
     return r;
 }
@@ -426,7 +501,7 @@ fn prepass_cf_unpack2x16unorm(site: u32, p: u32) -> vec2<f32> {
     }
     var r: vec2<f32>;
     for (var i = 0u; i < 2u; i++) {
-        r[i] = prepass_cf_unpack_lane(site + 8u * i, f32((p >> (16u * i)) & 0xffffu) / 65535.0);
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, prepass_cf_unorm_quotient(f32((p >> (16u * i)) & 0xffffu), 65536.0));
     }
     return r;
 }
@@ -438,7 +513,7 @@ fn prepass_cf_unpack2x16snorm(site: u32, p: u32) -> vec2<f32> {
     var r: vec2<f32>;
     for (var i = 0u; i < 2u; i++) {
         let v = bitcast<i32>(p << (16u - 16u * i)) >> 16u;
-        r[i] = prepass_cf_unpack_lane(site + 8u * i, max(f32(v) / 32767.0, -1.0));
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, max(prepass_cf_unorm_quotient(f32(v), 32768.0), -1.0));
     }
     return r;
 }
@@ -451,6 +526,9 @@ fn prepass_cf_round_half_up(t: f32) -> f32 {
 
 // The integer a pack stores for lane c (already clamped) with scale 2^k - 1 = s2 - 1:
 // floor(0.5 + (s2 - 1)*c) of either rounding of the product, which differ only at .5 ties.
+// The rounding's direction comes from Fast2Sum, which a host compiler's algebraic rewrites can
+// defeat (then only the host's byte is returned): used for snorm8 and the 16-bit packs, whose
+// ties the self-tests do not reach; unorm8 has the integer path above.
 fn prepass_cf_pack_lane(site: u32, c: f32, s2: f32) -> f32 {
     let hi = c * s2;
     let t = hi - c;
@@ -462,14 +540,38 @@ fn prepass_cf_pack_lane(site: u32, c: f32, s2: f32) -> f32 {
     return prepass_cf_pick(PREPASS_CF_PACK, site, prepass_cf_round_half_up(t), prepass_cf_round_half_up(t2));
 }
 
+// The byte of an unorm8 lane c in [0, 1], from integers only: the exact product 255*c is
+// P*2^-shift with P = 255*mantissa (< 2^32), and the f32 intermediate the spec rounds first is P
+// cut to 24 significant bits, rounded down or up; either byte floor(0.5 + that) is allowed.
+fn prepass_cf_pack_unorm8_lane(site: u32, c: f32) -> u32 {
+    let bits = bitcast<u32>(c);
+    if (c <= 0.0 || (bits & 0x7f800000u) == 0u) {
+        return 0u; // zero, negative or subnormal (255*c < 2^-118): byte 0 either way
+    }
+    let e = i32(bits >> 23u);
+    let m = (bits & 0x007fffffu) | 0x00800000u;
+    let shift = 150 - e;
+    if (shift >= 33) {
+        return 0u; // 255*c < 2^32 * 2^-33 = 0.5: byte 0 either way
+    }
+    let p = 255u * m;
+    let drop = u32(max(0, 8 - i32(countLeadingZeros(p))));
+    let down = (p >> drop) << drop;
+    let up = select(down + (1u << drop), down, down == p);
+    // floor(0.5 + P*2^-shift) = (floor(P*2^(1-shift)) + 1) / 2, with no carry out of 32 bits.
+    let b_down = ((down >> u32(shift - 1)) + 1u) >> 1u;
+    let b_up = ((up >> u32(shift - 1)) + 1u) >> 1u;
+    return u32(prepass_cf_pick(PREPASS_CF_PACK, site, f32(b_down), f32(b_up)));
+}
+
 fn prepass_cf_pack4x8unorm(site: u32, v: vec4<f32>) -> u32 {
     if (!prepass_cf_on(PREPASS_CF_PACK)) {
         return pack4x8unorm(v);
     }
     var r = 0u;
     for (var i = 0u; i < 4u; i++) {
-        let b = prepass_cf_pack_lane(site + 8u * i, clamp(v[i], 0.0, 1.0), 256.0);
-        r = r | (u32(b) << (8u * i));
+        let b = prepass_cf_pack_unorm8_lane(site + 8u * i, clamp(v[i], 0.0, 1.0));
+        r = r | (min(b, 255u) << (8u * i));
     }
     return r;
 }

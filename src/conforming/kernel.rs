@@ -21,7 +21,10 @@ impl<'g> EmulatedKernel<'g> {
     ) -> Result<Self, HarnessError> {
         let emulated =
             emulate(source, emulation).map_err(|e| HarnessError::Shader(e.to_string()))?;
-        let values = gpu.kernel(&emulated.source, function)?;
+        let emitted = emulated.function_name(function).ok_or_else(|| {
+            HarnessError::Shader(format!("the module has no function `{function}`"))
+        })?;
+        let values = gpu.kernel(&emulated.source, emitted)?;
         let undefined = match emulated.undefined_function(function) {
             Some(u) => Some(gpu.kernel(&emulated.source, u)?),
             None => None,

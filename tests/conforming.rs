@@ -1,0 +1,757 @@
+//! Self-tests of the conforming-adapter emulation (`prepass::conforming`): per builtin, on powers
+//! of two, subnormals, signed zeros, values near overflow and random values, every emulated
+//! result lies inside the WGSL spec's interval (computed here in f64), the policies reach both
+//! ends of it, the host adapter is as accurate as `HostAccuracy` assumes, and the identity
+//! policy reproduces every shipped module bit for bit.
+
+mod common;
+
+use common::gpu;
+use prepass::conforming::{EmulatedKernel, Emulation, Freedoms, HostAccuracy, Policy, allowance};
+use prepass::harness::{Arg, Signature};
+
+const ALL_POLICIES: [Policy; 6] = [
+    Policy::Identity,
+    Policy::Upper,
+    Policy::Lower,
+    Policy::Seeded(1),
+    Policy::Seeded(2),
+    Policy::Seeded(3),
+];
+
+const TESTS: &str = "
+fn t_div(a: f32, b: f32) -> f32 { return a / b; }
+fn t_add(a: f32, b: f32) -> f32 { return a + b; }
+fn t_sub(a: f32, b: f32) -> f32 { return a - b; }
+fn t_mul(a: f32, b: f32) -> f32 { return a * b; }
+fn t_mad(a: f32, b: f32, c: f32) -> f32 { return a * b + c; }
+fn t_add3(a: f32, b: f32, c: f32) -> f32 { return (a + b) + c; }
+fn t_inverse_sqrt(x: f32) -> f32 { return inverseSqrt(x); }
+fn t_sqrt(x: f32) -> f32 { return sqrt(x); }
+fn t_exp2(x: f32) -> f32 { return exp2(x); }
+fn t_log2(x: f32) -> f32 { return log2(x); }
+fn t_unpack4x8unorm(p: u32) -> vec4<f32> { return unpack4x8unorm(p); }
+fn t_unpack4x8snorm(p: u32) -> vec4<f32> { return unpack4x8snorm(p); }
+fn t_pack4x8unorm(v: vec4<f32>) -> u32 { return pack4x8unorm(v); }
+fn t_length(v: vec3<f32>) -> f32 { return length(v); }
+";
+
+/// The spec's ULP of a real x: the spacing of the f32 binade holding |x| (2^-149 below 2^-126).
+fn ulp32(x: f64) -> f64 {
+    let a = x.abs();
+    if a < f64::powi(2.0, -126) {
+        return f64::powi(2.0, -149);
+    }
+    f64::powi(2.0, a.log2().floor() as i32 - 23)
+}
+
+/// The f32 values next to the real x: (largest ≤ x, smallest ≥ x).
+fn f32_around(x: f64) -> (f32, f32) {
+    let r = x as f32;
+    let r64 = f64::from(r);
+    if r64 == x {
+        (r, r)
+    } else if r64 < x {
+        (r, r.next_up())
+    } else {
+        (r.next_down(), r)
+    }
+}
+
+/// Powers of two, subnormals, signed zeros, values near overflow and random finite values.
+fn special_f32s() -> Vec<f32> {
+    let mut v = vec![
+        0.0,
+        -0.0,
+        1.0,
+        -1.0,
+        f32::MAX,
+        -f32::MAX,
+        f32::MAX / 2.0,
+        1.5 * 2f32.powi(126),
+    ];
+    for e in -149..=127 {
+        v.push(2f32.powi(e));
+        v.push(-(2f32.powi(e)));
+    }
+    for bits in [1u32, 2, 3, 0x0040_0000, 0x007f_ffff] {
+        v.push(f32::from_bits(bits));
+        v.push(-f32::from_bits(bits));
+    }
+    let mut s = 0x1234_5678_9abc_def0u64;
+    for _ in 0..3000 {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        let bits = (s >> 32) as u32;
+        let x = f32::from_bits(bits);
+        if x.is_finite() {
+            v.push(x);
+        }
+        // Moderate magnitudes too: random mantissa, exponent in 2^-20..2^20.
+        let m = f32::from_bits(0x3f80_0000 | (bits & 0x007f_ffff));
+        v.push(m * 2f32.powi((s & 31) as i32 - 16) * if s & 64 == 0 { 1.0 } else { -1.0 });
+    }
+    v
+}
+
+fn pairs(xs: &[f32]) -> (Vec<f32>, Vec<f32>) {
+    let mut a = Vec::new();
+    let mut b = Vec::new();
+    let n = xs.len();
+    for i in 0..n {
+        for j in [0, 1, 7, 31, 97] {
+            a.push(xs[i]);
+            b.push(xs[(i * 13 + j * 101 + 5) % n]);
+        }
+    }
+    (a, b)
+}
+
+fn run(
+    function: &str,
+    policy: Policy,
+    freedoms: Freedoms,
+    args: &[Arg<'_>],
+    n: usize,
+) -> (Vec<u32>, Vec<bool>) {
+    let emu = Emulation::new(policy).with_freedoms(freedoms);
+    let k = EmulatedKernel::new(gpu(), TESTS, function, &emu).unwrap_or_else(|e| panic!("{e}"));
+    let (out, flags) = k.run(args, n as u64).unwrap();
+    (out.into_words(), flags)
+}
+
+/// The inputs a flushing adapter may see for x: x itself, and ±0 for a subnormal.
+fn flushed(x: f32) -> Vec<f32> {
+    if x != 0.0 && x.abs() < f32::MIN_POSITIVE {
+        vec![x, 0.0f32.copysign(x)]
+    } else {
+        vec![x]
+    }
+}
+
+/// Whether `got` lies within `k` ULPs of the exact result for some allowed flushing of the
+/// inputs, or is a flushed (zero) output where the interval reaches the subnormals (as the CTS
+/// adds 0 to such an interval).
+fn inside_k_ulp(got: f32, exacts: &[f64], k: f64) -> bool {
+    exacts.iter().any(|&e| {
+        let g = f64::from(got);
+        let near_subnormal = e.abs() - k * ulp32(e) < f64::powi(2.0, -126);
+        (g - e).abs() <= k * ulp32(e) * (1.0 + 1e-9) || (near_subnormal && got == 0.0)
+    })
+}
+
+/// Per builtin: (worst distance below, worst distance above) the exact result, in its ULPs, over
+/// the normal-range inputs, for the upper and lower policies: they must reach near the ends.
+struct Reach {
+    max_above: f64,
+    max_below: f64,
+}
+
+fn reach(got: &[f32], exact: &[f64], keep: &[bool]) -> Reach {
+    let mut r = Reach {
+        max_above: f64::NEG_INFINITY,
+        max_below: f64::NEG_INFINITY,
+    };
+    for ((&g, &e), &k) in got.iter().zip(exact).zip(keep) {
+        if !k {
+            continue;
+        }
+        let d = (f64::from(g) - e) / ulp32(e);
+        r.max_above = r.max_above.max(d);
+        r.max_below = r.max_below.max(-d);
+    }
+    r
+}
+
+#[test]
+fn division_stays_within_2_5_ulp_and_reaches_both_ends() {
+    let (a, b) = pairs(&special_f32s());
+    let n = a.len();
+    let args = [Arg::column(&a), Arg::column(&b)];
+    let normal = |x: f32| x != 0.0 && x.abs() >= f32::MIN_POSITIVE && x.abs() <= 2f32.powi(126);
+    let exact: Vec<f64> = a
+        .iter()
+        .zip(&b)
+        .map(|(&x, &y)| f64::from(x) / f64::from(y))
+        .collect();
+    // Normal operands and a normal, finite quotient: where no flush and no domain edge decides.
+    let plain: Vec<bool> = a
+        .iter()
+        .zip(&b)
+        .zip(&exact)
+        .map(|((&x, &y), &e)| normal(x) && normal(y) && e.abs() >= 1e-37 && e.abs() <= 1e38)
+        .collect();
+    for policy in ALL_POLICIES {
+        let (got, flags) = run("t_div", policy, Freedoms::ALL, &args, n);
+        let got: Vec<f32> = got.iter().map(|&w| f32::from_bits(w)).collect();
+        let mut checked = 0;
+        for i in 0..n {
+            let in_domain =
+                normal(b[i]) || (b[i].abs() >= f32::MIN_POSITIVE && b[i].abs() <= 2f32.powi(126));
+            if !in_domain {
+                assert!(
+                    flags[i],
+                    "{policy}: {} / {} has a divisor outside ±[2^-126, 2^126] but was not flagged",
+                    a[i], b[i]
+                );
+                continue;
+            }
+            if flags[i] {
+                // Only an overflowing quotient may be flagged in the domain.
+                assert!(
+                    exact[i].abs() > f64::from(f32::MAX) * 0.99,
+                    "{policy}: {} / {} flagged",
+                    a[i],
+                    b[i]
+                );
+                continue;
+            }
+            let exacts: Vec<f64> = flushed(a[i])
+                .into_iter()
+                .map(|x| f64::from(x) / f64::from(b[i]))
+                .collect();
+            assert!(
+                inside_k_ulp(got[i], &exacts, allowance::DIVISION_ULP),
+                "{policy}: {} / {} = {} is outside the spec's {} ULP of {:?} (bound: WGSL `/` accuracy)",
+                a[i],
+                b[i],
+                got[i],
+                allowance::DIVISION_ULP,
+                exacts
+            );
+            checked += 1;
+        }
+        assert!(
+            checked > n / 2,
+            "{policy}: only {checked} of {n} quotients were in the domain"
+        );
+        let r = reach(&got, &exact, &plain);
+        eprintln!(
+            "t_div {policy}: max {:.3} ULP above, {:.3} below the exact quotient",
+            r.max_above, r.max_below
+        );
+        // Host within 0.5 ULP, push 2 ULP of the spacing below it (at least half the exact
+        // result's ULP): each end is reached to within the host's error.
+        match policy {
+            Policy::Identity => assert!(
+                r.max_above <= 0.5 && r.max_below <= 0.5,
+                "the host's `/` is not correctly rounded: HostAccuracy::division_ulp = 0.5 is wrong for this adapter"
+            ),
+            Policy::Upper => assert!(
+                r.max_above >= 2.0 && r.max_below <= 0.0,
+                "upper: {:.3} above, {:.3} below",
+                r.max_above,
+                r.max_below
+            ),
+            Policy::Lower => assert!(
+                r.max_below >= 2.0 && r.max_above <= 0.0,
+                "lower: {:.3} above, {:.3} below",
+                r.max_above,
+                r.max_below
+            ),
+            Policy::Seeded(_) => assert!(
+                r.max_above >= 2.0 && r.max_below >= 2.0,
+                "seeded reaches one end only"
+            ),
+        }
+    }
+}
+
+#[test]
+fn rounding_of_add_sub_mul_is_either_neighbour_and_directed_at_the_ends() {
+    let (a, b) = pairs(&special_f32s());
+    let n = a.len();
+    let args = [Arg::column(&a), Arg::column(&b)];
+    for (f, op) in [("t_add", 0), ("t_sub", 1), ("t_mul", 2)] {
+        let exact = |x: f32, y: f32| -> Option<f64> {
+            let (x, y) = (f64::from(x), f64::from(y));
+            let e = match op {
+                0 => x + y,
+                1 => x - y,
+                _ => x * y,
+            };
+            // f64 holds the exact product always, the exact sum when exponents are close.
+            let exact_in_f64 =
+                op == 2 || (x == 0.0 || y == 0.0 || (x.abs().log2() - y.abs().log2()).abs() < 25.0);
+            (exact_in_f64 && e.abs() <= f64::from(f32::MAX) && (e == 0.0 || e.abs() >= 1e-30))
+                .then_some(e)
+        };
+        for policy in ALL_POLICIES {
+            let (got, _) = run(f, policy, Freedoms::ALL, &args, n);
+            let (mut up, mut down) = (0, 0);
+            for i in 0..n {
+                let Some(e) = exact(a[i], b[i]) else { continue };
+                if a[i].abs() < f32::MIN_POSITIVE || b[i].abs() < f32::MIN_POSITIVE {
+                    continue; // flushing decides there; see the flush test
+                }
+                let g = f32::from_bits(got[i]);
+                let (lo, hi) = f32_around(e);
+                assert!(
+                    g == lo || g == hi,
+                    "{policy}: {f}({}, {}) = {g} is neither neighbour {lo} / {hi} of the exact {e}",
+                    a[i],
+                    b[i]
+                );
+                let dekker_ok = op != 2
+                    || (a[i].abs() < 2f32.powi(60)
+                        && b[i].abs() < 2f32.powi(60)
+                        && (e.abs() > 2f64.powi(-100)));
+                if lo != hi && dekker_ok {
+                    match policy {
+                        Policy::Upper => {
+                            assert_eq!(g, hi, "upper: {f}({}, {}) must round up", a[i], b[i])
+                        }
+                        Policy::Lower => {
+                            assert_eq!(g, lo, "lower: {f}({}, {}) must round down", a[i], b[i])
+                        }
+                        _ => {}
+                    }
+                    if g == hi { up += 1 } else { down += 1 }
+                }
+            }
+            eprintln!("{f} {policy}: rounded up {up}, down {down} of the inexact results");
+            if let Policy::Seeded(_) = policy {
+                assert!(
+                    up > 0 && down > 0,
+                    "{f} {policy}: the seeded policy rounds one way only"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn flush_to_zero_of_subnormal_inputs_and_outputs() {
+    let sub = f32::from_bits(0x0000_0100);
+    let a = [sub, -sub, sub, 2f32.powi(-100)];
+    let b = [0.0f32, 0.0, 1.0, 2f32.powi(-30)];
+    let args = [Arg::column(&a), Arg::column(&b)];
+    let (upper, _) = run("t_add", Policy::Upper, Freedoms::FLUSH, &args, 4);
+    let (lower, _) = run("t_add", Policy::Lower, Freedoms::FLUSH, &args, 4);
+    let (ident, _) = run("t_add", Policy::Identity, Freedoms::ALL, &args, 4);
+    let f = |w: &[u32]| w.iter().map(|&x| f32::from_bits(x)).collect::<Vec<_>>();
+    let (upper, lower, ident) = (f(&upper), f(&lower), f(&ident));
+    eprintln!("flush: identity {ident:?}, upper {upper:?}, lower {lower:?}");
+    // sub + 0: kept (sub) or flushed (0); the upper policy keeps the larger, the lower the smaller.
+    assert_eq!(ident[0], sub);
+    assert_eq!(upper[0], sub);
+    assert_eq!(lower[0], 0.0);
+    assert_eq!(upper[1], 0.0);
+    assert_eq!(lower[1], -sub);
+    // 2^-100 · 2^-30 is subnormal: its product would be flushed by t_mul; here the sum is normal.
+    assert_eq!(upper[3], ident[3]);
+    let (m_up, _) = run("t_mul", Policy::Upper, Freedoms::FLUSH, &args, 4);
+    let (m_lo, _) = run("t_mul", Policy::Lower, Freedoms::FLUSH, &args, 4);
+    assert_eq!(
+        f32::from_bits(m_up[3]),
+        2f32.powi(-130),
+        "upper keeps the subnormal product"
+    );
+    assert_eq!(
+        f32::from_bits(m_lo[3]),
+        0.0,
+        "lower flushes the subnormal product"
+    );
+}
+
+#[test]
+fn fusion_and_reassociation_reach_their_alternatives() {
+    // a·b + c with a·b = 1 + 2^-11 + 2^-24 (a tie, rounded to even: 1 + 2^-11) and c = -1:
+    // unfused gives 2^-11, fused keeps the 2^-24 term (2^-11 + 2^-24 is a float).
+    let a = [1.0 + 2f32.powi(-12)];
+    let b = [1.0 + 2f32.powi(-12)];
+    let c = [-1.0f32];
+    let args = [Arg::column(&a), Arg::column(&b), Arg::column(&c)];
+    let exact = (1.0 + 2f64.powi(-12)).powi(2) - 1.0;
+    let (fused_up, _) = run("t_mad", Policy::Upper, Freedoms::FUSION, &args, 1);
+    let (fused_lo, _) = run("t_mad", Policy::Lower, Freedoms::FUSION, &args, 1);
+    let (ident, _) = run("t_mad", Policy::Identity, Freedoms::ALL, &args, 1);
+    let (up, lo, id) = (
+        f32::from_bits(fused_up[0]),
+        f32::from_bits(fused_lo[0]),
+        f32::from_bits(ident[0]),
+    );
+    eprintln!("a·b + c: exact {exact:e}, identity {id:e}, upper {up:e}, lower {lo:e}");
+    assert!(
+        (f64::from(up) - exact).abs() <= ulp32(exact),
+        "fused a·b + c within one rounding of the exact value"
+    );
+    assert_eq!(lo, id, "the lower policy keeps the smaller, unfused result");
+    assert!(
+        up > id,
+        "the upper policy takes the fused result, larger here"
+    );
+    // (a + b) + c with a = 1, b = c = 2^-24: left to right rounds to 1 twice; a + (b + c) = 1 + 2^-23.
+    let a = [1.0f32];
+    let b = [2f32.powi(-24)];
+    let args = [Arg::column(&a), Arg::column(&b), Arg::column(&b)];
+    let (r_up, _) = run("t_add3", Policy::Upper, Freedoms::REASSOCIATION, &args, 1);
+    let (r_lo, _) = run("t_add3", Policy::Lower, Freedoms::REASSOCIATION, &args, 1);
+    assert_eq!(
+        f32::from_bits(r_up[0]),
+        1.0 + 2f32.powi(-23),
+        "upper takes a + (b + c)"
+    );
+    assert_eq!(f32::from_bits(r_lo[0]), 1.0, "lower takes (a + b) + c");
+}
+
+#[test]
+fn inverse_sqrt_sqrt_and_length_stay_inside_their_intervals() {
+    let xs: Vec<f32> = special_f32s().into_iter().filter(|x| *x > 0.0).collect();
+    let n = xs.len();
+    let args = [Arg::column(&xs)];
+    let host = HostAccuracy::default();
+    for policy in ALL_POLICIES {
+        let (got, flags) = run("t_inverse_sqrt", policy, Freedoms::ALL, &args, n);
+        let got: Vec<f32> = got.iter().map(|&w| f32::from_bits(w)).collect();
+        let exact: Vec<f64> = xs.iter().map(|&x| 1.0 / f64::from(x).sqrt()).collect();
+        let normal: Vec<bool> = xs.iter().map(|&x| x >= f32::MIN_POSITIVE).collect();
+        for i in 0..n {
+            if !normal[i] {
+                assert!(
+                    flags[i] || policy == Policy::Identity || flags[i],
+                    "inverseSqrt of subnormal {} not flagged",
+                    xs[i]
+                );
+                continue;
+            }
+            assert!(
+                inside_k_ulp(got[i], &[exact[i]], allowance::INVERSE_SQRT_ULP),
+                "{policy}: inverseSqrt({}) = {} outside {} ULP of {}",
+                xs[i],
+                got[i],
+                allowance::INVERSE_SQRT_ULP,
+                exact[i]
+            );
+        }
+        let r = reach(&got, &exact, &normal);
+        eprintln!(
+            "t_inverse_sqrt {policy}: max {:.3} ULP above, {:.3} below",
+            r.max_above, r.max_below
+        );
+        if policy == Policy::Identity {
+            // The host's own inverseSqrt, for the record: the helper pushes from its own refined
+            // 1/sqrt, never from this, so only the interval checks above bind.
+            eprintln!(
+                "host inverseSqrt: {:.3} ULP (HostAccuracy assumes {} for the refined value)",
+                r.max_above.max(r.max_below),
+                host.inverse_sqrt_ulp
+            );
+        }
+        if policy == Policy::Upper {
+            assert!(
+                r.max_above >= 0.5,
+                "upper never reached above the exact value"
+            );
+        }
+        // sqrt = 1 / inverseSqrt: the spec's interval is the quotient's 2.5 ULP around the
+        // inverseSqrt interval, i.e. within (2.5 + 2·(1 + …)) ULP of sqrt(x); bound it by
+        // composing the two relative errors: (1 + 2u)/(1 − 2u)·(1 + 2.5u) − 1 ≤ 6.5 u (u = 2^-24
+        // relative, ULP ≥ u·|x|·… ): at most 2·(2 + 2.5) = 9 ULP with the binade factor.
+        let (got_s, _) = run("t_sqrt", policy, Freedoms::ALL, &args, n);
+        for i in 0..n {
+            if !normal[i] {
+                continue;
+            }
+            let g = f32::from_bits(got_s[i]);
+            let e = f64::from(xs[i]).sqrt();
+            assert!(
+                inside_k_ulp(
+                    g,
+                    &[e],
+                    2.0 * (allowance::INVERSE_SQRT_ULP + allowance::DIVISION_ULP)
+                ),
+                "{policy}: sqrt({}) = {g} outside the inherited interval around {e}",
+                xs[i]
+            );
+        }
+    }
+}
+
+#[test]
+fn exp2_and_log2_stay_inside_their_intervals_and_the_host_is_as_assumed() {
+    let xs: Vec<f32> = (0..4000)
+        .map(|i| -100.0 + i as f32 * 0.05)
+        .chain([0.0, 1.0, -1.0, 127.0])
+        .collect();
+    let n = xs.len();
+    let host = HostAccuracy::default();
+    for policy in ALL_POLICIES {
+        let (got, flags) = run("t_exp2", policy, Freedoms::ALL, &[Arg::column(&xs)], n);
+        let mut host_max = 0.0f64;
+        for i in 0..n {
+            if flags[i] {
+                continue;
+            }
+            let e = f64::from(xs[i]).exp2();
+            let g = f32::from_bits(got[i]);
+            let k = allowance::exp_ulp(f64::from(xs[i]));
+            assert!(
+                inside_k_ulp(g, &[e], k),
+                "{policy}: exp2({}) = {g} outside {k} ULP of {e}",
+                xs[i]
+            );
+            host_max = host_max.max((f64::from(g) - e).abs() / ulp32(e));
+        }
+        if policy == Policy::Identity {
+            eprintln!("host exp2: max {host_max:.3} ULP");
+            assert!(
+                host_max <= host.exp_ulp,
+                "the host's exp2 errs {host_max:.3} ULP > HostAccuracy::exp_ulp = {}",
+                host.exp_ulp
+            );
+        }
+    }
+    let ys: Vec<f32> = (1..6000)
+        .map(|i| i as f32 * 0.001)
+        .chain((1..200).map(|i| 2f32.powi(i - 100)))
+        .collect();
+    let n = ys.len();
+    for policy in ALL_POLICIES {
+        let (got, _) = run("t_log2", policy, Freedoms::ALL, &[Arg::column(&ys)], n);
+        let (mut host_ulp, mut host_abs) = (0.0f64, 0.0f64);
+        for i in 0..n {
+            let e = f64::from(ys[i]).log2();
+            let g = f64::from(f32::from_bits(got[i]));
+            if (0.5..=2.0).contains(&ys[i]) {
+                assert!(
+                    (g - e).abs() <= allowance::LOG_ABS,
+                    "{policy}: log2({}) = {g} beyond 2^-21 of {e}",
+                    ys[i]
+                );
+                host_abs = host_abs.max((g - e).abs());
+            } else {
+                assert!(
+                    inside_k_ulp(g as f32, &[e], allowance::LOG_ULP),
+                    "{policy}: log2({}) = {g} beyond 3 ULP of {e}",
+                    ys[i]
+                );
+                host_ulp = host_ulp.max((g - e).abs() / ulp32(e));
+            }
+        }
+        if policy == Policy::Identity {
+            eprintln!(
+                "host log2: max {host_ulp:.3} ULP outside [0.5, 2], {host_abs:e} absolute inside"
+            );
+            assert!(
+                host_ulp <= host.log_ulp,
+                "the host's log2 errs {host_ulp:.3} ULP > HostAccuracy::log_ulp = {}",
+                host.log_ulp
+            );
+            assert!(
+                host_abs <= host.log_abs,
+                "the host's log2 errs {host_abs:e} > HostAccuracy::log_abs = {:e}",
+                host.log_abs
+            );
+        }
+    }
+}
+
+#[test]
+fn unpack_is_within_3_ulp_and_pack_ties_take_either_byte() {
+    // Every byte in every lane.
+    let codes: Vec<u32> = (0..256u32).map(|v| v * 0x0101_0101).collect();
+    for (f, snorm) in [("t_unpack4x8unorm", false), ("t_unpack4x8snorm", true)] {
+        for policy in ALL_POLICIES {
+            let (got, _) = run(
+                f,
+                policy,
+                Freedoms::ALL,
+                &[Arg::column(&codes)],
+                codes.len(),
+            );
+            let mut above = 0.0f64;
+            for (i, lanes) in got.chunks(4).enumerate() {
+                let v = i as i32;
+                let exact = if snorm {
+                    (f64::from((v as u8) as i8) / 127.0).max(-1.0)
+                } else {
+                    f64::from(v) / 255.0
+                };
+                for &w in lanes {
+                    let g = f32::from_bits(w);
+                    assert!(
+                        inside_k_ulp(g, &[exact], allowance::UNPACK_ULP),
+                        "{policy}: {f} of byte {v} = {g} beyond 3 ULP of {exact}"
+                    );
+                    if exact != 0.0 {
+                        above = above.max((f64::from(g) - exact) / ulp32(exact));
+                    }
+                }
+            }
+            if policy == Policy::Upper {
+                assert!(above >= 2.0, "{f} upper reaches only {above:.3} ULP above");
+            }
+        }
+    }
+    // Lanes at and next to the .5 ties of 255·c.
+    let mut lanes = Vec::new();
+    for k in 0..255u32 {
+        let t = (f64::from(k) + 0.5) / 255.0;
+        let c = t as f32;
+        for x in [c.next_down(), c, c.next_up()] {
+            lanes.push([x, x, x, x]);
+        }
+    }
+    let n = lanes.len();
+    let mut differ = 0;
+    let (up, _) = run(
+        "t_pack4x8unorm",
+        Policy::Upper,
+        Freedoms::ALL,
+        &[Arg::column(&lanes)],
+        n,
+    );
+    let (lo, _) = run(
+        "t_pack4x8unorm",
+        Policy::Lower,
+        Freedoms::ALL,
+        &[Arg::column(&lanes)],
+        n,
+    );
+    for i in 0..n {
+        let c = lanes[i][0];
+        let (p_lo, p_hi) = f32_around(255.0 * f64::from(c));
+        let allowed = [
+            (f64::from(p_lo) + 0.5).floor() as u32,
+            (f64::from(p_hi) + 0.5).floor() as u32,
+        ];
+        for (name, w) in [("upper", up[i]), ("lower", lo[i])] {
+            let byte = w & 0xff;
+            assert!(
+                allowed.contains(&byte),
+                "{name}: pack4x8unorm({c}) byte {byte} not in {allowed:?}"
+            );
+        }
+        assert_eq!(
+            up[i] & 0xff,
+            allowed[0].max(allowed[1]),
+            "upper takes the larger byte at {c}"
+        );
+        assert_eq!(
+            lo[i] & 0xff,
+            allowed[0].min(allowed[1]),
+            "lower takes the smaller byte at {c}"
+        );
+        if up[i] != lo[i] {
+            differ += 1;
+        }
+    }
+    eprintln!("pack4x8unorm: {differ} of {n} lanes near ties take either byte");
+    assert!(
+        differ > 0,
+        "no tie was found: the test's inputs miss the .5 boundaries"
+    );
+}
+
+#[test]
+fn length_is_evaluated_as_its_defining_expression() {
+    let vs: Vec<[f32; 3]> = (0..2000)
+        .map(|i| {
+            let t = i as f32 * 0.37;
+            [t.sin() * 3.0, (t * 1.3).cos(), 0.5 + (t * 0.7).sin()]
+        })
+        .collect();
+    let n = vs.len();
+    for policy in ALL_POLICIES {
+        let (got, _) = run("t_length", policy, Freedoms::ALL, &[Arg::column(&vs)], n);
+        for i in 0..n {
+            let v = vs[i].map(f64::from);
+            let e = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            // dot: 3 products and 2 sums each within one rounding (2^-23 relative), any order:
+            // relative ≤ 5·2^-23 on a sum of squares; sqrt halves it (2.5·2^-23) and adds the
+            // inherited 1/inverseSqrt error (≤ 9 ULP, above): within 9 + 2·2.5 = 14 ULP.
+            let g = f32::from_bits(got[i]);
+            assert!(
+                inside_k_ulp(g, &[e], 14.0),
+                "{policy}: length({:?}) = {g}, exact {e}",
+                vs[i]
+            );
+        }
+    }
+}
+
+/// Random inputs for a harness parameter type.
+fn column_for(ty: prepass::harness::ValueType, n: usize, seed: u64) -> Vec<u32> {
+    let mut s = seed | 1;
+    let mut next = move || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        s
+    };
+    let specials = [0.0f32, -0.0, 1.0, -1.0, 0.5, 2.0, 1e-3, 1e3];
+    (0..n * ty.words())
+        .map(|_| {
+            let r = next();
+            match ty.scalar {
+                prepass::harness::Scalar::F32 => {
+                    let x = if r % 8 == 0 {
+                        specials[(r >> 8) as usize % specials.len()]
+                    } else {
+                        ((r >> 11) as f64 / (1u64 << 53) as f64 * 4.0 - 2.0) as f32
+                    };
+                    x.to_bits()
+                }
+                _ => {
+                    if r % 4 == 0 {
+                        (r >> 40) as u32 & 0xff
+                    } else {
+                        (r >> 32) as u32
+                    }
+                }
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn identity_reproduces_every_shipped_module_bit_for_bit() {
+    let n = 4096;
+    let mut functions = 0;
+    for file in prepass::wgsl::FILES {
+        let checked = prepass::wgsl::parse_and_validate(file.source).unwrap();
+        for (_, f) in checked.module.functions.iter() {
+            let Some(name) = f.name.as_deref() else {
+                continue;
+            };
+            let Ok(sig) = Signature::read(file.source, name) else {
+                continue;
+            };
+            let cols: Vec<Vec<u32>> = sig
+                .params
+                .iter()
+                .enumerate()
+                .map(|(k, p)| column_for(p.ty, n, 0x9e37_79b9 ^ (k as u64 + 1) * 0x1000_0001))
+                .collect();
+            let args: Vec<Arg<'_>> = cols.iter().map(|c| Arg::column(c)).collect();
+            let original = gpu()
+                .kernel(file.source, name)
+                .unwrap()
+                .run(&args, n as u64)
+                .unwrap();
+            let k =
+                EmulatedKernel::new(gpu(), file.source, name, &Emulation::new(Policy::Identity))
+                    .unwrap_or_else(|e| panic!("{}: {name}: {e}", file.name));
+            let (identity, _) = k.run(&args, n as u64).unwrap();
+            let differ = original
+                .words()
+                .iter()
+                .zip(identity.words())
+                .filter(|(a, b)| a != b)
+                .count();
+            assert_eq!(
+                differ, 0,
+                "{}: `{name}` under the identity policy differs from the original in {differ} words",
+                file.name
+            );
+            functions += 1;
+        }
+    }
+    eprintln!("identity policy: {functions} shipped functions bit-identical on {n} inputs each");
+    assert!(
+        functions >= 60,
+        "only {functions} shipped functions were checked"
+    );
+}
