@@ -12,7 +12,7 @@ use crate::depth::DEPTH24_MAX;
 /// Which end of the depth range the near plane maps to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum DepthConvention {
-    /// Near → 0, far → 1 (the talks' convention).
+    /// Near → 0, far → 1 (the convention of the Resistance 2 and Killzone 2 slides).
     Standard,
     /// Near → 1, far → 0 (reversed-Z: float depth's precision where distances are large).
     Reversed,

@@ -1,11 +1,12 @@
 //! Log-range specular exponent ("roughness") in 8 bits — the Rust twins of `wgsl/roughness.wgsl`.
 //!
 //! Killzone 2 stores the specular exponent "in log range to keep higher precision for low
-//! exponents" (seed talk `004`); Resistance 2 keeps the spec power in the alpha of the normal
-//! buffer (seed `000`). Code `k ∈ [0, 255]` stands for the power `max_power^(k/255)`, and a
-//! power `p ∈ [1, max_power]` encodes to the code nearest `255·log2(p)/log2(max_power)` (ties
-//! upwards). Every step multiplies the power by the same factor `2^(L/255)`, `L =
-//! log2(max_power)`, so the worst relative error of a round trip is the half step
+//! exponents" (Michal Valient, "Deferred Rendering in Killzone 2", Guerrilla Games, Develop
+//! Conference 2007); Resistance 2 keeps the spec power in the alpha of the normal buffer (Mark Lee,
+//! "Pre-lighting in Resistance 2", Insomniac Games, GDC 2009). Code `k ∈ [0, 255]` stands for the
+//! power `max_power^(k/255)`, and a power `p ∈ [1, max_power]` encodes to the code nearest
+//! `255·log2(p)/log2(max_power)` (ties upwards). Every step multiplies the power by the same factor
+//! `2^(L/255)`, `L = log2(max_power)`, so the worst relative error of a round trip is the half step
 //! `2^(L/510) − 1` (1.782 % for `max_power = 8192`) at every power, where 8-bit linear storage
 //! loses everything at low powers (see `tests/roughness.rs` and the README's table).
 //!

@@ -1,7 +1,7 @@
-//! `wgsl/aggregate_lights.wgsl` on the adapter: God of War III's aggregate vertex lights. The
-//! talk's identity `(N·L_agg)·l_agg = Σ l_i (N·L_i)` over proptest-generated light sets, light
-//! at the vertex, cancelling lights, 1e-6…1e6 intensities, bad input. Twins:
-//! `src/lighting/aggregate.rs`.
+//! `wgsl/aggregate_lights.wgsl` on the adapter: God of War III's aggregate vertex lights (Vassily
+//! Filippov, "Dynamic lighting in GOW3", SIGGRAPH 2011). Filippov's identity
+//! `(N·L_agg)·l_agg = Σ l_i (N·L_i)` over proptest-generated light sets, light at the vertex,
+//! cancelling lights, 1e-6…1e6 intensities, bad input. Twins: `src/lighting/aggregate.rs`.
 
 mod common;
 
@@ -404,7 +404,7 @@ fn bad_input_is_skipped_identically_on_both_sides() {
 fn interpolated_aggregate_light_is_measured_between_vertices() {
     // Two vertices 0.5 apart sharing a light set; the pixel half-way gets the interpolated
     // P_agg and C_agg (as a rasteriser would) and is compared with the exact per-light sum at
-    // the pixel. The talk calls this "better", not exact: measured, finite, non-negative.
+    // the pixel. Filippov's slides call this "better", not exact: measured, finite, non-negative.
     let mut runner = TestRunner::deterministic();
     let strategy = set_strategy();
     let a: Vec<Set> = (0..1024)

@@ -410,20 +410,22 @@ fn target(name: &'static str, format: TargetFormat) -> Target {
 #[test]
 fn gbuffer_memory_reproduces_the_talks_figures() {
     let (w, h) = (1280, 720);
-    // Resistance 2: "1280*720 MSAA buffer is 7.3mb, multiplied by 5 is 38mb" (2× MSAA, 32-bit).
+    // Mark Lee, "Pre-lighting in Resistance 2" (Insomniac Games, GDC 2009): "1280*720 MSAA
+    // buffer is 7.3mb, multiplied by 5 is 38mb" (2× MSAA, 32-bit).
     let one = GBufferLayout {
         targets: vec![target("rgba8", TargetFormat::Rgba8Unorm)],
     };
     let per_target = one.memory_bytes(w, h, 2);
     assert_eq!(per_target, 7_372_800);
-    assert_eq!(format!("{:.1}", megabytes(per_target)), "7.4"); // the talk truncates to 7.3
+    assert_eq!(format!("{:.1}", megabytes(per_target)), "7.4"); // Lee's slides truncate to 7.3
     let five = GBufferLayout {
         targets: vec![target("rgba8", TargetFormat::Rgba8Unorm); 5],
     };
-    // 5 × 7.3728 MB = 36.9 MB (35.2 MiB): the talk's "38mb" is not 5 × its own 7.3 (36.5);
-    // the computed figure is recorded in the README beside the talk's.
+    // 5 × 7.3728 MB = 36.9 MB (35.2 MiB): Lee's "38mb" is not 5 × his own 7.3 (36.5);
+    // the computed figure is recorded in the README beside Lee's.
     assert_eq!(five.memory_bytes(w, h, 2), 36_864_000);
-    // Killzone 2: four RGBA8 targets + D24S8 = 18.4 MB, 36.8 MB with 2× MSAA: decimal MB.
+    // Michal Valient, "Deferred Rendering in Killzone 2" (Guerrilla Games, Develop Conference
+    // 2007): four RGBA8 targets + D24S8 = 18.4 MB, 36.8 MB with 2× MSAA: decimal MB.
     let mut kz = GBufferLayout {
         targets: vec![target("rgba8", TargetFormat::Rgba8Unorm); 4],
     };

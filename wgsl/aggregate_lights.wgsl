@@ -1,10 +1,12 @@
-// prepass — God of War III's aggregate vertex lights (seed 001): per vertex, many lights are
-// folded into one aggregate light whose position is interpolated per pixel.
+// prepass — God of War III's aggregate vertex lights (Vassily Filippov, "Dynamic lighting in
+// GOW3", Sony Santa Monica; Advances in Real-Time Rendering in 3D Graphics and Games, SIGGRAPH
+// 2011): per vertex, many lights are folded into one aggregate light whose position is
+// interpolated per pixel.
 // Rust twin: src/lighting/aggregate.rs. Tests: tests/lighting_aggregate.rs.
 //
 // Per vertex V, for each light i with position P_i and weight W_i (its intensity at V):
 //   acc.xyz = Σ W_i·L_i with L_i = (P_i − V)/|P_i − V|,   acc.w = Σ W_i/|P_i − V|
-//   aggregate position  P_agg = V + acc.xyz / acc.w         (the talk's "back to positions")
+//   aggregate position  P_agg = V + acc.xyz / acc.w         (Filippov's "back to positions")
 //   aggregate direction L_agg = acc.xyz / |acc.xyz|
 //   aggregate colour    C_agg = Σ C_i (L_i · L_agg)
 // Per pixel: C_agg · max(N · normalize(P_agg − p), 0) with P_agg interpolated.
@@ -73,7 +75,7 @@ fn aggregate_light_position(acc: vec4<f32>, vertex: vec3<f32>) -> vec3<f32> {
     return vertex + acc.xyz / acc.w;
 }
 
-// Fold light i's colour into the aggregate colour: colour_acc + C_i·(L_i·L_agg), the talk's
+// Fold light i's colour into the aggregate colour: colour_acc + C_i·(L_i·L_agg), Filippov's
 // C_agg = Σ C_i (L_i·L_agg), unclamped (the identity needs every term).
 fn aggregate_light_accumulate_colour(colour_acc: vec3<f32>, vertex: vec3<f32>,
                                      light_position: vec3<f32>, colour: vec3<f32>,

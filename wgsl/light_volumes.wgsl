@@ -1,8 +1,10 @@
-// prepass — stencil light volumes and the depth-bounds test for lights (seeds 000 and 004).
+// prepass — stencil light volumes and the depth-bounds test for lights (Mark Lee, "Pre-lighting
+// in Resistance 2", Insomniac Games, GDC 2009; Michal Valient, "Deferred Rendering in Killzone
+// 2", Guerrilla Games, Develop Conference 2007).
 // Rust twin: src/lighting/volumes.rs. Tests: tests/lighting_volumes.rs.
 //
 // View space: the camera at the origin looking down +z, so a point's view depth vz is its z
-// (the talk's w); near and far are positive view depths, far may be +Inf.
+// (Lee's w); near and far are positive view depths, far may be +Inf.
 //
 // Depth-pass stenciling (front faces increment, back faces decrement where the depth test
 // passes) breaks when the near plane clips the volume's front faces: the camera is inside the

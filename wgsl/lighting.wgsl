@@ -1,5 +1,8 @@
-// prepass — the light pre-pass factorisation result = C(mp, Σ_i P(l_i, gp)) (seed 000, Resistance
-// 2) and Engel's specular reconstruction (seed 002).
+// prepass — the light pre-pass factorisation result = C(mp, Σ_i P(l_i, gp)) (Mark Lee,
+// "Pre-lighting in Resistance 2", Insomniac Games, GDC 2009) and Engel's specular
+// reconstruction (Wolfgang Engel, "Light Pre-Pass: More Blood", blog post, 28 September 2008;
+// written up as "Designing a Renderer for Multiple Lights: The Light Pre-Pass Renderer",
+// ShaderX7, 2009).
 // Rust twin: src/lighting/prepass.rs. Tests: tests/lighting_prepass.rs.
 //
 // P runs once per light in the light pass and its results are summed by additive blending:

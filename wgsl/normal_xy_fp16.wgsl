@@ -1,10 +1,12 @@
 // prepass — view-space normal x and y as two FP16 halves in one u32 (an RGBA8 texel), z rebuilt
-// as +sqrt(1 - x^2 - y^2) (Killzone 2 G-buffer: "2xFP16 compressed to RGBA8 on write").
+// as +sqrt(1 - x^2 - y^2) (Killzone 2 G-buffer: "2xFP16 compressed to RGBA8 on write"; Michal
+// Valient, "Deferred Rendering in Killzone 2", Guerrilla Games, Develop Conference 2007).
 // Rust twin: src/normal/xy_fp16.rs. Tests: tests/normal_xy_fp16.rs.
 //
 // Only normals with z >= 0 survive: the sign of z is not stored, and under perspective a visible
-// surface's view-space normal can have z < 0 (Resistance 2's "viewspace normal myth"), which
-// decodes mirrored through the xy plane. README measures how often and how badly.
+// surface's view-space normal can have z < 0 (the "viewspace normal myth" of Mark Lee,
+// "Pre-lighting in Resistance 2", Insomniac Games, GDC 2009), which decodes mirrored through
+// the xy plane. README measures how often and how badly.
 //
 // Bad input (encoder): NaN anywhere, the zero vector and all-subnormal vectors encode as +z;
 // subnormal components count as zero; infinite components win; any finite length is normalised.

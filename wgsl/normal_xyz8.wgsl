@@ -1,5 +1,6 @@
 // prepass — unit normal as x, y, z unorm8 in an RGBA8 texel (Resistance 2: "normals are stored in
-// viewspace as 3 8-bit components", spec power in alpha).
+// viewspace as 3 8-bit components", spec power in alpha; Mark Lee, "Pre-lighting in
+// Resistance 2", Insomniac Games, GDC 2009).
 // Rust twin: src/normal/xyz8.rs. Tests: tests/normal_xyz8.rs.
 //
 // Byte k (k = 0, 1, 2 for x, y, z; byte 0 is the low byte of the u32) holds

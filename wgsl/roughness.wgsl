@@ -1,6 +1,7 @@
 // prepass — specular exponent ("roughness") stored in log range in 8 bits, as Killzone 2 stores
-// it (seed 004), packed with an xyz8 normal into one RGBA8 texel as Resistance 2 keeps spec
-// power in the normal buffer's alpha (seed 000).
+// it (Michal Valient, "Deferred Rendering in Killzone 2", Guerrilla Games, Develop Conference
+// 2007), packed with an xyz8 normal into one RGBA8 texel as Resistance 2 keeps spec power in the
+// normal buffer's alpha (Mark Lee, "Pre-lighting in Resistance 2", Insomniac Games, GDC 2009).
 // Rust twin: src/roughness.rs. Tests: tests/roughness.rs.
 //
 // code k in [0, 255] stands for the power max_power^(k/255): a power p encodes to the code

@@ -1,5 +1,6 @@
-//! God of War III's aggregate vertex lights (seed `001`) — Rust twins of
-//! `wgsl/aggregate_lights.wgsl`.
+//! God of War III's aggregate vertex lights — Rust twins of `wgsl/aggregate_lights.wgsl`.
+//! Source: Vassily Filippov, "Dynamic lighting in GOW3" (Sony Santa Monica; Advances in
+//! Real-Time Rendering in 3D Graphics and Games, SIGGRAPH 2011).
 //!
 //! Per vertex `V`, lights `i` (position `P_i`, weight `W_i` = its intensity at `V`) fold into
 //! one aggregate light:
@@ -8,7 +9,7 @@
 //! `C_agg = Σ C_i (L_i·L_agg)`. Per pixel the interpolated `P_agg` gives
 //! `C_agg·max(N·normalize(P_agg − p), 0)`.
 //!
-//! **Why it is exact for luminance** (the talk's proof): with scalar luminances `l_i`,
+//! **Why it is exact for luminance** (Filippov's argument): with scalar luminances `l_i`,
 //! `X = Σ l_i L_i`, `L_agg = X/|X|` and `l_agg = Σ l_i (L_i·L_agg) = X·L_agg = |X|`, so
 //! `(N·L_agg)·l_agg = N·X = Σ l_i (N·L_i)` — the per-light sum whenever every `N·L_i ≥ 0`.
 //! `tests/lighting_aggregate.rs` checks it on the adapter within a derived rounding budget.
@@ -82,7 +83,8 @@ pub fn position(acc: Vec4, vertex: Vec3) -> Vec3 {
     vertex + x / acc.w
 }
 
-/// Fold a light's colour into `C_agg`: `colour_acc + C_i (L_i·L_agg)` (unclamped, as the talk).
+/// Fold a light's colour into `C_agg`: `colour_acc + C_i (L_i·L_agg)` (unclamped, as in
+/// Filippov's slides).
 pub fn accumulate_colour(
     colour_acc: Vec3,
     vertex: Vec3,

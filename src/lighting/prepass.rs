@@ -1,5 +1,8 @@
-//! The light pre-pass factorisation `result = C(mp, Σ P(l_i, gp))` (seed `000`, Resistance 2) and
-//! Engel's specular reconstruction (seed `002`) — Rust twins of `wgsl/lighting.wgsl`.
+//! The light pre-pass factorisation `result = C(mp, Σ P(l_i, gp))` and Engel's specular
+//! reconstruction — Rust twins of `wgsl/lighting.wgsl`. Sources: Mark Lee, "Pre-lighting in
+//! Resistance 2" (Insomniac Games, GDC 2009); Wolfgang Engel, "Light Pre-Pass: More Blood"
+//! (blog post, 28 September 2008), written up as "Designing a Renderer for Multiple Lights: The
+//! Light Pre-Pass Renderer" (ShaderX7, 2009).
 //!
 //! P runs once per light and is summed by additive blending into a light buffer:
 //! - one RGBA buffer (Engel): `rgb = N·L·att·colour`, `a = N·L·att·lum(colour)·(N·H)^n`;

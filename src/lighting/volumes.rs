@@ -1,5 +1,7 @@
-//! Stencil light volumes and depth bounds (seeds `000`, `004`) — Rust twins of
-//! `wgsl/light_volumes.wgsl`.
+//! Stencil light volumes and depth bounds — Rust twins of `wgsl/light_volumes.wgsl`. Sources:
+//! Mark Lee, "Pre-lighting in Resistance 2" (Insomniac Games, GDC 2009) for the stencil volumes
+//! and the switch to depth-fail; Michal Valient, "Deferred Rendering in Killzone 2" (Guerrilla
+//! Games, Develop Conference 2007) for the depth-bounds test.
 //!
 //! View space: the camera at the origin looking down `+z`; a point's view depth `vz` is its
 //! `z`; `near`, `far` are positive view depths, `far` may be `+∞`.
@@ -8,7 +10,7 @@
 //! volume's front faces. Every point of the near-plane rectangle lies within
 //! `ρ = near·√(1 + tan²(fov_x/2) + tan²(fov_y/2))` of the eye (the corners are exactly that
 //! far), so a volume farther than `ρ` from the eye cannot reach it (triangle inequality) and
-//! depth-pass is safe; otherwise use depth-fail. That is the talk's "fudge factor", derived:
+//! depth-pass is safe; otherwise use depth-fail. That is Lee's "fudge factor", derived:
 //! [`near_corner_distance`]. The comparisons are widened by their own rounding: for the sphere,
 //! `|c|²` and `(r + ρ)²` (after scaling by the largest magnitude) are each within `≈ 6u`
 //! relative (`u = 2^-24`: three products, two sums, one scaling division of 2.5 ULP), so the

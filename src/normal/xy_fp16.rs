@@ -2,10 +2,12 @@
 //! `wgsl/normal_xy_fp16.wgsl`.
 //!
 //! Killzone 2 stored "view space normals XY (RG FP16)", packed as 2×FP16 into RGBA8 on write,
-//! and rebuilt `z = sqrt(1 − x² − y²)` (seed talk `004`). The sign of z is lost: a normal with
-//! `z < 0` decodes mirrored through the xy plane. Under perspective a visible surface's normal
-//! does reach `z < 0` (down to −sin of the view ray's angle off the axis) — Resistance 2's
-//! "viewspace normal myth" (seed `000`). [`crate::sweep::normal::killzone_myth`] measures it.
+//! and rebuilt `z = sqrt(1 − x² − y²)` (Michal Valient, "Deferred Rendering in Killzone 2",
+//! Guerrilla Games, Develop Conference 2007). The sign of z is lost: a normal with `z < 0`
+//! decodes mirrored through the xy plane. Under perspective a visible surface's normal does
+//! reach `z < 0` (down to −sin of the view ray's angle off the axis) — the "viewspace normal
+//! myth" of Mark Lee, "Pre-lighting in Resistance 2" (Insomniac Games, GDC 2009).
+//! [`crate::sweep::normal::killzone_myth`] measures it.
 
 use super::{dot, sanitize};
 use glam::{Vec2, Vec3};

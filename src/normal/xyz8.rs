@@ -1,10 +1,10 @@
 //! x, y, z as unorm8 in bytes 0–2 of an RGBA8 texel — the Rust twin of `wgsl/normal_xyz8.wgsl`.
 //!
-//! Resistance 2 stored "viewspace normals as 3 8-bit components for simplicity" with the spec
-//! power in alpha (seed talk `000`). Byte `b` stands for the coordinate `(2b − 255)/255`; the
-//! decoder normalises. Measured over 2^24 spherical-Fibonacci directions on the adapter (see the
-//! README): mean 0.170°, max 0.39° angular error — the 24-bit octahedral code is about 9 times
-//! better in the same bits.
+//! Resistance 2 stored "viewspace normals as 3 8-bit components for simplicity" with the spec power
+//! in alpha (Mark Lee, "Pre-lighting in Resistance 2", Insomniac Games, GDC 2009). Byte `b` stands
+//! for the coordinate `(2b − 255)/255`; the decoder normalises. Measured over 2^24
+//! spherical-Fibonacci directions on the adapter (see the README): mean 0.170°, max 0.39° angular
+//! error — the 24-bit octahedral code is about 9 times better in the same bits.
 
 use super::{dot, normalize, sanitize};
 use glam::Vec3;

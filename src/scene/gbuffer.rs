@@ -19,7 +19,7 @@ pub enum TargetFormat {
     Rgba16Float,
     /// `depth32float`.
     Depth32Float,
-    /// `depth24plus-stencil8` (D24S8 on the consoles of the talks).
+    /// `depth24plus-stencil8` (D24S8 on the consoles of the Resistance 2 and Killzone 2 slides).
     Depth24PlusStencil8,
 }
 
@@ -85,7 +85,8 @@ impl GBufferLayout {
     }
 }
 
-/// Bytes as decimal megabytes (10^6), the unit both talks' figures turn out to use.
+/// Bytes as decimal megabytes (10^6), the unit the Resistance 2 and Killzone 2 slides' figures
+/// turn out to use.
 pub fn megabytes(bytes: u64) -> f64 {
     bytes as f64 / 1e6
 }

@@ -196,9 +196,9 @@ pub fn float_sweep(
     Ok((stats, got))
 }
 
-/// Constants `(a, b)` of the talk's textbook inverse `vz = 1/(z·a + b)` for `case` in
-/// `convention`, in f64 rounded once (the baseline's most favourable setting). Standard:
-/// `a = 1/f − 1/n`, `b = 1/n`; reversed: `a = 1/n − 1/f`, `b = 1/f`.
+/// Constants `(a, b)` of the textbook inverse `vz = 1/(z·a + b)` (Lee, "Pre-lighting in Resistance
+/// 2") for `case` in `convention`, in f64 rounded once (the baseline's most favourable setting).
+/// Standard: `a = 1/f − 1/n`, `b = 1/n`; reversed: `a = 1/n − 1/f`, `b = 1/f`.
 pub fn textbook_consts(case: StiffCase, convention: DepthConvention) -> [f32; 2] {
     let (n, f) = (f64::from(case.near), f64::from(case.far));
     match convention {
@@ -254,7 +254,7 @@ pub struct GridRow {
     pub stable: LinearStats,
     /// The shipped per-pixel-constants variant.
     pub stable_consts: LinearStats,
-    /// The talk's textbook `1/(z·a + b)`.
+    /// The textbook `1/(z·a + b)` of Lee's "Pre-lighting in Resistance 2".
     pub textbook: LinearStats,
     /// The `B/(z − A)` form.
     pub b_over_z_minus_a: LinearStats,

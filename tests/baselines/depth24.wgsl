@@ -1,4 +1,5 @@
-// Test baselines for the 24-bit depth functions (not public API): the forms the talk warns
+// Test baselines for the 24-bit depth functions (not public API): the forms Mark Lee's
+// "Pre-lighting in Resistance 2" (Insomniac Games, GDC 2009) warns
 // about, measured beside wgsl/depth.wgsl's.
 
 // Resistance 2's first attempt: weight the unrounded channels and round only the total.

@@ -2,7 +2,8 @@
 // wgsl/linear_depth.wgsl. Constants are computed on the CPU in f64 and rounded once, the most
 // favourable setting for them.
 
-// The talk's inverse: vz = 1 / (zw·a + b), a = (f - n)/(-f n), b = 1/n, zw = d/(2^24 - 1).
+// The textbook inverse (Mark Lee, "Pre-lighting in Resistance 2", Insomniac Games, GDC 2009):
+// vz = 1 / (zw·a + b), a = (f - n)/(-f n), b = 1/n, zw = d/(2^24 - 1).
 fn baseline_view_z_textbook24(d: u32, ab: vec2<f32>) -> f32 {
     let zw = f32(d) * (1.0 / 16777215.0);
     return 1.0 / (zw * ab.x + ab.y);

@@ -70,7 +70,8 @@ pub fn max_per_bin(
         .collect()
 }
 
-/// The talk's textbook form in f32 on the CPU, exactly as the baseline WGSL spells it.
+/// The textbook form (Lee, "Pre-lighting in Resistance 2") in f32 on the CPU, exactly as the
+/// baseline WGSL spells it.
 fn textbook_cpu(d: u32, ab: [f32; 2]) -> f32 {
     let zw = d as f32 * (1.0 / DEPTH24_MAX as f32);
     1.0 / (zw * ab[0] + ab[1])
