@@ -79,6 +79,8 @@ pub fn view_z_from_depth_consts(z: f32, k: [f32; 3]) -> f32 {
     let s = if zc < 0.5 {
         1.0 - zc * k[2]
     } else {
+        // Exact in f32 (Sterbenz): the same value the WGSL builds from z's bits
+        // (`ld_one_minus`), which keeps it exact under any reassociation on the GPU.
         (1.0 - zc) + zc * k[1]
     };
     divide_or_inf(k[0], s)
@@ -100,6 +102,92 @@ pub fn view_z_from_reversed_depth_consts(z: f32, k: [f32; 3]) -> f32 {
     let zc = z.clamp(0.0, 1.0);
     let s = zc * k[1] + k[2];
     divide_or_inf(k[0], s)
+}
+
+/// Error bounds of every function here, in f32 ULPs of the exact distance, kept once: the tests,
+/// the fuzz targets and the docs read them from here.
+///
+/// With `u = 2^-24`, a result `y` has `ULP(y) ≥ u·|y|`, so a relative error `k·u` is at most
+/// `k` ULP. Per operation (WGSL "Floating Point Accuracy"):
+///
+/// | adapter | `+ − ×` | `/` | rounded-once constant (`Projection::*_consts`, f64 → f32) |
+/// |---|---|---|---|
+/// | correctly rounded (lavapipe, the Rust twins) | `u` | `u` | `u` |
+/// | any conforming one | `2u` (either neighbour) | `5u` (2.5 ULP ≤ 2.5·2u) | `u` |
+///
+/// and every conforming adapter may also fuse `a·b + c` (one rounding fewer: never worse) and
+/// reassociate. Each denominator is a sum of two non-negative terms, `s = a + p` with
+/// `p = x·k` (the 24-bit complement `a = D − d` is an exact integer; `a = 1 − z` is exact for
+/// `z ≥ 0.5` and built from the bits of `z`, so no reassociation can turn it into
+/// `(1 + p) − z`); with `w = p/s ∈ [0, 1]`:
+/// `ε_s ≤ ε_+ + w·(ε_× + ε_k)`, and the result `n'/s` errs `ε_n + ε_s + ε_/`, first order
+/// (second-order terms are below 10^-5 ULP; the constants add 0.01 ULP for them).
+///
+/// | function | `ε_n` | `ε_k` | correctly rounded | conforming |
+/// |---|---|---|---|---|
+/// | `view_z_from_depth24_consts` | u | u | 1 + 1 + 2 + 1 = 5 | 1 + 2 + (2 + 1) + 5 = 11 |
+/// | `view_z_from_depth24` | u (`n·D`) | u (`n/f`) | 5 | 2 + 2 + (2 + 5) + 5 = 16 |
+/// | `view_z_from_depth_consts` | 0 | u | 0 + 1 + 2 + 1 = 4 | 0 + 2 + (2 + 1) + 5 = 10 |
+/// | `view_z_from_depth` | 0 | u (`n/f`, `1 − n/f`) | 4 | 0 + 2 + (2 + 5) + 5 = 14 |
+/// | `view_z_from_reversed_depth_consts` | 0 | u | 4 | 0 + 2 + (2 + 1) + 5 = 10 |
+/// | `view_z_from_reversed_depth` | 0 | u | 4 | 0 + 2 + (2 + 5) + 5 = 14 |
+///
+/// (Below `z = 0.5` the standard path's denominator is `1 − z·(1 − n/f)` with the product
+/// under half of it: the same sum with `w ≤ 1`.) The correctly rounded figures are the
+/// lavapipe promise; the conforming ones hold on every conforming adapter, and
+/// `tests/linear_depth.rs` checks both, the second under emulation
+/// ([`crate::conforming`]).
+pub mod bounds {
+    /// Second-order terms of the first-order sums below.
+    const SECOND_ORDER: f64 = 0.01;
+
+    /// `view_z_from_depth24_consts` where `+ − × /` are correctly rounded.
+    pub const DEPTH24_CONSTS_CORRECTLY_ROUNDED: f64 = 5.0 + SECOND_ORDER;
+    /// `view_z_from_depth24_consts` on every conforming adapter.
+    pub const DEPTH24_CONSTS_CONFORMING: f64 = 11.0 + SECOND_ORDER;
+    /// `view_z_from_depth24` where `+ − × /` are correctly rounded.
+    pub const DEPTH24_CORRECTLY_ROUNDED: f64 = 5.0 + SECOND_ORDER;
+    /// `view_z_from_depth24` on every conforming adapter.
+    pub const DEPTH24_CONFORMING: f64 = 16.0 + SECOND_ORDER;
+    /// `view_z_from_depth_consts` and `view_z_from_reversed_depth_consts` where `+ − × /` are
+    /// correctly rounded.
+    pub const FLOAT_CONSTS_CORRECTLY_ROUNDED: f64 = 4.0 + SECOND_ORDER;
+    /// `view_z_from_depth_consts` and `view_z_from_reversed_depth_consts` on every conforming
+    /// adapter.
+    pub const FLOAT_CONSTS_CONFORMING: f64 = 10.0 + SECOND_ORDER;
+    /// `view_z_from_depth` and `view_z_from_reversed_depth` where `+ − × /` are correctly
+    /// rounded.
+    pub const FLOAT_CORRECTLY_ROUNDED: f64 = 4.0 + SECOND_ORDER;
+    /// `view_z_from_depth` and `view_z_from_reversed_depth` on every conforming adapter.
+    pub const FLOAT_CONFORMING: f64 = 14.0 + SECOND_ORDER;
+
+    /// The bound of a function by name: (correctly rounded, conforming), with the row of the
+    /// derivation table it comes from. `None` for names not in this module.
+    pub fn of(function: &str) -> Option<(f64, f64, &'static str)> {
+        Some(match function {
+            "view_z_from_depth24_consts" => (
+                DEPTH24_CONSTS_CORRECTLY_ROUNDED,
+                DEPTH24_CONSTS_CONFORMING,
+                "ε_n u + ε_+ + (ε_× + ε_k u) + ε_/ (linear_depth::bounds)",
+            ),
+            "view_z_from_depth24" => (
+                DEPTH24_CORRECTLY_ROUNDED,
+                DEPTH24_CONFORMING,
+                "ε_n (n·D) + ε_+ + (ε_× + ε_k = n/f) + ε_/ (linear_depth::bounds)",
+            ),
+            "view_z_from_depth_consts" | "view_z_from_reversed_depth_consts" => (
+                FLOAT_CONSTS_CORRECTLY_ROUNDED,
+                FLOAT_CONSTS_CONFORMING,
+                "ε_+ + (ε_× + ε_k u) + ε_/, exact 1 − z (linear_depth::bounds)",
+            ),
+            "view_z_from_depth" | "view_z_from_reversed_depth" => (
+                FLOAT_CORRECTLY_ROUNDED,
+                FLOAT_CONFORMING,
+                "ε_+ + (ε_× + ε_k = n/f) + ε_/, exact 1 − z (linear_depth::bounds)",
+            ),
+            _ => return None,
+        })
+    }
 }
 
 /// Exact references in f64 from the f32 parameters as given (relative error ~2^-52, i.e.

@@ -258,3 +258,46 @@ fn codes_above_24_bits_saturate_on_both_sides() {
         }
     }
 }
+
+/// The conforming-adapter emulation catches the division baseline — `f32(d) / 16777215.0` is
+/// correctly rounded on lavapipe, but WGSL allows `/` 2.5 ULP, and pushed to either end it no
+/// longer maps every code back — while `hyperbolic_depth_from_depth24`, built from integers,
+/// stays correctly rounded under every policy. All 2^24 codes per policy.
+#[test]
+fn emulation_breaks_the_division_baseline_but_not_the_integer_construction() {
+    use prepass::conforming::{Emulation, Policy, emulate};
+    for policy in Policy::WORST {
+        let e = emulate(DEPTH, &Emulation::new(policy)).unwrap();
+        let f = e.function_name("hyperbolic_depth_from_depth24").unwrap();
+        let h = hyperbolic_all(gpu(), &e.source, f).unwrap();
+        eprintln!(
+            "emulated {policy}: hyperbolic_depth_from_depth24 max {:.3} ULP, {} exact / {} f32 round-trip failures, {} collisions",
+            h.ulps.max, h.exact_roundtrip_failures, h.f32_roundtrip_failures, h.collisions
+        );
+        assert!(
+            h.ulps.max <= 0.5,
+            "{policy}: {} ULP (bound: correctly rounded, 0.5 ULP)",
+            h.ulps.max
+        );
+        assert_eq!(
+            h.exact_roundtrip_failures + h.collisions,
+            0,
+            "{policy}: round trip broken"
+        );
+        let b = emulate(BASELINES, &Emulation::new(policy)).unwrap();
+        let f = b.function_name("baseline_hyperbolic_divide").unwrap();
+        let h = hyperbolic_all(gpu(), &b.source, f).unwrap();
+        eprintln!(
+            "emulated {policy}: baseline f32(d) / 16777215.0 max {:.3} ULP, {} exact / {} f32 round-trip failures, {} collisions",
+            h.ulps.max, h.exact_roundtrip_failures, h.f32_roundtrip_failures, h.collisions
+        );
+        assert!(
+            h.ulps.max <= prepass::conforming::allowance::DIVISION_ULP,
+            "{policy}: the emulated division left its 2.5 ULP"
+        );
+        assert!(
+            h.exact_roundtrip_failures > 0,
+            "{policy}: the division baseline kept its exact round trip under emulation — the emulation does not reach the division's freedom"
+        );
+    }
+}

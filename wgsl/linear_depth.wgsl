@@ -11,7 +11,9 @@
 //   vz = n / (z·(1 - n/f) + n/f)          reversed
 //   vz = n·(2^24 - 1) / ((2^24 - 1 - d) + d·(n/f))   24-bit code d, integer complement
 // every term is non-negative, so nothing cancels: the error stays a few ULP for any f/n,
-// infinite far included (n/f = 0). 1 - z is exact for z >= 0.5 (Sterbenz).
+// infinite far included (n/f = 0). 1 - z (z >= 0.5) and the 24-bit complement are built from
+// integers, so no reassociation a conforming adapter may apply brings the cancellation back.
+// Error bounds, correctly rounded and on every conforming adapter: src/linear_depth.rs, `bounds`.
 //
 // Special values are built and detected through bits: WGSL lets an implementation assume that
 // float operations never see or produce NaN or infinity.
@@ -35,6 +37,17 @@ fn ld_nan() -> f32 {
 // n/f, exactly 0 for an infinite far plane.
 fn ld_near_over_far(near: f32, far: f32) -> f32 {
     return select(near / far, 0.0, ld_is_inf(far));
+}
+
+// 1 - z exactly, for z in [0.5, 1], built from the bits of z: z = (2^23 + m)·2^-24 with m its
+// mantissa bits, so 1 - z = (2^23 - m)·2^-24 (0 at z = 1). A float subtraction 1.0 - z would be
+// exact too, but WGSL lets an implementation reassociate (1 - z) + p into (1 + p) - z, which
+// cancels; an integer it cannot reassociate.
+fn ld_one_minus(z: f32) -> f32 {
+    if (z >= 1.0) {
+        return 0.0;
+    }
+    return f32(0x800000u - (bitcast<u32>(z) & 0x7fffffu)) * 5.9604644775390625e-8;
 }
 
 // numerator / s, with s == 0 (the far plane of an infinite projection) giving +inf.
@@ -77,7 +90,7 @@ fn view_z_from_depth_consts(z: f32, k: vec3<f32>) -> f32 {
         return ld_nan();
     }
     let zc = clamp(z, 0.0, 1.0);
-    let s = select((1.0 - zc) + zc * k.y, 1.0 - zc * k.z, zc < 0.5);
+    let s = select(ld_one_minus(zc) + zc * k.y, 1.0 - zc * k.z, zc < 0.5);
     return ld_divide_or_inf(k.x, s);
 }
 

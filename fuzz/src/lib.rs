@@ -219,17 +219,20 @@ pub const DIFFERENTIAL: &[Entry] = &[
         },
     },
     Entry {
-        name: "linear_depth::view_z_from_depth24 vs exact (≤ 5 ULP: u·(3 + 2w), division correctly rounded)",
+        name: "linear_depth::view_z_from_depth24 vs exact (linear_depth::bounds::DEPTH24_CORRECTLY_ROUNDED: the Rust twin rounds correctly)",
         check: |i| {
             let d = i.u32();
             let Ok(p) = projection(i) else { return };
             let got = ld::view_z_from_depth24(d, p.near(), p.far());
             let e = ld::exact::view_z_from_depth24(d, p.near(), p.far());
-            assert!(distance_ok(got, e, 5.0), "{d:#x} {p:?}: {got} vs {e}");
+            assert!(
+                distance_ok(got, e, ld::bounds::DEPTH24_CORRECTLY_ROUNDED),
+                "{d:#x} {p:?}: {got} vs {e}"
+            );
         },
     },
     Entry {
-        name: "linear_depth::view_z_from_depth / _reversed_ vs exact (≤ 4 ULP: u·(2 + 2w))",
+        name: "linear_depth::view_z_from_depth / _reversed_ vs exact (linear_depth::bounds::FLOAT_CORRECTLY_ROUNDED)",
         check: |i| {
             let z = i.f32();
             let Ok(p) = projection(i) else { return };
@@ -247,7 +250,10 @@ pub const DIFFERENTIAL: &[Entry] = &[
                     ld::exact::view_z_from_reversed_depth(z, n, f),
                 ),
             };
-            assert!(distance_ok(got, e, 4.0), "{z:?} {p:?}: {got} vs {e}");
+            assert!(
+                distance_ok(got, e, ld::bounds::FLOAT_CORRECTLY_ROUNDED),
+                "{z:?} {p:?}: {got} vs {e}"
+            );
         },
     },
 ];

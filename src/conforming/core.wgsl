@@ -420,6 +420,26 @@ fn prepass_cf_sub_add(site: u32, a: f32, b: f32, c: f32) -> f32 {
     return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
 }
 
+// (a - b) + x*y: fused or not, or reassociated to (a + x*y) - b.
+fn prepass_cf_sub_add_mad(site: u32, a: f32, b: f32, x: f32, y: f32) -> f32 {
+    let left = prepass_cf_mad(site, x, y, prepass_cf_sub(site + 40u, a, b));
+    if (!prepass_cf_on(PREPASS_CF_REASSOCIATION)) {
+        return left;
+    }
+    let right = prepass_cf_sub(site + 48u, prepass_cf_mad(site + 56u, x, y, a), b);
+    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 80u, left, right);
+}
+
+// (a + b) + x*y: fused or not, or reassociated to a + (b + x*y).
+fn prepass_cf_add3_mad(site: u32, a: f32, b: f32, x: f32, y: f32) -> f32 {
+    let left = prepass_cf_mad(site, x, y, prepass_cf_add(site + 40u, a, b));
+    if (!prepass_cf_on(PREPASS_CF_REASSOCIATION)) {
+        return left;
+    }
+    let right = prepass_cf_add(site + 48u, a, prepass_cf_mad(site + 56u, x, y, b));
+    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 80u, left, right);
+}
+
 // (a * b) / c, or (a / c) * b.
 fn prepass_cf_mul_div(site: u32, a: f32, b: f32, c: f32) -> f32 {
     let left = prepass_cf_div(site, prepass_cf_mul(site + 8u, a, b), c);

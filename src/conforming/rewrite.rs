@@ -288,10 +288,18 @@ fn site_for(
             };
             match op {
                 B::Add => {
-                    if let Some((a, b)) = mul(left) {
-                        call(plan, "mad", &[a, b, right])
-                    } else if let Some((a, b)) = mul(right) {
-                        call(plan, "mad", &[a, b, left])
+                    // A product beside a sum or difference: fusion and reassociation both apply.
+                    let product = mul(left)
+                        .map(|p| (p, right))
+                        .or_else(|| mul(right).map(|p| (p, left)));
+                    if let Some(((x, y), other)) = product {
+                        if let Some((a, b)) = sub(other) {
+                            call(plan, "sub_add_mad", &[a, b, x, y])
+                        } else if let Some((a, b)) = add(other) {
+                            call(plan, "add3_mad", &[a, b, x, y])
+                        } else {
+                            call(plan, "mad", &[x, y, other])
+                        }
                     } else if let Some((a, b)) = add(left) {
                         call(plan, "add3", &[a, b, right])
                     } else if let Some((a, b)) = add(right) {

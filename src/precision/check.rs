@@ -190,6 +190,12 @@ pub struct Passed<I> {
     pub stats: ErrorStats,
     /// The input with the largest error (`None` when no case was drawn).
     pub worst: Option<I>,
+    /// Cases whose result the WGSL spec does not define (an operation left its domain: a
+    /// divisor outside ±[2^-126, 2^126], `inverseSqrt` of ≤ 0, …), reported instead of
+    /// measured; only an emulated check ([`PrecisionCheck::emulated`]) finds them.
+    pub undefined: u64,
+    /// The first such input.
+    pub undefined_example: Option<I>,
 }
 
 /// One evaluated input: what the adapter returned, the reference, and the metric's error.
@@ -313,6 +319,8 @@ impl<I, O, R> From<HarnessError> for CheckError<I, O, R> {
 /// A WGSL function prepared for property-based precision checks on an adapter.
 pub struct PrecisionCheck<'g> {
     kernel: Kernel<'g>,
+    /// Under emulation: the kernel returning 1 where the spec leaves the result undefined.
+    undefined: Option<Kernel<'g>>,
     function: String,
     config: CheckConfig,
 }
@@ -351,6 +359,57 @@ impl<'g> PrecisionCheck<'g> {
     pub fn new(gpu: &'g Gpu, source: &str, function: &str) -> Result<Self, HarnessError> {
         Ok(Self {
             kernel: gpu.kernel(source, function)?,
+            undefined: None,
+            function: function.to_string(),
+            config: CheckConfig::default(),
+        })
+    }
+
+    /// Like [`PrecisionCheck::new`], but on the worst conforming adapter emulated on `gpu`
+    /// ([`crate::conforming`]): every operation the WGSL spec leaves free is evaluated as
+    /// `emulation` says. Inputs for which an operation leaves the spec's domain are reported in
+    /// [`Passed::undefined`] and never fail the check.
+    ///
+    /// ```no_run
+    /// use prepass::conforming::{Emulation, Policy};
+    /// use prepass::harness::Gpu;
+    /// use prepass::precision::check::PrecisionCheck;
+    /// use prepass::precision::metrics::ulp_error;
+    /// use prepass::precision::strategies::depth24_code;
+    ///
+    /// let gpu = Gpu::new()?;
+    /// let wgsl = "fn to_unit(d: u32) -> f32 { return f32(d) / 16777215.0; }";
+    /// for policy in Policy::WORST {
+    ///     let passed = PrecisionCheck::emulated(&gpu, wgsl, "to_unit", &Emulation::new(policy))?
+    ///         .run(
+    ///             &depth24_code(),
+    ///             |d: &u32| f64::from(*d) / 16777215.0,
+    ///             |got: &f32, want: &f64| ulp_error(*got, *want),
+    ///             2.5, // WGSL's `/` allowance; f32(d) is exact for d < 2^24
+    ///         )
+    ///         .map_err(|e| e.to_string())?;
+    ///     println!("{policy}: max {} ULP", passed.stats.max);
+    /// }
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn emulated(
+        gpu: &'g Gpu,
+        source: &str,
+        function: &str,
+        emulation: &crate::conforming::Emulation,
+    ) -> Result<Self, HarnessError> {
+        let e = crate::conforming::emulate(source, emulation)
+            .map_err(|e| HarnessError::Shader(e.to_string()))?;
+        let name = e.function_name(function).ok_or_else(|| {
+            HarnessError::Shader(format!("the module has no function `{function}`"))
+        })?;
+        let undefined = match e.undefined_function(function) {
+            Some(u) => Some(gpu.kernel(&e.source, u)?),
+            None => None,
+        };
+        Ok(Self {
+            kernel: gpu.kernel(&e.source, name)?,
+            undefined,
             function: function.to_string(),
             config: CheckConfig::default(),
         })
@@ -421,6 +480,28 @@ impl<'g> PrecisionCheck<'g> {
             .collect())
     }
 
+    /// Under emulation, whether each input's result is left undefined by the spec (all `false`
+    /// otherwise).
+    fn undefined_flags<I: WgslArgs, O: WgslValue, R>(
+        &self,
+        inputs: &[I],
+    ) -> Result<Vec<bool>, CheckError<I, O, R>> {
+        let Some(k) = &self.undefined else {
+            return Ok(Vec::new());
+        };
+        let n = k.signature().params.len();
+        let mut columns = vec![Vec::with_capacity(inputs.len() * 4); n];
+        for x in inputs {
+            x.push_columns(&mut columns);
+        }
+        let args: Vec<Arg<'_>> = columns
+            .iter()
+            .map(|c| Arg::Column(bytemuck::cast_slice(c)))
+            .collect();
+        let out = k.run(&args, inputs.len() as u64)?;
+        Ok(out.as_u32().iter().map(|&f| f != 0).collect())
+    }
+
     /// Check that `error(wgsl_result, reference(input)) ≤ bound` for `cases` inputs drawn from
     /// `strategy`, evaluated on the adapter in one batch; on failure, shrink the worst input on
     /// the adapter and report both (see the module docs).
@@ -464,6 +545,8 @@ impl<'g> PrecisionCheck<'g> {
             draw += 1;
         }
         let outputs = self.evaluate::<S::Value, O, R>(&inputs)?;
+        let undefined = self.undefined_flags::<S::Value, O, R>(&inputs)?;
+        let (mut undefined_count, mut undefined_example) = (0u64, None);
         let mut stats = ErrorStats::default();
         let mut failing = 0u64;
         let mut worst: Option<(usize, f64)> = None;
@@ -471,6 +554,12 @@ impl<'g> PrecisionCheck<'g> {
         let mut worst_any: Option<(usize, f64)> = None;
         let mut refs = Vec::with_capacity(inputs.len());
         for (i, (x, got)) in inputs.iter().zip(&outputs).enumerate() {
+            if undefined.get(i).copied().unwrap_or(false) {
+                undefined_count += 1;
+                undefined_example.get_or_insert_with(|| x.clone());
+                refs.push(reference(x));
+                continue;
+            }
             let r = reference(x);
             let e = error(got, &r);
             refs.push(r);
@@ -490,6 +579,8 @@ impl<'g> PrecisionCheck<'g> {
                 cases: inputs.len() as u64,
                 stats,
                 worst: worst_any.map(|(i, _)| inputs[i].clone()),
+                undefined: undefined_count,
+                undefined_example,
             });
         };
         let worst = Evaluated {
