@@ -10,7 +10,7 @@
 
 use criterion::{BatchSize, Criterion, Throughput, criterion_group, criterion_main};
 use glam::Vec3;
-use prepass::depth;
+use prepass::depth24;
 use prepass::normal::oct;
 use std::hint::black_box;
 
@@ -21,17 +21,17 @@ const N: usize = 1 << 16;
 /// Codes spread over the whole 24-bit range (a multiplicative hash of the index).
 fn codes() -> Vec<u32> {
     (0..N as u32)
-        .map(|k| k.wrapping_mul(0x9e37_79b1) & depth::DEPTH24_MAX)
+        .map(|k| k.wrapping_mul(0x9e37_79b1) & depth24::DEPTH24_MAX)
         .collect()
 }
 
 fn depth24(c: &mut Criterion) {
     let codes = codes();
-    let packed: Vec<u32> = codes.iter().map(|&d| depth::pack_depth24(d)).collect();
+    let packed: Vec<u32> = codes.iter().map(|&d| depth24::pack_depth24(d)).collect();
     let rgb: Vec<Vec3> = packed
         .iter()
         .map(|&p| {
-            let [r, g, b, _] = depth::unpack4x8unorm(p);
+            let [r, g, b, _] = depth24::unpack4x8unorm(p);
             Vec3::new(r, g, b)
         })
         .collect();
@@ -42,7 +42,7 @@ fn depth24(c: &mut Criterion) {
     g.bench_function("pack_depth24 (encode)", |b| {
         b.iter(|| {
             for (o, &d) in out_u32.iter_mut().zip(black_box(&codes)) {
-                *o = depth::pack_depth24(d);
+                *o = depth24::pack_depth24(d);
             }
             black_box(&out_u32);
         })
@@ -50,7 +50,7 @@ fn depth24(c: &mut Criterion) {
     g.bench_function("depth24_from_packed (decode)", |b| {
         b.iter(|| {
             for (o, &p) in out_u32.iter_mut().zip(black_box(&packed)) {
-                *o = depth::depth24_from_packed(p);
+                *o = depth24::depth24_from_packed(p);
             }
             black_box(&out_u32);
         })
@@ -58,7 +58,7 @@ fn depth24(c: &mut Criterion) {
     g.bench_function("depth24_from_rgb8 (decode)", |b| {
         b.iter(|| {
             for (o, &v) in out_u32.iter_mut().zip(black_box(&rgb)) {
-                *o = depth::depth24_from_rgb8(v);
+                *o = depth24::depth24_from_rgb8(v);
             }
             black_box(&out_u32);
         })
@@ -66,7 +66,7 @@ fn depth24(c: &mut Criterion) {
     g.bench_function("hyperbolic_depth_from_depth24", |b| {
         b.iter(|| {
             for (o, &d) in out_f32.iter_mut().zip(black_box(&codes)) {
-                *o = depth::hyperbolic_depth_from_depth24(d);
+                *o = depth24::hyperbolic_depth_from_depth24(d);
             }
             black_box(&out_f32);
         })

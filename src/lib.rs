@@ -7,7 +7,7 @@
 //!
 //! | module | WGSL | what |
 //! |---|---|---|
-//! | [`depth`] | `wgsl/depth.wgsl` | 24-bit depth codes in RGBA8 texels, hyperbolic depth |
+//! | [`depth24`] | `wgsl/depth24.wgsl` | 24-bit depth codes in RGBA8 texels, hyperbolic depth |
 //! | [`linear_depth`] | `wgsl/linear_depth.wgsl` | view distance from depth, stable for any far/near |
 //! | [`projection`] | — | `Projection`: near/far/convention, per-pixel constants, exact forward maps |
 //! | [`position`] | `wgsl/position.wgsl` | frustum rays, view/world/camera-relative position rebuild |
@@ -28,7 +28,7 @@
 
 #[cfg(feature = "validate")]
 pub mod conforming;
-pub mod depth;
+pub mod depth24;
 #[cfg(feature = "harness")]
 pub mod harness;
 pub mod lighting;

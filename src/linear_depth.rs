@@ -19,7 +19,7 @@
 //! is the division's error: `u` where `/` is correctly rounded (lavapipe, and the Rust twin),
 //! up to 2.5 ULP where an adapter uses WGSL's full allowance. A relative error `k·u` is at most
 //! `k` ULP. The measured maxima over all codes and the stiff grid are in the README
-//! (`tests/linear_depth.rs` asserts ≤ 4 ULP on the adapter).
+//! (`tests/linear_depth.rs` asserts the bounds of [`bounds`]).
 //!
 //! **Twins:** the same operations in the same order in f32. They are bit-identical where the
 //! adapter neither fuses `a·b + c` into an fma nor divides less accurately than correctly
@@ -31,7 +31,7 @@
 //! (`0 < near < far ≤ +∞`, as [`crate::projection::Projection::new`] enforces); the result for
 //! other values is unspecified.
 
-use crate::depth::DEPTH24_MAX;
+use crate::depth24::DEPTH24_MAX;
 
 /// `n/f` with an infinite far plane giving exactly 0 (as WGSL `ld_near_over_far`).
 fn near_over_far(near: f32, far: f32) -> f32 {
@@ -193,7 +193,7 @@ pub mod bounds {
 /// Exact references in f64 from the f32 parameters as given (relative error ~2^-52, i.e.
 /// ~2^-28 of an f32 ULP: every term is non-negative, so f64 loses nothing to cancellation).
 pub mod exact {
-    use crate::depth::DEPTH24_MAX;
+    use crate::depth24::DEPTH24_MAX;
 
     /// `vz = n·f·D / (f·(D − d) + n·d)`, `D = 2^24 − 1`; `n·D/(D − d)` for infinite far.
     pub fn view_z_from_depth24(d: u32, near: f32, far: f32) -> f64 {

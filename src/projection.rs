@@ -7,7 +7,7 @@
 //! - standard: `z = f(vz − n) / ((f − n)·vz)` (near → 0, far → 1); infinite far: `z = 1 − n/vz`;
 //! - reversed: `z = n(f − vz) / ((f − n)·vz)` (near → 1, far → 0); infinite far: `z = n/vz`.
 
-use crate::depth::DEPTH24_MAX;
+use crate::depth24::DEPTH24_MAX;
 
 /// Which end of the depth range the near plane maps to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -64,7 +64,7 @@ fn errplot_without_adapter_writes_cpu_results_and_names_the_fix() {
         "{twin:?}"
     );
     // Its error comes from the twin's exhaustive CPU sweep: correctly rounded, so at most half
-    // an ULP (src/depth.rs derives why), and the sweep did run (a value, not an empty cell).
+    // an ULP (src/depth24.rs derives why), and the sweep did run (a value, not an empty cell).
     let max: f64 = twin[col("max_error")].parse().unwrap();
     assert!((0.25..=0.5).contains(&max), "{twin:?}");
 }

@@ -5,7 +5,7 @@
 mod common;
 
 use common::gpu;
-use prepass::depth;
+use prepass::depth24;
 use prepass::harness::{Arg, ValueType};
 use prepass::precision::check::{
     CheckConfig, CheckError, Failure, PrecisionCheck, WgslArgs, WgslValue,
@@ -23,7 +23,7 @@ const WRONG_PACK: &str = "fn pack_unsaturated(d: u32) -> u32 {
 }";
 
 fn exact_depth(d: &u32) -> f64 {
-    depth::exact::hyperbolic_depth(*d)
+    depth24::exact::hyperbolic_depth(*d)
 }
 
 fn ulps(got: &f32, want: &f64) -> f64 {
@@ -114,9 +114,9 @@ fn unsaturated_pack_is_shrunk_to_a_minimal_out_of_range_code() {
     let check = PrecisionCheck::new(gpu(), WRONG_PACK, "pack_unsaturated").unwrap();
     // Metric: distance in codes between what the texel decodes to and what it should.
     let codes = |got: &u32, want: &u32| {
-        f64::from(depth::depth24_from_packed(*got).abs_diff(depth::depth24_from_packed(*want)))
+        f64::from(depth24::depth24_from_packed(*got).abs_diff(depth24::depth24_from_packed(*want)))
     };
-    let fail = expect_failure(check.run(&any::<u32>(), |d| depth::pack_depth24(*d), codes, 0.0));
+    let fail = expect_failure(check.run(&any::<u32>(), |d| depth24::pack_depth24(*d), codes, 0.0));
     let s = fail.shrunk.input;
     // Every d ≤ 2^24 − 1 packs correctly, so a failing input is ≥ 2^24; binary-search shrinking
     // stops where s fails and s − 1 passes, which (d − 1 passes iff its low 24 bits are all
@@ -127,14 +127,18 @@ fn unsaturated_pack_is_shrunk_to_a_minimal_out_of_range_code() {
     );
     assert!(s <= fail.worst.input);
     let got: Vec<u32> = check.evaluate::<u32, u32, ()>(&[s - 1, s]).unwrap();
-    assert_eq!(got[0], depth::pack_depth24(s - 1), "s − 1 passes");
-    assert_ne!(got[1], depth::pack_depth24(s), "s fails");
+    assert_eq!(got[0], depth24::pack_depth24(s - 1), "s − 1 passes");
+    assert_ne!(got[1], depth24::pack_depth24(s), "s fails");
 }
 
 #[test]
 fn a_correct_function_passes_with_its_documented_bound() {
-    let check =
-        PrecisionCheck::new(gpu(), prepass::wgsl::DEPTH, "hyperbolic_depth_from_depth24").unwrap();
+    let check = PrecisionCheck::new(
+        gpu(),
+        prepass::wgsl::DEPTH24,
+        "hyperbolic_depth_from_depth24",
+    )
+    .unwrap();
     let passed = check
         .run(&depth24_code(), exact_depth, ulps, CORRECTLY_ROUNDED)
         .unwrap_or_else(|e| panic!("{e}"));

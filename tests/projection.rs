@@ -5,7 +5,7 @@
 mod common;
 
 use common::gpu;
-use prepass::depth::{DEPTH24_MAX, hyperbolic_depth_from_depth24};
+use prepass::depth24::{DEPTH24_MAX, hyperbolic_depth_from_depth24};
 use prepass::harness::Arg;
 use prepass::linear_depth::{self as ld, exact};
 use prepass::precision::metrics::{ulp_distance, ulp_error};

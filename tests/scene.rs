@@ -368,7 +368,7 @@ fn wesl_users_can_import_the_pieces() {
     }
     let consumer = "\
 import package::linear_depth::view_z_from_depth24;
-import package::depth::depth24_from_rgb8;
+import package::depth24::depth24_from_rgb8;
 
 @group(0) @binding(0) var<storage, read_write> out: array<f32>;
 

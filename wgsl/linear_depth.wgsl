@@ -18,18 +18,22 @@
 // Special values are built and detected through bits: WGSL lets an implementation assume that
 // float operations never see or produce NaN or infinity.
 
+// Whether x is NaN, from its bits (WGSL may assume no NaN in float comparisons).
 fn ld_is_nan(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7fffffffu) > 0x7f800000u;
 }
 
+// Whether x is +-inf, from its bits.
 fn ld_is_inf(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7fffffffu) == 0x7f800000u;
 }
 
+// +inf, built from bits.
 fn ld_positive_inf() -> f32 {
     return bitcast<f32>(0x7f800000u);
 }
 
+// A quiet NaN, built from bits.
 fn ld_nan() -> f32 {
     return bitcast<f32>(0x7fc00000u);
 }

@@ -15,7 +15,7 @@
 //! table plus a three-line `fuzz_targets/builders.rs` and one line in `.ci/fuzz`.
 
 use glam::Vec3;
-use prepass::depth::{self, DEPTH24_MAX};
+use prepass::depth24::{self, DEPTH24_MAX};
 use prepass::linear_depth as ld;
 use prepass::precision::metrics::ulp_error;
 use prepass::projection::{DepthConvention, Projection};
@@ -91,10 +91,10 @@ fn channel_ok(c: f32, byte: u32) -> bool {
 /// Decoders: any bytes in, a valid result out.
 pub const DECODERS: &[Entry] = &[
     Entry {
-        name: "depth::depth24_from_rgb8",
+        name: "depth24::depth24_from_rgb8",
         check: |i| {
             let rgb = i.vec3();
-            let d = depth::depth24_from_rgb8(rgb);
+            let d = depth24::depth24_from_rgb8(rgb);
             assert!(d <= DEPTH24_MAX, "{rgb:?} → {d:#x}");
             let bytes = [d >> 16, (d >> 8) & 0xff, d & 0xff];
             for (c, b) in rgb.to_array().into_iter().zip(bytes) {
@@ -106,32 +106,32 @@ pub const DECODERS: &[Entry] = &[
         },
     },
     Entry {
-        name: "depth::depth24_from_packed",
+        name: "depth24::depth24_from_packed",
         check: |i| {
             let p = i.u32();
-            let d = depth::depth24_from_packed(p);
+            let d = depth24::depth24_from_packed(p);
             let b = p.to_le_bytes().map(u32::from);
             assert_eq!(d, b[0] << 16 | b[1] << 8 | b[2], "{p:#x}");
         },
     },
     Entry {
-        name: "depth::hyperbolic_depth_from_depth24",
+        name: "depth24::hyperbolic_depth_from_depth24",
         check: |i| {
             let d = i.u32();
-            let z = depth::hyperbolic_depth_from_depth24(d);
+            let z = depth24::hyperbolic_depth_from_depth24(d);
             assert!((0.0..=1.0).contains(&z), "{d:#x} → {z:?}");
             assert_eq!(
-                depth::exact::nearest_code(z),
+                depth24::exact::nearest_code(z),
                 Some(d.min(DEPTH24_MAX)),
                 "{d:#x}"
             );
         },
     },
     Entry {
-        name: "depth::unpack4x8unorm",
+        name: "depth24::unpack4x8unorm",
         check: |i| {
             let p = i.u32();
-            let c = depth::unpack4x8unorm(p);
+            let c = depth24::unpack4x8unorm(p);
             for (x, b) in c.into_iter().zip(p.to_le_bytes()) {
                 assert!((0.0..=1.0).contains(&x), "{p:#x} → {c:?}");
                 assert_eq!((x * 255.0).round() as u8, b, "{p:#x} → {c:?}");
@@ -143,22 +143,22 @@ pub const DECODERS: &[Entry] = &[
 /// Encoders: any bit patterns in, no panic, the documented output.
 pub const ENCODERS: &[Entry] = &[
     Entry {
-        name: "depth::pack_depth24",
+        name: "depth24::pack_depth24",
         check: |i| {
             let d = i.u32();
-            let p = depth::pack_depth24(d);
+            let p = depth24::pack_depth24(d);
             let code = d.min(DEPTH24_MAX);
             assert_eq!(p >> 24, 0, "{d:#x}: alpha byte must be 0");
-            assert_eq!(depth::depth24_from_packed(p), code, "{d:#x}");
-            let [r, g, b, _] = depth::unpack4x8unorm(p);
-            assert_eq!(depth::depth24_from_rgb8(Vec3::new(r, g, b)), code, "{d:#x}");
+            assert_eq!(depth24::depth24_from_packed(p), code, "{d:#x}");
+            let [r, g, b, _] = depth24::unpack4x8unorm(p);
+            assert_eq!(depth24::depth24_from_rgb8(Vec3::new(r, g, b)), code, "{d:#x}");
         },
     },
     Entry {
-        name: "depth::exact::nearest_code",
+        name: "depth24::exact::nearest_code",
         check: |i| {
             let x = i.f32();
-            match depth::exact::nearest_code(x) {
+            match depth24::exact::nearest_code(x) {
                 None => assert!(!(0.0..=1.0).contains(&x), "{x:?} has a code"),
                 Some(c) => {
                     assert!(
@@ -173,10 +173,10 @@ pub const ENCODERS: &[Entry] = &[
         },
     },
     Entry {
-        name: "depth::exact::hyperbolic_depth",
+        name: "depth24::exact::hyperbolic_depth",
         check: |i| {
             let d = i.u32();
-            let z = depth::exact::hyperbolic_depth(d);
+            let z = depth24::exact::hyperbolic_depth(d);
             assert!((0.0..=1.0).contains(&z), "{d:#x} → {z:?}");
         },
     },
@@ -194,17 +194,17 @@ fn distance_ok(got: f32, exact: f64, bound: f64) -> bool {
 /// Rust twins against their exact references, within the documented bound.
 pub const DIFFERENTIAL: &[Entry] = &[
     Entry {
-        name: "depth::hyperbolic_depth_from_depth24 vs exact::hyperbolic_depth",
+        name: "depth24::hyperbolic_depth_from_depth24 vs exact::hyperbolic_depth",
         check: |i| {
             let d = i.u32();
-            let got = depth::hyperbolic_depth_from_depth24(d);
-            let err = ulp_error(got, depth::exact::hyperbolic_depth(d));
+            let got = depth24::hyperbolic_depth_from_depth24(d);
+            let err = ulp_error(got, depth24::exact::hyperbolic_depth(d));
             // Documented: correctly rounded, ≤ 0.5 ULP.
             assert!(err <= 0.5, "{d:#x} → {got:?}: {err} ULP");
         },
     },
     Entry {
-        name: "depth::depth24_from_rgb8 within ±0.49/255 vs exact code",
+        name: "depth24::depth24_from_rgb8 within ±0.49/255 vs exact code",
         check: |i| {
             let code = i.u32() & DEPTH24_MAX;
             // Each channel moved by up to ±0.49 of a byte step (a signed byte scaled to ±0.49):
@@ -214,7 +214,7 @@ pub const DIFFERENTIAL: &[Entry] = &[
                 let off = f64::from(i.u8() as i8) / 128.0 * 0.49;
                 ((f64::from(b) + off) / 255.0) as f32
             });
-            let got = depth::depth24_from_rgb8(Vec3::from(rgb));
+            let got = depth24::depth24_from_rgb8(Vec3::from(rgb));
             assert_eq!(got, code, "{rgb:?}");
         },
     },

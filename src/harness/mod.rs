@@ -10,7 +10,7 @@
 //! use prepass::harness::{Arg, Gpu};
 //! let gpu = Gpu::new()?; // fails with the fix in its message when no adapter exists
 //! println!("adapter: {}", gpu.describe());
-//! let kernel = gpu.kernel(prepass::wgsl::DEPTH, "hyperbolic_depth_from_depth24")?;
+//! let kernel = gpu.kernel(prepass::wgsl::DEPTH24, "hyperbolic_depth_from_depth24")?;
 //! let out = kernel.run(&[Arg::Index { start: 0 }], 1 << 24)?; // every 24-bit code
 //! assert_eq!(out.as_f32()[(1 << 24) - 1], 1.0);
 //! # Ok::<(), prepass::harness::HarnessError>(())

@@ -120,7 +120,7 @@ pub fn decode_normal_hemioct24(p: u32) -> Vec3 {
 
 /// Render-target form of [`encode_normal_hemioct24`]: rgba8unorm channels (`byte/255`).
 pub fn encode_normal_hemioct24_unorm(n: Vec3) -> [f32; 4] {
-    crate::depth::unpack4x8unorm(encode_normal_hemioct24(n))
+    crate::depth24::unpack4x8unorm(encode_normal_hemioct24(n))
 }
 
 /// Decode sampled rgba8unorm channels (bytes rounded back; NaN → 0; clamped).

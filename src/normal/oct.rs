@@ -146,7 +146,7 @@ macro_rules! oct_size {
         }
         #[doc = concat!("Render-target form of the precise encoder, ", $what, ": the unorm8 channels `byte/255` of the code's bytes.")]
         pub fn $enc_unorm(n: Vec3) -> [f32; 4] {
-            crate::depth::unpack4x8unorm($enc(n))
+            crate::depth24::unpack4x8unorm($enc(n))
         }
         #[doc = concat!("Decode sampled unorm8 channels, ", $what, ": bytes rounded back (`round(255·clamp(c, 0, 1))`, NaN → 0), so exact within ±0.49/255 per channel.")]
         pub fn $dec_unorm(c: [f32; 4]) -> Vec3 {

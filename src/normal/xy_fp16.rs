@@ -75,7 +75,7 @@ pub fn decode_normal_xy_fp16(p: u32) -> Vec3 {
 /// Render-target form of [`encode_normal_xy_fp16`]: the four rgba8unorm channels holding the
 /// two halves' bytes (`byte/255`).
 pub fn encode_normal_xy_fp16_unorm(n: Vec3) -> [f32; 4] {
-    crate::depth::unpack4x8unorm(encode_normal_xy_fp16(n))
+    crate::depth24::unpack4x8unorm(encode_normal_xy_fp16(n))
 }
 
 /// Decode sampled rgba8unorm channels: bytes rounded back (`round(255·clamp(c, 0, 1))`, NaN →

@@ -39,7 +39,7 @@ pub fn decode_normal_xyz8(p: u32) -> Vec3 {
 
 /// Render-target form of [`encode_normal_xyz8`]: the rgba8unorm channels (`byte/255`, alpha 0).
 pub fn encode_normal_xyz8_unorm(n: Vec3) -> [f32; 4] {
-    crate::depth::unpack4x8unorm(encode_normal_xyz8(n))
+    crate::depth24::unpack4x8unorm(encode_normal_xyz8(n))
 }
 
 /// Decode sampled rgba8unorm channels: each channel clamped to `[0, 1]` (NaN counts as 0),

@@ -1,7 +1,7 @@
 //! Adversarial inputs for the crate's sweeps, reusable by downstream suites.
 
 use super::metrics::step_ulps;
-use crate::depth::DEPTH24_MAX;
+use crate::depth24::DEPTH24_MAX;
 
 /// How far a sampled unorm8 channel sits from the exact `byte/255`.
 #[derive(Clone, Copy, Debug, PartialEq)]

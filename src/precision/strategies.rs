@@ -9,7 +9,7 @@
 //! Adding a module's inputs: add a function returning `impl Strategy<Value = …>` here, built the
 //! same way (broad arm + adversarial arms), and list it in the README's precision section.
 
-use crate::depth::DEPTH24_MAX;
+use crate::depth24::DEPTH24_MAX;
 use glam::Vec3;
 use proptest::prelude::*;
 use proptest::sample::select;

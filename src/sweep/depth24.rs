@@ -1,6 +1,6 @@
-//! Exhaustive sweeps over all 2^24 depth codes for the functions of `wgsl/depth.wgsl`.
+//! Exhaustive sweeps over all 2^24 depth codes for the functions of `wgsl/depth24.wgsl`.
 
-use crate::depth::{DEPTH24_MAX, exact};
+use crate::depth24::{DEPTH24_MAX, exact};
 use crate::harness::{Arg, Gpu, HarnessError};
 use crate::precision::inputs::{ChannelError, all_codes_rgb8};
 use crate::precision::metrics::{ErrorStats, Mismatches, ulp_error};

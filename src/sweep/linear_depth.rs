@@ -1,7 +1,7 @@
 //! Linear-depth sweeps over the stiff grid: every 24-bit code, and 2^24 float depths spread in
 //! ULP space, measured against the exact f64 references of [`crate::linear_depth::exact`].
 
-use crate::depth::DEPTH24_MAX;
+use crate::depth24::DEPTH24_MAX;
 use crate::harness::{Arg, Gpu, HarnessError};
 use crate::precision::metrics::{ErrorStats, ulp_distance, ulp_error};
 use crate::projection::{DepthConvention, Projection};

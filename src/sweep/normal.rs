@@ -824,7 +824,7 @@ pub fn unorm_forms(
         .map(|v| (codec.twin_encode)(Vec3::from(*v)))
         .collect();
     f.encode = Mismatches::count(&channels, |k| {
-        crate::depth::unpack4x8unorm(codes[k / lanes])[k % lanes].to_bits()
+        crate::depth24::unpack4x8unorm(codes[k / lanes])[k % lanes].to_bits()
     });
     let want = gpu
         .kernel(codec.source, codec.decode)?

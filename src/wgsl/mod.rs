@@ -23,8 +23,8 @@ pub struct WgslFile {
     pub source: &'static str,
 }
 
-/// `wgsl/depth.wgsl`: 24-bit depth codes in RGBA8 texels (twin: [`crate::depth`]).
-pub const DEPTH: &str = include_str!("../../wgsl/depth.wgsl");
+/// `wgsl/depth24.wgsl`: 24-bit depth codes in RGBA8 texels (twin: [`crate::depth24`]).
+pub const DEPTH24: &str = include_str!("../../wgsl/depth24.wgsl");
 
 /// `wgsl/linear_depth.wgsl`: view distance from depth (twin: [`crate::linear_depth`]).
 pub const LINEAR_DEPTH: &str = include_str!("../../wgsl/linear_depth.wgsl");
@@ -66,8 +66,8 @@ pub const FILES: &[WgslFile] = &[
         source: AGGREGATE_LIGHTS,
     },
     WgslFile {
-        name: "depth.wgsl",
-        source: DEPTH,
+        name: "depth24.wgsl",
+        source: DEPTH24,
     },
     WgslFile {
         name: "light_volumes.wgsl",

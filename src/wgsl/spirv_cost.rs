@@ -58,7 +58,7 @@ struct Body {
 /// the module docs say: its own body plus the bodies of all the functions it calls.
 ///
 /// ```
-/// let cost = prepass::wgsl::spirv_instruction_count(prepass::wgsl::DEPTH, "pack_depth24")?;
+/// let cost = prepass::wgsl::spirv_instruction_count(prepass::wgsl::DEPTH24, "pack_depth24")?;
 /// assert!(cost.total > 0 && cost.callees.is_empty());
 /// # Ok::<(), prepass::wgsl::WgslError>(())
 /// ```

@@ -1,6 +1,6 @@
 // Test baselines for the 24-bit depth functions (not public API): the forms Mark Lee's
 // "Pre-lighting in Resistance 2" (Insomniac Games, GDC 2009) warns
-// about, measured beside wgsl/depth.wgsl's.
+// about, measured beside wgsl/depth24.wgsl's.
 
 // Resistance 2's first attempt: weight the unrounded channels and round only the total.
 fn baseline_depth24_from_rgb8_unrounded(rgb: vec3<f32>) -> u32 {

@@ -1,6 +1,6 @@
 // Composed by prepass::scene from the shipped WGSL files.
 
-// ---- from wgsl/depth.wgsl ----
+// ---- from wgsl/depth24.wgsl ----
 
 // Recover a 24-bit code from the unorm channels a sampler returns. Each channel is rounded back
 // to its byte before the bytes are weighted: unrounded, the 65536 weight on r magnifies the
@@ -24,6 +24,7 @@ fn pack_depth24(d: u32) -> u32 {
 
 // ---- from wgsl/linear_depth.wgsl ----
 
+// +inf, built from bits.
 fn ld_positive_inf() -> f32 {
     return bitcast<f32>(0x7f800000u);
 }

@@ -311,14 +311,17 @@ fn lpp_clamp_colour(c: vec3<f32>) -> vec3<f32> {
 
 // ---- from wgsl/linear_depth.wgsl ----
 
+// Whether x is NaN, from its bits (WGSL may assume no NaN in float comparisons).
 fn ld_is_nan(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7fffffffu) > 0x7f800000u;
 }
 
+// +inf, built from bits.
 fn ld_positive_inf() -> f32 {
     return bitcast<f32>(0x7f800000u);
 }
 
+// A quiet NaN, built from bits.
 fn ld_nan() -> f32 {
     return bitcast<f32>(0x7fc00000u);
 }

@@ -1,9 +1,9 @@
-//! 24-bit depth codes in RGBA8 texels (`wgsl/depth.wgsl`): recovery from sampled channels and
+//! 24-bit depth codes in RGBA8 texels (`wgsl/depth24.wgsl`): recovery from sampled channels and
 //! the hyperbolic depth of every code, against the textbook baselines.
 
 use crate::cost::{TimedArg, Variant, Wgsl, twin_timer};
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
-use prepass::depth::{self, DEPTH24_MAX};
+use prepass::depth24::{self, DEPTH24_MAX};
 use prepass::precision::inputs::{ChannelError, rgb8_channels};
 use prepass::precision::metrics::ErrorStats;
 use prepass::sweep::depth24::{
@@ -18,7 +18,7 @@ const BASELINES: &str = include_str!("../../../tests/baselines/depth24.wgsl");
 const TILE: u32 = 1 << 16;
 
 fn source() -> String {
-    format!("{}\n{BASELINES}", prepass::wgsl::DEPTH)
+    format!("{}\n{BASELINES}", prepass::wgsl::DEPTH24)
 }
 
 /// Perturbed channels of `TILE` codes spread over the whole range, as timing input.
@@ -109,7 +109,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
                         )
                     })
                     .collect();
-                twin_timer(inputs, depth::depth24_from_rgb8)
+                twin_timer(inputs, depth24::depth24_from_rgb8)
             }),
         });
     }
@@ -146,7 +146,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     };
     let twin = measure_hyperbolic(
         (0..=DEPTH24_MAX)
-            .map(depth::hyperbolic_depth_from_depth24)
+            .map(depth24::hyperbolic_depth_from_depth24)
             .collect(),
     );
     row(
@@ -178,7 +178,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             name: f.into(),
             bits: 24,
             // Without an adapter the crate's function still has its twin's exhaustive CPU
-            // measurement (the twin is bit-identical to the WGSL: tests/depth_recovery.rs).
+            // measurement (the twin is bit-identical to the WGSL: tests/depth24.rs).
             error: h
                 .as_ref()
                 .map(|h| h.ulps)
@@ -197,7 +197,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
                 let codes: Vec<u32> = (0..TILE)
                     .map(|k| k.wrapping_mul(0x9e37_79b1) & DEPTH24_MAX)
                     .collect();
-                twin_timer(codes, depth::hyperbolic_depth_from_depth24)
+                twin_timer(codes, depth24::hyperbolic_depth_from_depth24)
             }),
         });
     }

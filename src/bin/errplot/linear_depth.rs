@@ -5,7 +5,7 @@
 use crate::cost::{TimedArg, Variant, Wgsl, twin_timer};
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
 use crate::plot::{Chart, LineChart, Series};
-use prepass::depth::DEPTH24_MAX;
+use prepass::depth24::DEPTH24_MAX;
 use prepass::harness::Arg;
 use prepass::linear_depth as ld;
 use prepass::precision::metrics::{ErrorStats, relative_error};

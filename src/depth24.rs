@@ -1,4 +1,4 @@
-//! 24-bit depth codes stored in RGBA8 texels — the Rust twins of `wgsl/depth.wgsl`.
+//! 24-bit depth codes stored in RGBA8 texels — the Rust twins of `wgsl/depth24.wgsl`.
 //!
 //! Resistance 2 aliased an ARGB8 texture onto its D24 depth buffer and rebuilt the code as
 //! `r·65536 + g·256 + b` (Mark Lee, "Pre-lighting in Resistance 2", Insomniac Games, GDC 2009:
@@ -6,7 +6,7 @@
 //! `[0, 1]` that is only *near* `byte/255` (WGSL allows `unpack4x8unorm` 3 ULP; older texture
 //! units were worse), and the weights 65536 and 256 magnify that error into wrong codes. Rounding
 //! each channel back to its byte first removes it: every function here is exact over all 2^24
-//! codes, which `tests/depth_recovery.rs` checks exhaustively on the adapter.
+//! codes, which `tests/depth24.rs` checks exhaustively on the adapter.
 //!
 //! Byte order follows Lee's slides: `r` (byte 0, the low byte of the packed `u32` that an RGBA8
 //! target stores) holds the most significant byte of the code, `b` (byte 2) the least; byte 3

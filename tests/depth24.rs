@@ -1,30 +1,30 @@
-//! `wgsl/depth.wgsl` on the adapter, exhaustively over all 2^24 codes, against exact references
-//! and against its Rust twin `src/depth.rs`.
+//! `wgsl/depth24.wgsl` on the adapter, exhaustively over all 2^24 codes, against exact references
+//! and against its Rust twin `src/depth24.rs`.
 
 mod common;
 
 use common::gpu;
 use glam::Vec3;
-use prepass::depth::{self, DEPTH24_MAX};
+use prepass::depth24::{self, DEPTH24_MAX};
 use prepass::harness::Arg;
 use prepass::precision::inputs::{ChannelError, all_codes_rgb8};
 use prepass::precision::metrics::Mismatches;
 use prepass::sweep::depth24::{
     CODES, RECOVERY_CASES, hyperbolic_all, measure_hyperbolic, recover_all,
 };
-use prepass::wgsl::DEPTH;
+use prepass::wgsl::DEPTH24;
 
 const BASELINES: &str = include_str!("baselines/depth24.wgsl");
 
 fn with_baselines() -> String {
-    format!("{DEPTH}\n{BASELINES}")
+    format!("{DEPTH24}\n{BASELINES}")
 }
 
 /// Recovery with per-channel rounding returns every code exactly under each channel error, and
 /// the Rust twin returns the same codes from the same channels.
 fn recovery_case(case: usize) {
     let (error, flip) = RECOVERY_CASES[case];
-    let r = recover_all(gpu(), DEPTH, "depth24_from_rgb8", error, flip).unwrap();
+    let r = recover_all(gpu(), DEPTH24, "depth24_from_rgb8", error, flip).unwrap();
     // Bound: 0 mismatches. Each channel is within 0.45/255 (or 3 ULP ≈ 1e-7) of byte/255, so
     // 255·c is within 0.45 + 2^-16 of the byte and round() cannot pick a neighbour.
     assert_eq!(
@@ -33,7 +33,7 @@ fn recovery_case(case: usize) {
         r.mismatches.first
     );
     let rgb = all_codes_rgb8(error, flip);
-    let twin = Mismatches::count(&r.codes, |i| depth::depth24_from_rgb8(Vec3::from(rgb[i])));
+    let twin = Mismatches::count(&r.codes, |i| depth24::depth24_from_rgb8(Vec3::from(rgb[i])));
     assert_eq!(twin.count, 0, "Rust twin differs: {:?}", twin.first);
 }
 
@@ -87,12 +87,12 @@ fn unrounded_baseline_reproduces_the_talks_problem() {
 fn packed_paths_are_exact_and_match_the_twin_for_every_code() {
     let g = gpu();
     let packed = g
-        .kernel(DEPTH, "pack_depth24")
+        .kernel(DEPTH24, "pack_depth24")
         .unwrap()
         .run(&[Arg::Index { start: 0 }], CODES)
         .unwrap()
         .into_words();
-    let twin = Mismatches::count(&packed, |d| depth::pack_depth24(d as u32));
+    let twin = Mismatches::count(&packed, |d| depth24::pack_depth24(d as u32));
     assert_eq!(twin.count, 0, "pack_depth24 twin differs: {:?}", twin.first);
     assert!(
         packed.iter().all(|p| p >> 24 == 0),
@@ -106,19 +106,19 @@ fn packed_paths_are_exact_and_match_the_twin_for_every_code() {
         .map(|(d, p)| p | ((d as u32).wrapping_mul(0x9e37_79b9) & 0xff00_0000))
         .collect();
     let codes = g
-        .kernel(DEPTH, "depth24_from_packed")
+        .kernel(DEPTH24, "depth24_from_packed")
         .unwrap()
         .run(&[Arg::column(&with_alpha)], CODES)
         .unwrap()
         .into_words();
     let m = Mismatches::count(&codes, |d| d as u32);
     assert_eq!(m.count, 0, "depth24_from_packed: {:?}", m.first);
-    let twin = Mismatches::count(&codes, |i| depth::depth24_from_packed(with_alpha[i]));
+    let twin = Mismatches::count(&codes, |i| depth24::depth24_from_packed(with_alpha[i]));
     assert_eq!(twin.count, 0);
 
     // The identity, through the adapter's own unpack4x8unorm.
     let src = format!(
-        "{DEPTH}\nfn roundtrip(d: u32) -> u32 {{ return depth24_from_rgb8(unpack4x8unorm(pack_depth24(d)).xyz); }}"
+        "{DEPTH24}\nfn roundtrip(d: u32) -> u32 {{ return depth24_from_rgb8(unpack4x8unorm(pack_depth24(d)).xyz); }}"
     );
     let back = g
         .kernel(&src, "roundtrip")
@@ -132,7 +132,7 @@ fn packed_paths_are_exact_and_match_the_twin_for_every_code() {
 
 #[test]
 fn hyperbolic_depth_is_correctly_rounded_for_every_code() {
-    let h = hyperbolic_all(gpu(), DEPTH, "hyperbolic_depth_from_depth24").unwrap();
+    let h = hyperbolic_all(gpu(), DEPTH24, "hyperbolic_depth_from_depth24").unwrap();
     // Bound: correctly rounded (≤ 0.5 ULP). The integer construction has no rounding step, so
     // anything above 0.5 is a bug, not an accuracy allowance.
     assert_eq!(h.ulps.nan_count, 0);
@@ -145,7 +145,7 @@ fn hyperbolic_depth_is_correctly_rounded_for_every_code() {
     assert_eq!(h.exact_roundtrip_failures, 0);
     assert_eq!(h.collisions, 0, "two codes share a float");
     let twin: Vec<f32> = (0..=DEPTH24_MAX)
-        .map(depth::hyperbolic_depth_from_depth24)
+        .map(depth24::hyperbolic_depth_from_depth24)
         .collect();
     let m = prepass::precision::metrics::bit_mismatches(&h.values, &twin);
     assert_eq!(m.count, 0, "Rust twin differs: {:?}", m.first);
@@ -218,7 +218,7 @@ fn bad_channels_give_the_documented_clamped_code_on_both_sides() {
         }
     }
     let out = gpu()
-        .kernel(DEPTH, "depth24_from_rgb8")
+        .kernel(DEPTH24, "depth24_from_rgb8")
         .unwrap()
         .run(&[Arg::column(&rgb)], rgb.len() as u64)
         .unwrap();
@@ -226,7 +226,7 @@ fn bad_channels_give_the_documented_clamped_code_on_both_sides() {
         let want = (byte(c[0]) << 16) | (byte(c[1]) << 8) | byte(c[2]);
         assert_eq!(got, want, "WGSL, input {i}: {c:?}");
         assert_eq!(
-            depth::depth24_from_rgb8(Vec3::from(*c)),
+            depth24::depth24_from_rgb8(Vec3::from(*c)),
             want,
             "Rust, input {c:?}"
         );
@@ -240,21 +240,21 @@ fn codes_above_24_bits_saturate_on_both_sides() {
     for start in [u32::MAX - 4095, DEPTH24_MAX + 1] {
         let idx = [Arg::Index { start }];
         let packed = g
-            .kernel(DEPTH, "pack_depth24")
+            .kernel(DEPTH24, "pack_depth24")
             .unwrap()
             .run(&idx, n)
             .unwrap();
         let hyper = g
-            .kernel(DEPTH, "hyperbolic_depth_from_depth24")
+            .kernel(DEPTH24, "hyperbolic_depth_from_depth24")
             .unwrap()
             .run(&idx, n)
             .unwrap();
         for i in 0..n as usize {
             let d = start.wrapping_add(i as u32);
             assert_eq!(packed.as_u32()[i], 0x00ff_ffff, "pack_depth24({d})");
-            assert_eq!(depth::pack_depth24(d), 0x00ff_ffff);
+            assert_eq!(depth24::pack_depth24(d), 0x00ff_ffff);
             assert_eq!(hyper.as_f32()[i], 1.0, "hyperbolic_depth_from_depth24({d})");
-            assert_eq!(depth::hyperbolic_depth_from_depth24(d), 1.0);
+            assert_eq!(depth24::hyperbolic_depth_from_depth24(d), 1.0);
         }
     }
 }
@@ -267,7 +267,7 @@ fn codes_above_24_bits_saturate_on_both_sides() {
 fn emulation_breaks_the_division_baseline_but_not_the_integer_construction() {
     use prepass::conforming::{Emulation, Policy, emulate};
     for policy in Policy::WORST {
-        let e = emulate(DEPTH, &Emulation::new(policy)).unwrap();
+        let e = emulate(DEPTH24, &Emulation::new(policy)).unwrap();
         let f = e.function_name("hyperbolic_depth_from_depth24").unwrap();
         let h = hyperbolic_all(gpu(), &e.source, f).unwrap();
         eprintln!(
