@@ -80,7 +80,7 @@ fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
         .unwrap();
     let (mut points, mut empty) = (0u64, 0u64);
     let (mut loose_u, mut loose_codes) = (0.0f64, 0.0f64);
-    let mut rng = prepass::sweep::lighting::SplitMix(3);
+    let mut rng = prepass::sweep::SplitMix(3);
     for (i, (b, c)) in bounds
         .as_vec2()
         .iter()

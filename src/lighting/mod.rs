@@ -2,10 +2,10 @@
 //!
 //! | module | WGSL | what |
 //! |---|---|---|
-//! | [`prepass`] | `wgsl/lighting.wgsl` | P per light (point, spot; Blinn-Phong, Phong), light-buffer layouts, C, Engel's specular reconstruction |
+//! | [`lpp`] | `wgsl/lpp.wgsl` | P per light (point, spot; Blinn-Phong, Phong), light-buffer layouts, C, Engel's specular reconstruction |
 //! | [`aggregate`] | `wgsl/aggregate_lights.wgsl` | God of War III aggregate vertex lights |
 //! | [`volumes`] | `wgsl/light_volumes.wgsl` | depth-pass/depth-fail choice for sphere and cone volumes, depth bounds |
 
 pub mod aggregate;
-pub mod prepass;
+pub mod lpp;
 pub mod volumes;

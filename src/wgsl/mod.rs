@@ -35,9 +35,9 @@ pub const POSITION: &str = include_str!("../../wgsl/position.wgsl");
 /// `wgsl/roughness.wgsl`: specular exponent in log range (twin: [`crate::roughness`]).
 pub const ROUGHNESS: &str = include_str!("../../wgsl/roughness.wgsl");
 
-/// `wgsl/lighting.wgsl`: light pre-pass P/C, Engel's reconstruction (twin:
-/// [`crate::lighting::prepass`]).
-pub const LIGHTING: &str = include_str!("../../wgsl/lighting.wgsl");
+/// `wgsl/lpp.wgsl`: light pre-pass P/C, Engel's reconstruction (twin:
+/// [`crate::lighting::lpp`]).
+pub const LPP: &str = include_str!("../../wgsl/lpp.wgsl");
 
 /// `wgsl/aggregate_lights.wgsl`: aggregate vertex lights (twin: [`crate::lighting::aggregate`]).
 pub const AGGREGATE_LIGHTS: &str = include_str!("../../wgsl/aggregate_lights.wgsl");
@@ -74,12 +74,12 @@ pub const FILES: &[WgslFile] = &[
         source: LIGHT_VOLUMES,
     },
     WgslFile {
-        name: "lighting.wgsl",
-        source: LIGHTING,
-    },
-    WgslFile {
         name: "linear_depth.wgsl",
         source: LINEAR_DEPTH,
+    },
+    WgslFile {
+        name: "lpp.wgsl",
+        source: LPP,
     },
     WgslFile {
         name: "normal_hemioct.wgsl",

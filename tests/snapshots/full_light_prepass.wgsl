@@ -137,7 +137,43 @@ fn light_volume_sphere_depth_bounds(center_z: f32, radius: f32, near: f32, far: 
     return vec2<f32>(clamp(z_lo - eps, 0.0, 1.0), clamp(z_hi + eps, 0.0, 1.0));
 }
 
-// ---- from wgsl/lighting.wgsl ----
+// ---- from wgsl/linear_depth.wgsl ----
+
+// Whether x is NaN, from its bits (WGSL may assume no NaN in float comparisons).
+fn ld_is_nan(x: f32) -> bool {
+    return (bitcast<u32>(x) & 0x7fffffffu) > 0x7f800000u;
+}
+
+// +inf, built from bits.
+fn ld_positive_inf() -> f32 {
+    return bitcast<f32>(0x7f800000u);
+}
+
+// A quiet NaN, built from bits.
+fn ld_nan() -> f32 {
+    return bitcast<f32>(0x7fc00000u);
+}
+
+// numerator / s, with s == 0 (the far plane of an infinite projection) giving +inf.
+fn ld_divide_or_inf(numerator: f32, s: f32) -> f32 {
+    if (s == 0.0) {
+        return ld_positive_inf();
+    }
+    return numerator / s;
+}
+
+// View distance of a float reversed-convention depth, from per-projection constants
+// k = (n, (f - n)/f, n/f) (Projection::reversed_depth_consts).
+fn view_z_from_reversed_depth_consts(z: f32, k: vec3<f32>) -> f32 {
+    if (ld_is_nan(z)) {
+        return ld_nan();
+    }
+    let zc = clamp(z, 0.0, 1.0);
+    let s = zc * k.y + k.z;
+    return ld_divide_or_inf(k.x, s);
+}
+
+// ---- from wgsl/lpp.wgsl ----
 
 const LPP_LUMINANCE = vec3<f32>(0.2126, 0.7152, 0.0722);
 
@@ -307,42 +343,6 @@ fn lpp_combine(albedo: vec3<f32>, gloss: vec3<f32>, light: vec4<f32>, material_p
 fn lpp_clamp_colour(c: vec3<f32>) -> vec3<f32> {
     let nan = (bitcast<vec3<u32>>(c) & vec3<u32>(0x7fffffffu)) > vec3<u32>(0x7f800000u);
     return clamp(select(c, vec3<f32>(0.0), nan), vec3<f32>(0.0), vec3<f32>(LPP_COLOUR_MAX));
-}
-
-// ---- from wgsl/linear_depth.wgsl ----
-
-// Whether x is NaN, from its bits (WGSL may assume no NaN in float comparisons).
-fn ld_is_nan(x: f32) -> bool {
-    return (bitcast<u32>(x) & 0x7fffffffu) > 0x7f800000u;
-}
-
-// +inf, built from bits.
-fn ld_positive_inf() -> f32 {
-    return bitcast<f32>(0x7f800000u);
-}
-
-// A quiet NaN, built from bits.
-fn ld_nan() -> f32 {
-    return bitcast<f32>(0x7fc00000u);
-}
-
-// numerator / s, with s == 0 (the far plane of an infinite projection) giving +inf.
-fn ld_divide_or_inf(numerator: f32, s: f32) -> f32 {
-    if (s == 0.0) {
-        return ld_positive_inf();
-    }
-    return numerator / s;
-}
-
-// View distance of a float reversed-convention depth, from per-projection constants
-// k = (n, (f - n)/f, n/f) (Projection::reversed_depth_consts).
-fn view_z_from_reversed_depth_consts(z: f32, k: vec3<f32>) -> f32 {
-    if (ld_is_nan(z)) {
-        return ld_nan();
-    }
-    let zc = clamp(z, 0.0, 1.0);
-    let s = zc * k.y + k.z;
-    return ld_divide_or_inf(k.x, s);
 }
 
 // ---- from wgsl/normal_oct.wgsl ----

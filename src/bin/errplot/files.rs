@@ -52,7 +52,7 @@ pub const CSV_FILES: &[(&str, &str, &str)] = &[
          power in the bin)",
     ),
     (
-        "lighting_reconstruction.csv",
+        "lpp_reconstruction.csv",
         "one light count of the light pre-pass specular reconstruction",
         "lights, pixels, max_relative, mean_relative, rms_relative (against the exact per-light \
          Blinn-Phong sum), max_abs_over_diffuse (absolute error in units of the pixel's diffuse \

@@ -23,8 +23,8 @@ mod ctx;
 mod depth24;
 mod depth_resolution;
 mod files;
-mod lighting;
 mod linear_depth;
+mod lpp;
 mod normal;
 mod plot;
 mod roughness;
@@ -45,7 +45,7 @@ const SECTIONS: &[(&str, Section)] = &[
     ("24-bit depth", depth24::section),
     ("normal encodings", normal::section),
     ("roughness", roughness::section),
-    ("lighting", lighting::section),
+    ("light pre-pass (lpp)", lpp::section),
     ("error against run time", cost::section),
     ("files", files::section),
 ];

@@ -1,16 +1,16 @@
-//! `wgsl/lighting.wgsl` on the adapter: the light pre-pass P/C and Engel's specular
+//! `wgsl/lpp.wgsl` on the adapter: the light pre-pass P/C and Engel's specular
 //! reconstruction against Blinn-Phong, the many-lights approximation measured, bad input.
-//! Twins: `src/lighting/prepass.rs`.
+//! Twins: `src/lighting/lpp.rs`.
 
 mod common;
 
 use common::gpu;
 use glam::{Vec3, Vec4};
 use prepass::harness::Arg;
-use prepass::lighting::prepass as lpp;
+use prepass::lighting::lpp;
 use prepass::precision::metrics::ulp_distance;
-use prepass::sweep::lighting::{SplitMix, multi_light_reconstruction};
-use prepass::wgsl::LIGHTING;
+use prepass::sweep::{SplitMix, lpp::multi_light_reconstruction};
+use prepass::wgsl::LPP;
 
 const U: f64 = 1.0 / 16_777_216.0; // 2^-24
 
@@ -33,7 +33,7 @@ fn pow_bound(x: f64, y: f64) -> f64 {
 #[test]
 fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
     let src = format!(
-        "{LIGHTING}\nfn single(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, p: vec3<f32>) -> vec2<f32> {{\n\
+        "{LPP}\nfn single(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, p: vec3<f32>) -> vec2<f32> {{\n\
          let light = lpp_blinn_phong_light(normal, to_eye, to_light, vec3<f32>(1.0), p.x, p.y);\n\
          let direct = lpp_blinn_phong_light(normal, to_eye, to_light, vec3<f32>(1.0), p.x, p.y * p.z).w;\n\
          return vec2<f32>(lpp_reconstruct_specular(light, p.z), direct);\n}}"
@@ -75,7 +75,7 @@ fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
     for (i, v) in out.as_vec2().iter().enumerate() {
         let (rec, dir) = (f64::from(v[0]), f64::from(v[1]));
         assert!(v[0].is_finite() && v[1].is_finite(), "input {i}");
-        let (nl, nh) = lpp::exact::cosines(
+        let (nl, nh) = lpp::exact::lpp_cosines(
             normals[i].map(f64::from),
             eyes[i].map(f64::from),
             lights[i].map(f64::from),
@@ -228,16 +228,16 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
     ];
     for f in ["lpp_blinn_phong_light", "lpp_phong_light"] {
         let out = gpu()
-            .kernel(LIGHTING, f)
+            .kernel(LPP, f)
             .unwrap()
             .run(&args, rows as u64)
             .unwrap();
         for (i, v) in out.as_vec4().iter().enumerate() {
             assert!(v.iter().all(|x| x.is_finite()), "{f} row {i}: {v:?}");
             let twin = if f == "lpp_phong_light" {
-                lpp::phong_light
+                lpp::lpp_phong_light
             } else {
-                lpp::blinn_phong_light
+                lpp::lpp_blinn_phong_light
             }(
                 Vec3::from(normal[i]),
                 Vec3::from(eye[i]),
@@ -270,7 +270,7 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
             // c^y = a/lum(rgb) (y the clamped power), plus 64u for the rest; an absolute 1e-30
             // covers the 2^-126 cutoff (lum ≤ 65504²).
             let y = f64::from(power[i].clamp(0.0, 65504.0));
-            let lum_rgb = f64::from(lpp::luminance(twin.truncate()));
+            let lum_rgb = f64::from(lpp::lpp_luminance(twin.truncate()));
             let cy = if lum_rgb > 0.0 {
                 f64::from(twin.w) / lum_rgb
             } else {
@@ -305,7 +305,7 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
         }
     }
     let out = gpu()
-        .kernel(LIGHTING, "lpp_reconstruct_specular")
+        .kernel(LPP, "lpp_reconstruct_specular")
         .unwrap()
         .run(
             &[Arg::column(&texels), Arg::column(&mats)],
@@ -314,9 +314,9 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
         .unwrap();
     for (i, &v) in out.as_f32().iter().enumerate() {
         let t = texels[i];
-        let twin = lpp::reconstruct_specular(Vec4::from(t), mats[i]);
+        let twin = lpp::lpp_reconstruct_specular(Vec4::from(t), mats[i]);
         assert!(v.is_finite() && v >= 0.0, "texel {t:?} m {}: {v}", mats[i]);
-        let lum = lpp::luminance(Vec3::new(t[0], t[1], t[2]).max(Vec3::ZERO));
+        let lum = lpp::lpp_luminance(Vec3::new(t[0], t[1], t[2]).max(Vec3::ZERO));
         if lum.is_finite() {
             // Never above lum(rgb): the ratio is clamped before the exponent.
             assert!(
@@ -342,7 +342,7 @@ fn two_buffer_layout_and_combination_agree_with_the_one_buffer_layout() {
     let eyes: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.1)).collect();
     let lights: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.1)).collect();
     let src = format!(
-        "{LIGHTING}\nfn both(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>) -> vec4<f32> {{\n\
+        "{LPP}\nfn both(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>) -> vec4<f32> {{\n\
          let c = vec3<f32>(1.0, 0.8, 0.6); let albedo = vec3<f32>(0.5, 0.4, 0.3); let gloss = vec3<f32>(0.9);\n\
          let one = lpp_combine(albedo, gloss, lpp_blinn_phong_light(normal, to_eye, to_light, c, 0.7, 16.0), 1.0);\n\
          let spec = lpp_blinn_phong_specular_rgb(normal, to_eye, to_light, c, 0.7, 16.0);\n\
@@ -418,7 +418,7 @@ fn point_and_spot_lights_match_their_twins_and_stay_finite() {
     }
     let g = gpu();
     let point = g
-        .kernel(LIGHTING, "lpp_point_light")
+        .kernel(LPP, "lpp_point_light")
         .unwrap()
         .run(
             &[
@@ -432,7 +432,7 @@ fn point_and_spot_lights_match_their_twins_and_stay_finite() {
         )
         .unwrap();
     let spot = g
-        .kernel(LIGHTING, "lpp_spot_light")
+        .kernel(LPP, "lpp_spot_light")
         .unwrap()
         .run(
             &[
@@ -455,8 +455,8 @@ fn point_and_spot_lights_match_their_twins_and_stay_finite() {
             Vec3::from(to_light[i]),
         );
         let cr = Vec4::from(colour_radius[i]);
-        let tp = lpp::point_light(nv, ev, lv, cr, power[i]);
-        let ts = lpp::spot_light(nv, ev, lv, cr, Vec4::from(axis[i]), inner[i], power[i]);
+        let tp = lpp::lpp_point_light(nv, ev, lv, cr, power[i]);
+        let ts = lpp::lpp_spot_light(nv, ev, lv, cr, Vec4::from(axis[i]), inner[i], power[i]);
         for (got, twin) in [(point.as_vec4()[i], tp), (spot.as_vec4()[i], ts)] {
             assert!(got.iter().all(|x| x.is_finite()), "row {i}: {got:?}");
             // Same formulas; the attenuations are smooth in their inputs except at the spot's

@@ -1,8 +1,8 @@
-//! Light pre-pass specular reconstruction (`wgsl/lighting.wgsl`): Engel's `N·H^n` recovered
+//! Light pre-pass specular reconstruction (`wgsl/lpp.wgsl`): Engel's `N·H^n` recovered
 //! from the light buffer is exact for one light and an approximation for several; measured.
 
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
-use prepass::sweep::lighting::multi_light_reconstruction;
+use prepass::sweep::lpp::multi_light_reconstruction;
 use std::fmt::Write as _;
 
 /// Light counts measured.
@@ -31,7 +31,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
          lights: P (`lpp_blinn_phong_light`) on the adapter per light, summed in f32 as additive \
          blending does, then `lpp_reconstruct_specular` against the exact sum of per-light \
          Blinn-Phong terms with exponent n·m (f64). The reconstruction is exact for one light and \
-         an approximation for more. Data: `lighting_reconstruction.csv`."
+         an approximation for more. Data: `lpp_reconstruction.csv`."
     ));
     ctx.line("");
     ctx.line("| lights | max relative error | mean | RMS | max abs error / diffuse luminance | non-finite |");
@@ -60,5 +60,5 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         );
     }
     ctx.line("");
-    ctx.csv("lighting_reconstruction.csv", &csv)
+    ctx.csv("lpp_reconstruction.csv", &csv)
 }

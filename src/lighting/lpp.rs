@@ -1,5 +1,5 @@
 //! The light pre-pass factorisation `result = C(mp, Σ P(l_i, gp))` and Engel's specular
-//! reconstruction — Rust twins of `wgsl/lighting.wgsl`. Sources: Mark Lee, "Pre-lighting in
+//! reconstruction — Rust twins of `wgsl/lpp.wgsl`. Sources: Mark Lee, "Pre-lighting in
 //! Resistance 2" (Insomniac Games, GDC 2009); Wolfgang Engel, "Light Pre-Pass: More Blood"
 //! (blog post, 28 September 2008), written up as "Designing a Renderer for Multiple Lights: The
 //! Light Pre-Pass Renderer" (ShaderX7, 2009).
@@ -12,7 +12,7 @@
 //! recovers the specular as `(a / lum(rgb))^m · lum(rgb)` — `N·H^n` divided back out by the
 //! luminance of the diffuse sum, the material exponent `m` on top of the light's `n`. For one
 //! white light this equals Blinn-Phong with exponent `n·m` (up to rounding, bounded in
-//! `tests/lighting_prepass.rs`); for several it is an approximation whose error the tests and
+//! `tests/lpp.rs`); for several it is an approximation whose error the tests and
 //! `errplot` measure.
 //!
 //! **Twins:** these use the same formulas in `f32`; they are not bit-identical to an adapter
@@ -26,24 +26,24 @@
 use glam::{Vec3, Vec4};
 
 /// Rec. 709 luminance weights used to turn the light buffer's diffuse rgb into `N·L·att`.
-pub const LUMINANCE: Vec3 = Vec3::new(0.2126, 0.7152, 0.0722);
+pub const LPP_LUMINANCE: Vec3 = Vec3::new(0.2126, 0.7152, 0.0722);
 /// Largest colour, attenuation-free power and exponent accepted (fp16 max).
-pub const COLOUR_MAX: f32 = 65504.0;
+pub const LPP_COLOUR_MAX: f32 = 65504.0;
 
-fn finite(x: f32) -> bool {
+fn lpp_finite(x: f32) -> bool {
     (x.to_bits() & 0x7fff_ffff) < 0x7f80_0000
 }
 
-fn finite3(v: Vec3) -> bool {
-    finite(v.x) && finite(v.y) && finite(v.z)
+fn lpp_finite3(v: Vec3) -> bool {
+    lpp_finite(v.x) && lpp_finite(v.y) && lpp_finite(v.z)
 }
 
 /// `v/|v|`, or zero when `v` is non-finite or its largest component is zero or subnormal.
 /// Scales by the largest component first so `|v|²` cannot overflow. Error ≈ 3 ULP per
 /// component on a conforming adapter (division 2.5 ULP, `inverseSqrt` 2 ULP, products).
-pub fn direction(v: Vec3) -> Vec3 {
+pub fn lpp_direction(v: Vec3) -> Vec3 {
     let m = v.abs().max_element();
-    if !finite3(v) || m.to_bits() < 0x0080_0000 {
+    if !lpp_finite3(v) || m.to_bits() < 0x0080_0000 {
         return Vec3::ZERO;
     }
     let s = v / m;
@@ -54,9 +54,9 @@ pub fn direction(v: Vec3) -> Vec3 {
 /// exact sum for non-negative channels, products and sums each correctly rounded or fused).
 ///
 /// **Bad input:** none is guarded: NaN and `±∞` propagate as IEEE arithmetic does and
-/// negative channels count (callers clamp colours with [`clamp_colour`] first).
-pub fn luminance(rgb: Vec3) -> f32 {
-    rgb.dot(LUMINANCE)
+/// negative channels count (callers clamp colours with [`lpp_clamp_colour`] first).
+pub fn lpp_luminance(rgb: Vec3) -> f32 {
+    rgb.dot(LPP_LUMINANCE)
 }
 
 /// `x^y` for a cosine `x` and exponent `y ≥ 0`, computed as `exp2(y·log2 x)`: 0 for `x ≤ 0`
@@ -65,7 +65,7 @@ pub fn luminance(rgb: Vec3) -> f32 {
 ///
 /// **Bad input:** `x` or `y` NaN → 0 (no highlight); `y ≤ 0` acts as 0 (1 for `x > 0`);
 /// `y = +∞` gives 0 for `x < 1`; `x = +∞` gives 1.
-pub fn pow_cosine(x: f32, y: f32) -> f32 {
+pub fn lpp_pow_cosine(x: f32, y: f32) -> f32 {
     if x.is_nan() || y.is_nan() || x <= 0.0 {
         return 0.0;
     }
@@ -78,8 +78,8 @@ pub fn pow_cosine(x: f32, y: f32) -> f32 {
 
 /// Windowed point-light falloff `(1 − (d/r)²)²`, 0 for `d ≥ r`. Bad input: NaN/Inf or `r ≤ 0`
 /// → 0; `d < 0` counts as 0.
-pub fn point_attenuation(distance: f32, radius: f32) -> f32 {
-    if !finite(distance) || !finite(radius) || radius.is_nan() || radius <= 0.0 {
+pub fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
+    if !lpp_finite(distance) || !lpp_finite(radius) || radius.is_nan() || radius <= 0.0 {
         return 0.0;
     }
     let x = (distance.max(0.0) / radius).clamp(0.0, 1.0);
@@ -89,8 +89,8 @@ pub fn point_attenuation(distance: f32, radius: f32) -> f32 {
 
 /// Spot cone factor: 0 below `cos_outer`, 1 above `cos_inner`, linear in the cosine between;
 /// `cos_inner ≤ cos_outer` gives a hard edge. NaN/Inf → 0.
-pub fn spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
-    if !finite(cos_angle) || !finite(cos_outer) || !finite(cos_inner) {
+pub fn lpp_spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
+    if !lpp_finite(cos_angle) || !lpp_finite(cos_outer) || !lpp_finite(cos_inner) {
         return 0.0;
     }
     if cos_inner <= cos_outer {
@@ -101,10 +101,10 @@ pub fn spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
 
 /// `(N·L, specular cosine)`: `N·H` (Blinn-Phong) or `R·V` (Phong), each clamped to `[0, 1]`;
 /// zeros for a bad `to_eye`, specular 0 when `N·L = 0`.
-pub fn cosines(normal: Vec3, to_eye: Vec3, to_light: Vec3, phong: bool) -> (f32, f32) {
-    let n = direction(normal);
-    let l = direction(to_light);
-    let v = direction(to_eye);
+pub fn lpp_cosines(normal: Vec3, to_eye: Vec3, to_light: Vec3, phong: bool) -> (f32, f32) {
+    let n = lpp_direction(normal);
+    let l = lpp_direction(to_light);
+    let v = lpp_direction(to_eye);
     let n_dot_l = n.dot(l).max(0.0);
     if v == Vec3::ZERO {
         return (0.0, 0.0);
@@ -116,12 +116,12 @@ pub fn cosines(normal: Vec3, to_eye: Vec3, to_light: Vec3, phong: bool) -> (f32,
         let r = 2.0 * n.dot(l) * n - l;
         r.dot(v)
     } else {
-        n.dot(direction(l + v))
+        n.dot(lpp_direction(l + v))
     };
     (n_dot_l, spec.clamp(0.0, 1.0))
 }
 
-fn light(
+fn lpp_light(
     normal: Vec3,
     to_eye: Vec3,
     to_light: Vec3,
@@ -130,19 +130,19 @@ fn light(
     power: f32,
     phong: bool,
 ) -> Vec4 {
-    if !finite3(colour) || !finite(attenuation) || !finite(power) {
+    if !lpp_finite3(colour) || !lpp_finite(attenuation) || !lpp_finite(power) {
         return Vec4::ZERO;
     }
-    let c = colour.clamp(Vec3::ZERO, Vec3::splat(COLOUR_MAX));
-    let (n_dot_l, s) = cosines(normal, to_eye, to_light, phong);
+    let c = colour.clamp(Vec3::ZERO, Vec3::splat(LPP_COLOUR_MAX));
+    let (n_dot_l, s) = lpp_cosines(normal, to_eye, to_light, phong);
     let d = n_dot_l * attenuation.clamp(0.0, 1.0);
-    let s = pow_cosine(s, power.clamp(0.0, COLOUR_MAX));
-    (d * c).extend(d * luminance(c) * s)
+    let s = lpp_pow_cosine(s, power.clamp(0.0, LPP_COLOUR_MAX));
+    (d * c).extend(d * lpp_luminance(c) * s)
 }
 
 /// P for the one-buffer layout with Blinn-Phong specular:
 /// `(N·L·att·colour, N·L·att·lum(colour)·(N·H)^power)`.
-pub fn blinn_phong_light(
+pub fn lpp_blinn_phong_light(
     normal: Vec3,
     to_eye: Vec3,
     to_light: Vec3,
@@ -150,11 +150,11 @@ pub fn blinn_phong_light(
     attenuation: f32,
     power: f32,
 ) -> Vec4 {
-    light(normal, to_eye, to_light, colour, attenuation, power, false)
+    lpp_light(normal, to_eye, to_light, colour, attenuation, power, false)
 }
 
 /// P for the one-buffer layout with Phong specular: `(…, N·L·att·lum(colour)·(R·V)^power)`.
-pub fn phong_light(
+pub fn lpp_phong_light(
     normal: Vec3,
     to_eye: Vec3,
     to_light: Vec3,
@@ -162,19 +162,19 @@ pub fn phong_light(
     attenuation: f32,
     power: f32,
 ) -> Vec4 {
-    light(normal, to_eye, to_light, colour, attenuation, power, true)
+    lpp_light(normal, to_eye, to_light, colour, attenuation, power, true)
 }
 
 /// P of a point light (`colour_radius` = colour, radius) with Blinn-Phong specular.
-pub fn point_light(
+pub fn lpp_point_light(
     normal: Vec3,
     to_eye: Vec3,
     to_light: Vec3,
     colour_radius: Vec4,
     power: f32,
 ) -> Vec4 {
-    let att = point_attenuation(to_light.length(), colour_radius.w);
-    blinn_phong_light(
+    let att = lpp_point_attenuation(to_light.length(), colour_radius.w);
+    lpp_blinn_phong_light(
         normal,
         to_eye,
         to_light,
@@ -184,9 +184,9 @@ pub fn point_light(
     )
 }
 
-/// P of a spot light: point falloff times [`spot_attenuation`] of the angle between the spot
+/// P of a spot light: point falloff times [`lpp_spot_attenuation`] of the angle between the spot
 /// axis (`axis_cos_outer.xyz`, any length) and the light-to-surface direction.
-pub fn spot_light(
+pub fn lpp_spot_light(
     normal: Vec3,
     to_eye: Vec3,
     to_light: Vec3,
@@ -195,10 +195,10 @@ pub fn spot_light(
     cos_inner: f32,
     power: f32,
 ) -> Vec4 {
-    let cos_angle = direction(axis_cos_outer.truncate()).dot(-direction(to_light));
-    let att = point_attenuation(to_light.length(), colour_radius.w)
-        * spot_attenuation(cos_angle, axis_cos_outer.w, cos_inner);
-    blinn_phong_light(
+    let cos_angle = lpp_direction(axis_cos_outer.truncate()).dot(-lpp_direction(to_light));
+    let att = lpp_point_attenuation(to_light.length(), colour_radius.w)
+        * lpp_spot_attenuation(cos_angle, axis_cos_outer.w, cos_inner);
+    lpp_blinn_phong_light(
         normal,
         to_eye,
         to_light,
@@ -209,7 +209,7 @@ pub fn spot_light(
 }
 
 /// P for the two-buffer layout's specular target: `N·L·att·colour·(N·H)^power`.
-pub fn blinn_phong_specular_rgb(
+pub fn lpp_blinn_phong_specular_rgb(
     normal: Vec3,
     to_eye: Vec3,
     to_light: Vec3,
@@ -217,13 +217,13 @@ pub fn blinn_phong_specular_rgb(
     attenuation: f32,
     power: f32,
 ) -> Vec3 {
-    if !finite3(colour) || !finite(attenuation) || !finite(power) {
+    if !lpp_finite3(colour) || !lpp_finite(attenuation) || !lpp_finite(power) {
         return Vec3::ZERO;
     }
-    let c = colour.clamp(Vec3::ZERO, Vec3::splat(COLOUR_MAX));
-    let (n_dot_l, s) = cosines(normal, to_eye, to_light, false);
+    let c = colour.clamp(Vec3::ZERO, Vec3::splat(LPP_COLOUR_MAX));
+    let (n_dot_l, s) = lpp_cosines(normal, to_eye, to_light, false);
     let d = n_dot_l * attenuation.clamp(0.0, 1.0);
-    d * pow_cosine(s, power.clamp(0.0, COLOUR_MAX)) * c
+    d * lpp_pow_cosine(s, power.clamp(0.0, LPP_COLOUR_MAX)) * c
 }
 
 /// Engel's reconstruction from an accumulated one-buffer texel: `(a / lum(rgb))^m · lum(rgb)`.
@@ -236,41 +236,42 @@ pub fn blinn_phong_specular_rgb(
 ///
 /// **Error bound** (one white light, against Blinn-Phong with exponent `n·m` on the same
 /// adapter): `m·(ε_pow(n) + 13u) + ε_pow(m) + ε_pow(nm) + 8u` relative, derived in
-/// `tests/lighting_prepass.rs`.
-pub fn reconstruct_specular(light: Vec4, material_power: f32) -> f32 {
-    if !finite3(light.truncate()) || !finite(light.w) || !finite(material_power) {
+/// `tests/lpp.rs`.
+pub fn lpp_reconstruct_specular(light: Vec4, material_power: f32) -> f32 {
+    if !lpp_finite3(light.truncate()) || !lpp_finite(light.w) || !lpp_finite(material_power) {
         return 0.0;
     }
     let rgb = light.truncate().max(Vec3::ZERO);
-    let lum = luminance(rgb);
+    let lum = lpp_luminance(rgb);
     if lum.to_bits() < 0x0080_0000 || light.w.is_nan() || light.w <= 0.0 {
         return 0.0;
     }
     let ratio = if light.w < lum { light.w / lum } else { 1.0 };
-    pow_cosine(ratio, material_power.clamp(0.0, COLOUR_MAX)) * lum
+    lpp_pow_cosine(ratio, material_power.clamp(0.0, LPP_COLOUR_MAX)) * lum
 }
 
 /// Clamp to `[0, 65504]`, NaN to 0.
-pub fn clamp_colour(c: Vec3) -> Vec3 {
+pub fn lpp_clamp_colour(c: Vec3) -> Vec3 {
     let f = |x: f32| {
         if x.is_nan() {
             0.0
         } else {
-            x.clamp(0.0, COLOUR_MAX)
+            x.clamp(0.0, LPP_COLOUR_MAX)
         }
     };
     Vec3::new(f(c.x), f(c.y), f(c.z))
 }
 
-/// C for the one-buffer layout: `albedo·rgb + gloss·reconstruct_specular(light, m)`.
-pub fn combine(albedo: Vec3, gloss: Vec3, light: Vec4, material_power: f32) -> Vec3 {
-    let spec = reconstruct_specular(light, material_power);
-    clamp_colour(albedo) * clamp_colour(light.truncate()) + clamp_colour(gloss) * spec
+/// C for the one-buffer layout: `albedo·rgb + gloss·lpp_reconstruct_specular(light, m)`.
+pub fn lpp_combine(albedo: Vec3, gloss: Vec3, light: Vec4, material_power: f32) -> Vec3 {
+    let spec = lpp_reconstruct_specular(light, material_power);
+    lpp_clamp_colour(albedo) * lpp_clamp_colour(light.truncate()) + lpp_clamp_colour(gloss) * spec
 }
 
 /// C for the two-buffer layout: `albedo·diffuse + gloss·specular` (Resistance 2's `C = mp·P`).
-pub fn combine_two_buffers(albedo: Vec3, gloss: Vec3, diffuse: Vec3, specular: Vec3) -> Vec3 {
-    clamp_colour(albedo) * clamp_colour(diffuse) + clamp_colour(gloss) * clamp_colour(specular)
+pub fn lpp_combine_two_buffers(albedo: Vec3, gloss: Vec3, diffuse: Vec3, specular: Vec3) -> Vec3 {
+    lpp_clamp_colour(albedo) * lpp_clamp_colour(diffuse)
+        + lpp_clamp_colour(gloss) * lpp_clamp_colour(specular)
 }
 
 /// Exact references in f64.
@@ -286,7 +287,7 @@ pub mod exact {
     }
 
     /// `(N·L, N·H)` in f64, both clamped at 0 (N·H 0 when N·L = 0).
-    pub fn cosines(normal: [f64; 3], to_eye: [f64; 3], to_light: [f64; 3]) -> (f64, f64) {
+    pub fn lpp_cosines(normal: [f64; 3], to_eye: [f64; 3], to_light: [f64; 3]) -> (f64, f64) {
         let (n, l, v) = (unit(normal), unit(to_light), unit(to_eye));
         let nl = dot(n, l).max(0.0);
         if nl <= 0.0 {
@@ -310,7 +311,7 @@ pub mod exact {
         lights
             .iter()
             .map(|&(to_light, lum, att, n)| {
-                let (nl, nh) = cosines(normal, to_eye, to_light);
+                let (nl, nh) = lpp_cosines(normal, to_eye, to_light);
                 nl * att * lum * nh.powf(n * material_power)
             })
             .sum()

@@ -3,7 +3,7 @@
 // reconstruction (Wolfgang Engel, "Light Pre-Pass: More Blood", blog post, 28 September 2008;
 // written up as "Designing a Renderer for Multiple Lights: The Light Pre-Pass Renderer",
 // ShaderX7, 2009).
-// Rust twin: src/lighting/prepass.rs. Tests: tests/lighting_prepass.rs.
+// Rust twin: src/lighting/lpp.rs. Tests: tests/lpp.rs.
 //
 // P runs once per light in the light pass and its results are summed by additive blending:
 //   one RGBA buffer (Engel): rgb = N·L·att·colour, a = N·L·att·lum(colour)·(N·H)^n

@@ -1,45 +1,10 @@
-//! Sweeps for the light pre-pass maths (`wgsl/lighting.wgsl`): Engel's specular reconstruction
+//! Sweeps for the light pre-pass maths (`wgsl/lpp.wgsl`): Engel's specular reconstruction
 //! against per-light Blinn-Phong for 1–64 random lights, run on the adapter.
 
 use crate::harness::{Arg, Gpu, HarnessError};
-use crate::lighting::prepass::exact;
+use crate::lighting::lpp::exact;
 use crate::precision::metrics::{ErrorStats, relative_error};
-
-/// A small deterministic generator (SplitMix64) so every run measures the same scenes.
-#[derive(Clone, Debug)]
-pub struct SplitMix(pub u64);
-
-impl SplitMix {
-    /// Next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in `[lo, hi)`.
-    pub fn range(&mut self, lo: f32, hi: f32) -> f32 {
-        let u = (self.next_u64() >> 40) as f32 / (1u64 << 24) as f32;
-        lo + (hi - lo) * u
-    }
-
-    /// A random direction in the hemisphere around +z (z ≥ `min_z`), not normalised.
-    pub fn hemisphere(&mut self, min_z: f32) -> [f32; 3] {
-        loop {
-            let v = [
-                self.range(-1.0, 1.0),
-                self.range(-1.0, 1.0),
-                self.range(min_z, 1.0),
-            ];
-            let l2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-            if l2 > 0.01 && l2 <= 1.0 {
-                return v;
-            }
-        }
-    }
-}
+use crate::sweep::SplitMix;
 
 /// The error of the one-buffer reconstruction for one light count.
 #[derive(Clone, Debug, Default)]
@@ -70,7 +35,7 @@ pub fn multi_light_reconstruction(
     pixels: usize,
     seed: u64,
 ) -> Result<MultiLight, HarnessError> {
-    let src = crate::wgsl::LIGHTING;
+    let src = crate::wgsl::LPP;
     let p_kernel = gpu.kernel(src, "lpp_blinn_phong_light")?;
     let c_kernel = gpu.kernel(src, "lpp_reconstruct_specular")?;
     let mut rng = SplitMix(seed);
@@ -131,7 +96,7 @@ pub fn multi_light_reconstruction(
         let want = exact::multi_light_specular(normal, eye, &per_pixel[i], f64::from(material[i]));
         let diffuse_lum: f64 = per_pixel[i]
             .iter()
-            .map(|&(l, lum, att, _)| exact::cosines(normal, eye, l).0 * att * lum)
+            .map(|&(l, lum, att, _)| exact::lpp_cosines(normal, eye, l).0 * att * lum)
             .sum();
         let s = sum[i];
         let lum = 0.2126 * s[0] + 0.7152 * s[1] + 0.0722 * s[2];
