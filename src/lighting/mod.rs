@@ -3,9 +3,9 @@
 //! | module | WGSL | what |
 //! |---|---|---|
 //! | [`lpp`] | `wgsl/lpp.wgsl` | P per light (point, spot; Blinn-Phong, Phong), light-buffer layouts, C, Engel's specular reconstruction |
-//! | [`aggregate`] | `wgsl/aggregate_lights.wgsl` | God of War III aggregate vertex lights |
+//! | [`aggregate_light`] | `wgsl/aggregate_light.wgsl` | God of War III aggregate vertex lights |
 //! | [`volumes`] | `wgsl/light_volumes.wgsl` | depth-pass/depth-fail choice for sphere and cone volumes, depth bounds |
 
-pub mod aggregate;
+pub mod aggregate_light;
 pub mod lpp;
 pub mod volumes;

@@ -39,8 +39,8 @@ pub const ROUGHNESS: &str = include_str!("../../wgsl/roughness.wgsl");
 /// [`crate::lighting::lpp`]).
 pub const LPP: &str = include_str!("../../wgsl/lpp.wgsl");
 
-/// `wgsl/aggregate_lights.wgsl`: aggregate vertex lights (twin: [`crate::lighting::aggregate`]).
-pub const AGGREGATE_LIGHTS: &str = include_str!("../../wgsl/aggregate_lights.wgsl");
+/// `wgsl/aggregate_light.wgsl`: aggregate vertex lights (twin: [`crate::lighting::aggregate_light`]).
+pub const AGGREGATE_LIGHT: &str = include_str!("../../wgsl/aggregate_light.wgsl");
 
 /// `wgsl/light_volumes.wgsl`: light volumes and depth bounds (twin:
 /// [`crate::lighting::volumes`]).
@@ -62,8 +62,8 @@ pub const NORMAL_HEMIOCT: &str = include_str!("../../wgsl/normal_hemioct.wgsl");
 /// Every shipped WGSL file. `tests/wgsl_validate.rs` checks this list against the directory.
 pub const FILES: &[WgslFile] = &[
     WgslFile {
-        name: "aggregate_lights.wgsl",
-        source: AGGREGATE_LIGHTS,
+        name: "aggregate_light.wgsl",
+        source: AGGREGATE_LIGHT,
     },
     WgslFile {
         name: "depth24.wgsl",

@@ -1,15 +1,15 @@
-//! `wgsl/aggregate_lights.wgsl` on the adapter: God of War III's aggregate vertex lights (Vassily
+//! `wgsl/aggregate_light.wgsl` on the adapter: God of War III's aggregate vertex lights (Vassily
 //! Filippov, "Dynamic lighting in GOW3", SIGGRAPH 2011). Filippov's identity
 //! `(N·L_agg)·l_agg = Σ l_i (N·L_i)` over proptest-generated light sets, light at the vertex,
-//! cancelling lights, 1e-6…1e6 intensities, bad input. Twins: `src/lighting/aggregate.rs`.
+//! cancelling lights, 1e-6…1e6 intensities, bad input. Twins: `src/lighting/aggregate_light.rs`.
 
 mod common;
 
 use common::gpu;
 use glam::{Vec3, Vec4};
 use prepass::harness::{Arg, Kernel};
-use prepass::lighting::aggregate;
-use prepass::wgsl::AGGREGATE_LIGHTS;
+use prepass::lighting::aggregate_light;
+use prepass::wgsl::AGGREGATE_LIGHT;
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
@@ -85,7 +85,7 @@ struct Run<'g> {
 impl Run<'_> {
     fn new() -> Self {
         let g = gpu();
-        let k = |f| g.kernel(AGGREGATE_LIGHTS, f).unwrap();
+        let k = |f| g.kernel(AGGREGATE_LIGHT, f).unwrap();
         Run {
             acc: k("aggregate_light_accumulate"),
             dir: k("aggregate_light_direction"),
@@ -246,8 +246,13 @@ fn the_luminance_identity_holds_within_the_derived_budget() {
             .iter()
             .map(|&(p, l)| (Vec3::from(p), l, Vec3::splat(l)))
             .collect();
-        let (pos, col) = aggregate::aggregate(Vec3::from(set.vertex), &lights);
-        let twin = aggregate::diffuse(Vec3::from(set.normal), Vec3::from(set.vertex), pos, col);
+        let (pos, col) = aggregate_light::aggregate(Vec3::from(set.vertex), &lights);
+        let twin = aggregate_light::aggregate_light_diffuse(
+            Vec3::from(set.normal),
+            Vec3::from(set.vertex),
+            pos,
+            col,
+        );
         assert!(
             (f64::from(twin.x) - want).abs() <= b,
             "twin: {} vs {want}",
@@ -358,7 +363,7 @@ fn bad_input_is_skipped_identically_on_both_sides() {
         }
     }
     let out = gpu()
-        .kernel(AGGREGATE_LIGHTS, "aggregate_light_accumulate")
+        .kernel(AGGREGATE_LIGHT, "aggregate_light_accumulate")
         .unwrap()
         .run(
             &[
@@ -372,7 +377,7 @@ fn bad_input_is_skipped_identically_on_both_sides() {
         .unwrap();
     for (i, got) in out.as_vec4().iter().enumerate() {
         assert!(got.iter().all(|x| x.is_finite()), "row {i}: {got:?}");
-        let twin = aggregate::accumulate(
+        let twin = aggregate_light::aggregate_light_accumulate(
             Vec4::from(acc[i]),
             Vec3::from(vertex[i]),
             Vec3::from(pos[i]),
@@ -391,13 +396,19 @@ fn bad_input_is_skipped_identically_on_both_sides() {
     }
     // Empty accumulator: direction zero, position the vertex, diffuse zero.
     let d = gpu()
-        .kernel(AGGREGATE_LIGHTS, "aggregate_light_direction")
+        .kernel(AGGREGATE_LIGHT, "aggregate_light_direction")
         .unwrap()
         .run(&[Arg::column(&[[0.0f32; 4], [f32::NAN, 0.0, 0.0, 1.0]])], 2)
         .unwrap();
     assert_eq!(d.as_vec3(), &[[0.0; 3], [0.0; 3]]);
-    assert_eq!(aggregate::direction(Vec4::ZERO), Vec3::ZERO);
-    assert_eq!(aggregate::position(Vec4::ZERO, Vec3::ONE), Vec3::ONE);
+    assert_eq!(
+        aggregate_light::aggregate_light_direction(Vec4::ZERO),
+        Vec3::ZERO
+    );
+    assert_eq!(
+        aggregate_light::aggregate_light_position(Vec4::ZERO, Vec3::ONE),
+        Vec3::ONE
+    );
 }
 
 #[test]

@@ -2,7 +2,7 @@
 // GOW3", Sony Santa Monica; Advances in Real-Time Rendering in 3D Graphics and Games, SIGGRAPH
 // 2011): per vertex, many lights are folded into one aggregate light whose position is
 // interpolated per pixel.
-// Rust twin: src/lighting/aggregate.rs. Tests: tests/lighting_aggregate.rs.
+// Rust twin: src/lighting/aggregate_light.rs. Tests: tests/aggregate_light.rs.
 //
 // Per vertex V, for each light i with position P_i and weight W_i (its intensity at V):
 //   acc.xyz = Σ W_i·L_i with L_i = (P_i − V)/|P_i − V|,   acc.w = Σ W_i/|P_i − V|

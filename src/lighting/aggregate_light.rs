@@ -1,4 +1,4 @@
-//! God of War III's aggregate vertex lights — Rust twins of `wgsl/aggregate_lights.wgsl`.
+//! God of War III's aggregate vertex lights — Rust twins of `wgsl/aggregate_light.wgsl`.
 //! Source: Vassily Filippov, "Dynamic lighting in GOW3" (Sony Santa Monica; Advances in
 //! Real-Time Rendering in 3D Graphics and Games, SIGGRAPH 2011).
 //!
@@ -12,7 +12,7 @@
 //! **Why it is exact for luminance** (Filippov's argument): with scalar luminances `l_i`,
 //! `X = Σ l_i L_i`, `L_agg = X/|X|` and `l_agg = Σ l_i (L_i·L_agg) = X·L_agg = |X|`, so
 //! `(N·L_agg)·l_agg = N·X = Σ l_i (N·L_i)` — the per-light sum whenever every `N·L_i ≥ 0`.
-//! `tests/lighting_aggregate.rs` checks it on the adapter within a derived rounding budget.
+//! `tests/aggregate_light.rs` checks it on the adapter within a derived rounding budget.
 //!
 //! **Twins** use the same `f32` formulas; not bit-identical to an adapter (`inverseSqrt`, `/`).
 //!
@@ -25,19 +25,19 @@
 use glam::{Vec3, Vec4};
 
 /// Largest weight or colour channel accepted, `2^40` (intensities 1e-6 … 1e6 and far beyond).
-pub const WEIGHT_MAX: f32 = 1_099_511_627_776.0;
+pub const AGGREGATE_LIGHT_WEIGHT_MAX: f32 = 1_099_511_627_776.0;
 /// Lights closer than this to the vertex in every coordinate are skipped (`2^-64`).
 pub const AT_VERTEX: f32 = 5.421_011e-20;
 
-fn finite3(v: Vec3) -> bool {
+fn aggregate_light_finite3(v: Vec3) -> bool {
     v.to_array()
         .iter()
         .all(|x| (x.to_bits() & 0x7fff_ffff) < 0x7f80_0000)
 }
 
-fn unit(v: Vec3, smallest: u32) -> Vec3 {
+fn aggregate_light_unit(v: Vec3, smallest: u32) -> Vec3 {
     let m = v.abs().max_element();
-    if !finite3(v) || m.to_bits() < smallest {
+    if !aggregate_light_finite3(v) || m.to_bits() < smallest {
         return Vec3::ZERO;
     }
     let s = v / m;
@@ -46,33 +46,38 @@ fn unit(v: Vec3, smallest: u32) -> Vec3 {
 
 /// Fold a light into a vertex's accumulator (start from `Vec4::ZERO`):
 /// `acc + (W·L_i, W/|P_i − V|)`.
-pub fn accumulate(acc: Vec4, vertex: Vec3, light_position: Vec3, weight: f32) -> Vec4 {
+pub fn aggregate_light_accumulate(
+    acc: Vec4,
+    vertex: Vec3,
+    light_position: Vec3,
+    weight: f32,
+) -> Vec4 {
     let rel = light_position - vertex;
     let m = rel.abs().max_element();
-    if !finite3(vertex)
-        || !finite3(light_position)
-        || !finite3(rel)
+    if !aggregate_light_finite3(vertex)
+        || !aggregate_light_finite3(light_position)
+        || !aggregate_light_finite3(rel)
         || (weight.to_bits() & 0x7fff_ffff) >= 0x7f80_0000
         || m.to_bits() < AT_VERTEX.to_bits()
     {
         return acc;
     }
-    let w = weight.clamp(0.0, WEIGHT_MAX);
+    let w = weight.clamp(0.0, AGGREGATE_LIGHT_WEIGHT_MAX);
     let s = rel / m;
     let inv = 1.0 / s.dot(s).sqrt();
     acc + (w * (s * inv)).extend(w * inv / m)
 }
 
 /// The aggregate direction `L_agg` (zero when the weighted directions cancel).
-pub fn direction(acc: Vec4) -> Vec3 {
-    unit(acc.truncate(), 0x0080_0000)
+pub fn aggregate_light_direction(acc: Vec4) -> Vec3 {
+    aggregate_light_unit(acc.truncate(), 0x0080_0000)
 }
 
 /// The aggregate position `V + acc.xyz/acc.w` (`V` when nothing accumulated or they cancel).
-pub fn position(acc: Vec4, vertex: Vec3) -> Vec3 {
+pub fn aggregate_light_position(acc: Vec4, vertex: Vec3) -> Vec3 {
     let x = acc.truncate();
     let m = x.abs().max_element();
-    if !finite3(x)
+    if !aggregate_light_finite3(x)
         || (acc.w.to_bits() & 0x7fff_ffff) >= 0x7f80_0000
         || m.to_bits() < 0x0080_0000
         || acc.w.is_nan()
@@ -85,7 +90,7 @@ pub fn position(acc: Vec4, vertex: Vec3) -> Vec3 {
 
 /// Fold a light's colour into `C_agg`: `colour_acc + C_i (L_i·L_agg)` (unclamped, as in
 /// Filippov's slides).
-pub fn accumulate_colour(
+pub fn aggregate_light_accumulate_colour(
     colour_acc: Vec3,
     vertex: Vec3,
     light_position: Vec3,
@@ -94,39 +99,47 @@ pub fn accumulate_colour(
 ) -> Vec3 {
     let rel = light_position - vertex;
     let m = rel.abs().max_element();
-    if !finite3(vertex)
-        || !finite3(light_position)
-        || !finite3(rel)
-        || !finite3(colour)
-        || !finite3(aggregate_direction)
+    if !aggregate_light_finite3(vertex)
+        || !aggregate_light_finite3(light_position)
+        || !aggregate_light_finite3(rel)
+        || !aggregate_light_finite3(colour)
+        || !aggregate_light_finite3(aggregate_direction)
         || m.to_bits() < AT_VERTEX.to_bits()
     {
         return colour_acc;
     }
-    let l = unit(rel, AT_VERTEX.to_bits());
-    let c = colour.clamp(Vec3::ZERO, Vec3::splat(WEIGHT_MAX));
+    let l = aggregate_light_unit(rel, AT_VERTEX.to_bits());
+    let c = colour.clamp(Vec3::ZERO, Vec3::splat(AGGREGATE_LIGHT_WEIGHT_MAX));
     colour_acc + c * l.dot(aggregate_direction)
 }
 
 /// Per pixel: `max(C_agg·max(N·normalize(P_agg − p), 0), 0)`.
-pub fn diffuse(normal: Vec3, position: Vec3, aggregate_position: Vec3, colour: Vec3) -> Vec3 {
-    if !finite3(position) || !finite3(aggregate_position) || !finite3(colour) {
+pub fn aggregate_light_diffuse(
+    normal: Vec3,
+    position: Vec3,
+    aggregate_position: Vec3,
+    colour: Vec3,
+) -> Vec3 {
+    if !aggregate_light_finite3(position)
+        || !aggregate_light_finite3(aggregate_position)
+        || !aggregate_light_finite3(colour)
+    {
         return Vec3::ZERO;
     }
-    let n = unit(normal, 0x0080_0000);
-    let l = unit(aggregate_position - position, 0x0080_0000);
+    let n = aggregate_light_unit(normal, 0x0080_0000);
+    let l = aggregate_light_unit(aggregate_position - position, 0x0080_0000);
     (colour * n.dot(l).max(0.0)).max(Vec3::ZERO)
 }
 
 /// Whole-vertex convenience (CPU side): fold `(position, weight, colour)` lights at `vertex`
 /// into `(P_agg, C_agg)`.
 pub fn aggregate(vertex: Vec3, lights: &[(Vec3, f32, Vec3)]) -> (Vec3, Vec3) {
-    let acc = lights
-        .iter()
-        .fold(Vec4::ZERO, |a, &(p, w, _)| accumulate(a, vertex, p, w));
-    let dir = direction(acc);
-    let colour = lights.iter().fold(Vec3::ZERO, |c, &(p, _, col)| {
-        accumulate_colour(c, vertex, p, col, dir)
+    let acc = lights.iter().fold(Vec4::ZERO, |a, &(p, w, _)| {
+        aggregate_light_accumulate(a, vertex, p, w)
     });
-    (position(acc, vertex), colour)
+    let dir = aggregate_light_direction(acc);
+    let colour = lights.iter().fold(Vec3::ZERO, |c, &(p, _, col)| {
+        aggregate_light_accumulate_colour(c, vertex, p, col, dir)
+    });
+    (aggregate_light_position(acc, vertex), colour)
 }
