@@ -4,8 +4,8 @@
 //! |---|---|---|
 //! | [`lpp`] | `wgsl/lpp.wgsl` | P per light (point, spot; Blinn-Phong, Phong), light-buffer layouts, C, Engel's specular reconstruction |
 //! | [`aggregate_light`] | `wgsl/aggregate_light.wgsl` | God of War III aggregate vertex lights |
-//! | [`volumes`] | `wgsl/light_volumes.wgsl` | depth-pass/depth-fail choice for sphere and cone volumes, depth bounds |
+//! | [`light_volume`] | `wgsl/light_volume.wgsl` | depth-pass/depth-fail choice for sphere and cone volumes, depth bounds |
 
 pub mod aggregate_light;
+pub mod light_volume;
 pub mod lpp;
-pub mod volumes;

@@ -42,9 +42,9 @@ pub const LPP: &str = include_str!("../../wgsl/lpp.wgsl");
 /// `wgsl/aggregate_light.wgsl`: aggregate vertex lights (twin: [`crate::lighting::aggregate_light`]).
 pub const AGGREGATE_LIGHT: &str = include_str!("../../wgsl/aggregate_light.wgsl");
 
-/// `wgsl/light_volumes.wgsl`: light volumes and depth bounds (twin:
-/// [`crate::lighting::volumes`]).
-pub const LIGHT_VOLUMES: &str = include_str!("../../wgsl/light_volumes.wgsl");
+/// `wgsl/light_volume.wgsl`: light volumes and depth bounds (twin:
+/// [`crate::lighting::light_volume`]).
+pub const LIGHT_VOLUME: &str = include_str!("../../wgsl/light_volume.wgsl");
 
 /// `wgsl/normal_xyz8.wgsl`: normal as x, y, z unorm8 (twin: [`crate::normal::xyz8`]).
 pub const NORMAL_XYZ8: &str = include_str!("../../wgsl/normal_xyz8.wgsl");
@@ -70,8 +70,8 @@ pub const FILES: &[WgslFile] = &[
         source: DEPTH24,
     },
     WgslFile {
-        name: "light_volumes.wgsl",
-        source: LIGHT_VOLUMES,
+        name: "light_volume.wgsl",
+        source: LIGHT_VOLUME,
     },
     WgslFile {
         name: "linear_depth.wgsl",

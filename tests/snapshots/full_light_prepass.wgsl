@@ -1,6 +1,6 @@
 // Composed by prepass::scene from the shipped WGSL files.
 
-// ---- from wgsl/light_volumes.wgsl ----
+// ---- from wgsl/light_volume.wgsl ----
 
 const LIGHT_VOLUME_U = 5.9604645e-8;
 
@@ -17,7 +17,7 @@ fn light_volume_finite3(v: vec3<f32>) -> bool {
 // 1 when a sphere light volume (view-space centre, radius) may touch the eye's rho-ball, so the
 // stencil pass must use depth-fail; 0 when depth-pass is safe. Tests |c|² < (r + rho)² with the
 // right side enlarged by 2^-20 relative, which covers the f32 rounding of both sides (each
-// within 6u relative, derivation in src/lighting/volumes.rs).
+// within 6u relative, derivation in src/lighting/light_volume.rs).
 fn light_volume_sphere_needs_depth_fail(center: vec3<f32>, radius: f32, near_corner_distance: f32) -> u32 {
     if (!light_volume_finite3(center) || !light_volume_finite(radius)
         || !light_volume_finite(near_corner_distance) || radius < 0.0 || near_corner_distance < 0.0) {

@@ -1,7 +1,7 @@
 // prepass — stencil light volumes and the depth-bounds test for lights (Mark Lee, "Pre-lighting
 // in Resistance 2", Insomniac Games, GDC 2009; Michal Valient, "Deferred Rendering in Killzone
 // 2", Guerrilla Games, Develop Conference 2007).
-// Rust twin: src/lighting/volumes.rs. Tests: tests/lighting_volumes.rs.
+// Rust twin: src/lighting/light_volume.rs. Tests: tests/light_volume.rs.
 //
 // View space: the camera at the origin looking down +z, so a point's view depth vz is its z
 // (Lee's w); near and far are positive view depths, far may be +Inf.
@@ -47,7 +47,7 @@ fn light_volume_near_corner_distance(near: f32, tan_half_fov_x: f32, tan_half_fo
 // 1 when a sphere light volume (view-space centre, radius) may touch the eye's rho-ball, so the
 // stencil pass must use depth-fail; 0 when depth-pass is safe. Tests |c|² < (r + rho)² with the
 // right side enlarged by 2^-20 relative, which covers the f32 rounding of both sides (each
-// within 6u relative, derivation in src/lighting/volumes.rs).
+// within 6u relative, derivation in src/lighting/light_volume.rs).
 fn light_volume_sphere_needs_depth_fail(center: vec3<f32>, radius: f32, near_corner_distance: f32) -> u32 {
     if (!light_volume_finite3(center) || !light_volume_finite(radius)
         || !light_volume_finite(near_corner_distance) || radius < 0.0 || near_corner_distance < 0.0) {

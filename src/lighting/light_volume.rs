@@ -1,4 +1,4 @@
-//! Stencil light volumes and depth bounds — Rust twins of `wgsl/light_volumes.wgsl`. Sources:
+//! Stencil light volumes and depth bounds — Rust twins of `wgsl/light_volume.wgsl`. Sources:
 //! Mark Lee, "Pre-lighting in Resistance 2" (Insomniac Games, GDC 2009) for the stencil volumes
 //! and the switch to depth-fail; Michal Valient, "Deferred Rendering in Killzone 2" (Guerrilla
 //! Games, Develop Conference 2007) for the depth-bounds test.
@@ -11,7 +11,7 @@
 //! `ρ = near·√(1 + tan²(fov_x/2) + tan²(fov_y/2))` of the eye (the corners are exactly that
 //! far), so a volume farther than `ρ` from the eye cannot reach it (triangle inequality) and
 //! depth-pass is safe; otherwise use depth-fail. That is Lee's "fudge factor", derived:
-//! [`near_corner_distance`]. The comparisons are widened by their own rounding: for the sphere,
+//! [`light_volume_near_corner_distance`]. The comparisons are widened by their own rounding: for the sphere,
 //! `|c|²` and `(r + ρ)²` (after scaling by the largest magnitude) are each within `≈ 6u`
 //! relative (`u = 2^-24`: three products, two sums, one scaling division of 2.5 ULP), so the
 //! right side is enlarged by `16u` relative, which can only add depth-fail cases.
@@ -37,8 +37,8 @@
 use glam::{Vec2, Vec3};
 
 /// Unit roundoff of `f32`, `2^-24`.
-pub const U: f32 = 5.960_464_5e-8;
-const DEPTH24_MAX: f32 = 16_777_215.0;
+pub const LIGHT_VOLUME_U: f32 = 5.960_464_5e-8;
+const LIGHT_VOLUME_DEPTH24_MAX: f32 = 16_777_215.0;
 
 /// Which window-depth convention a depth buffer uses.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,20 +59,24 @@ impl DepthConvention {
     }
 }
 
-fn finite(x: f32) -> bool {
+fn light_volume_finite(x: f32) -> bool {
     (x.to_bits() & 0x7fff_ffff) < 0x7f80_0000
 }
 
-fn finite3(v: Vec3) -> bool {
-    finite(v.x) && finite(v.y) && finite(v.z)
+fn light_volume_finite3(v: Vec3) -> bool {
+    light_volume_finite(v.x) && light_volume_finite(v.y) && light_volume_finite(v.z)
 }
 
 /// `ρ = near·√(1 + tan_x² + tan_y²)`: distance from the eye to the near-plane rectangle's
 /// corners. Bad input (NaN/Inf, negative) → `3.4e38` (every volume then needs depth-fail).
-pub fn near_corner_distance(near: f32, tan_half_fov_x: f32, tan_half_fov_y: f32) -> f32 {
-    if !finite(near)
-        || !finite(tan_half_fov_x)
-        || !finite(tan_half_fov_y)
+pub fn light_volume_near_corner_distance(
+    near: f32,
+    tan_half_fov_x: f32,
+    tan_half_fov_y: f32,
+) -> f32 {
+    if !light_volume_finite(near)
+        || !light_volume_finite(tan_half_fov_x)
+        || !light_volume_finite(tan_half_fov_y)
         || near < 0.0
         || tan_half_fov_x < 0.0
         || tan_half_fov_y < 0.0
@@ -84,10 +88,14 @@ pub fn near_corner_distance(near: f32, tan_half_fov_x: f32, tan_half_fov_y: f32)
 
 /// 1 when a sphere volume (view-space `center`, `radius`) may touch the eye's `ρ`-ball (use
 /// depth-fail), 0 when depth-pass is safe: `|c|² ≤ (r + ρ)²·(1 + 16u)` after scaling.
-pub fn sphere_needs_depth_fail(center: Vec3, radius: f32, near_corner_distance: f32) -> u32 {
-    if !finite3(center)
-        || !finite(radius)
-        || !finite(near_corner_distance)
+pub fn light_volume_sphere_needs_depth_fail(
+    center: Vec3,
+    radius: f32,
+    near_corner_distance: f32,
+) -> u32 {
+    if !light_volume_finite3(center)
+        || !light_volume_finite(radius)
+        || !light_volume_finite(near_corner_distance)
         || radius < 0.0
         || near_corner_distance < 0.0
     {
@@ -102,13 +110,13 @@ pub fn sphere_needs_depth_fail(center: Vec3, radius: f32, near_corner_distance: 
     }
     let c = center / s;
     let reach = (radius + near_corner_distance) / s;
-    u32::from(c.dot(c) <= reach * reach * (1.0 + 16.0 * U))
+    u32::from(c.dot(c) <= reach * reach * (1.0 + 16.0 * LIGHT_VOLUME_U))
 }
 
 /// 1 when a cone volume (apex, axis of any length, `range_tan = (length, tan half-angle)`,
 /// flat cap) may touch the eye's `ρ`-ball, 0 when depth-pass is safe. Distance from the eye
 /// to the solid cone in the axis plane, compared with `ρ + 16u·(|apex| + h(1 + tan) + ρ)`.
-pub fn cone_needs_depth_fail(
+pub fn light_volume_cone_needs_depth_fail(
     apex: Vec3,
     axis: Vec3,
     range_tan: Vec2,
@@ -116,11 +124,11 @@ pub fn cone_needs_depth_fail(
 ) -> u32 {
     let (h, k) = (range_tan.x, range_tan.y);
     let am = axis.abs().max_element();
-    if !finite3(apex)
-        || !finite3(axis)
-        || !finite(h)
-        || !finite(k)
-        || !finite(near_corner_distance)
+    if !light_volume_finite3(apex)
+        || !light_volume_finite3(axis)
+        || !light_volume_finite(h)
+        || !light_volume_finite(k)
+        || !light_volume_finite(near_corner_distance)
         || h < 0.0
         || k < 0.0
         || near_corner_distance < 0.0
@@ -149,18 +157,18 @@ pub fn cone_needs_depth_fail(
         let d_axis = (q - Vec2::new(t.clamp(0.0, h), 0.0)).length();
         dist = d_slant.min(d_cap).min(d_axis);
     }
-    let margin = 16.0 * U * (apex.length() + h * (1.0 + k) + near_corner_distance);
+    let margin = 16.0 * LIGHT_VOLUME_U * (apex.length() + h * (1.0 + k) + near_corner_distance);
     u32::from(dist <= near_corner_distance + margin)
 }
 
 /// Window depth of view depth `vz` (see the module docs for the forms); `far = +∞` allowed.
 /// Error: within `8u·(1 + f/(f − n))` of the exact value (module docs).
 ///
-/// **Bad input:** no guards (it serves [`sphere_depth_bounds`], which clips `vz` to
+/// **Bad input:** no guards (it serves [`light_volume_sphere_depth_bounds`], which clips `vz` to
 /// `[near, far]` first): outside that interval the formula extrapolates (`vz = +∞` gives
 /// `f/(f − n)` standard, 1 and 0 for infinite far), and NaN propagates. The WGSL's
 /// `reversed` argument is 0 for standard and anything else for reversed.
-pub fn window_depth(vz: f32, near: f32, far: f32, convention: DepthConvention) -> f32 {
+pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: DepthConvention) -> f32 {
     let infinite = far == f32::INFINITY;
     match (convention, infinite) {
         (DepthConvention::Standard, true) => 1.0 - near / vz,
@@ -173,7 +181,7 @@ pub fn window_depth(vz: f32, near: f32, far: f32, convention: DepthConvention) -
 /// Depth-bounds range `(min, max)` of window depth containing every point of a sphere light
 /// (view depth `center_z`, `radius`), widened by `ε = 16u(1 + f/(f − n))` and clamped to
 /// `[0, 1]`; `(1, 0)` when the sphere lies wholly outside `[near, far]`.
-pub fn sphere_depth_bounds(
+pub fn light_volume_sphere_depth_bounds(
     center_z: f32,
     radius: f32,
     near: f32,
@@ -181,10 +189,10 @@ pub fn sphere_depth_bounds(
     convention: DepthConvention,
 ) -> Vec2 {
     let infinite = far == f32::INFINITY;
-    if !finite(center_z)
-        || !finite(radius)
-        || !finite(near)
-        || !(finite(far) || infinite)
+    if !light_volume_finite(center_z)
+        || !light_volume_finite(radius)
+        || !light_volume_finite(near)
+        || !(light_volume_finite(far) || infinite)
         || radius < 0.0
         || near.is_nan()
         || near <= 0.0
@@ -195,7 +203,7 @@ pub fn sphere_depth_bounds(
     }
     let lo = (center_z - radius).max(near);
     let sum = center_z + radius;
-    let sum_finite = finite(sum);
+    let sum_finite = light_volume_finite(sum);
     let mut hi = sum;
     if !infinite && (!sum_finite || sum > far) {
         hi = far;
@@ -205,12 +213,12 @@ pub fn sphere_depth_bounds(
         return Vec2::new(1.0, 0.0);
     }
     let k = if infinite { 1.0 } else { far / (far - near) };
-    let eps = 16.0 * U * (1.0 + k);
+    let eps = 16.0 * LIGHT_VOLUME_U * (1.0 + k);
     let reversed = convention == DepthConvention::Reversed;
-    let mut z_lo = window_depth(lo, near, far, convention);
+    let mut z_lo = light_volume_window_depth(lo, near, far, convention);
     let mut z_hi = if reversed { 0.0 } else { 1.0 };
     if !hi_at_infinity {
-        z_hi = window_depth(hi, near, far, convention);
+        z_hi = light_volume_window_depth(hi, near, far, convention);
     }
     if reversed {
         std::mem::swap(&mut z_lo, &mut z_hi);
@@ -218,22 +226,22 @@ pub fn sphere_depth_bounds(
     Vec2::new((z_lo - eps).clamp(0.0, 1.0), (z_hi + eps).clamp(0.0, 1.0))
 }
 
-/// [`sphere_depth_bounds`] as 24-bit codes: `(floor(min·(2^24−1)), ceil(max·(2^24−1)))`;
+/// [`light_volume_sphere_depth_bounds`] as 24-bit codes: `(floor(min·(2^24−1)), ceil(max·(2^24−1)))`;
 /// empty range → `(2^24 − 1, 0)`.
-pub fn sphere_depth_bounds24(
+pub fn light_volume_sphere_depth_bounds24(
     center_z: f32,
     radius: f32,
     near: f32,
     far: f32,
     convention: DepthConvention,
 ) -> [u32; 2] {
-    let b = sphere_depth_bounds(center_z, radius, near, far, convention);
+    let b = light_volume_sphere_depth_bounds(center_z, radius, near, far, convention);
     if b.x > b.y {
         return [0x00ff_ffff, 0];
     }
     [
-        (b.x * DEPTH24_MAX).floor() as u32,
-        (b.y * DEPTH24_MAX).ceil() as u32,
+        (b.x * LIGHT_VOLUME_DEPTH24_MAX).floor() as u32,
+        (b.y * LIGHT_VOLUME_DEPTH24_MAX).ceil() as u32,
     ]
 }
 
@@ -242,7 +250,12 @@ pub mod exact {
     use super::DepthConvention;
 
     /// Window depth in f64 (no guards, like the twin: NaN propagates).
-    pub fn window_depth(vz: f64, near: f64, far: f64, convention: DepthConvention) -> f64 {
+    pub fn light_volume_window_depth(
+        vz: f64,
+        near: f64,
+        far: f64,
+        convention: DepthConvention,
+    ) -> f64 {
         let z = if far.is_infinite() {
             1.0 - near / vz
         } else {

@@ -1,14 +1,14 @@
-//! `wgsl/light_volumes.wgsl` on the adapter: depth bounds of sphere lights contain every point of
+//! `wgsl/light_volume.wgsl` on the adapter: depth bounds of sphere lights contain every point of
 //! the sphere (proptest, points on the surface) and are tight; the depth-pass/depth-fail choice
-//! is conservative for spheres and cones; bad input. Twins: `src/lighting/volumes.rs`.
+//! is conservative for spheres and cones; bad input. Twins: `src/lighting/light_volume.rs`.
 
 mod common;
 
 use common::gpu;
 use glam::{Vec2, Vec3};
 use prepass::harness::Arg;
-use prepass::lighting::volumes::{self, DepthConvention, exact};
-use prepass::wgsl::LIGHT_VOLUMES;
+use prepass::lighting::light_volume::{self, DepthConvention, exact};
+use prepass::wgsl::LIGHT_VOLUME;
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
@@ -69,12 +69,12 @@ fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
     ];
     let g = gpu();
     let bounds = g
-        .kernel(LIGHT_VOLUMES, "light_volume_sphere_depth_bounds")
+        .kernel(LIGHT_VOLUME, "light_volume_sphere_depth_bounds")
         .unwrap()
         .run(&args, cases.len() as u64)
         .unwrap();
     let codes = g
-        .kernel(LIGHT_VOLUMES, "light_volume_sphere_depth_bounds24")
+        .kernel(LIGHT_VOLUME, "light_volume_sphere_depth_bounds24")
         .unwrap()
         .run(&args, cases.len() as u64)
         .unwrap();
@@ -95,7 +95,7 @@ fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
         );
         let conv = convention(rev[i]);
         assert!(b[0].is_finite() && b[1].is_finite());
-        let twin = volumes::sphere_depth_bounds(cz[i], r[i], n[i], f[i], conv);
+        let twin = light_volume::light_volume_sphere_depth_bounds(cz[i], r[i], n[i], f[i], conv);
         let k = if fi.is_infinite() {
             1.0
         } else {
@@ -124,7 +124,7 @@ fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
             if vz < ni || vz > fi {
                 continue; // clipped by the near or far plane: never in the depth buffer
             }
-            let z = exact::window_depth(vz, ni, fi, conv);
+            let z = exact::light_volume_window_depth(vz, ni, fi, conv);
             assert!(
                 f64::from(b[0]) <= z && z <= f64::from(b[1]),
                 "case {i} {:?}: depth {z} of vz {vz} outside {b:?}",
@@ -138,13 +138,13 @@ fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
             points += 1;
         }
         // Tightness: the float range is within the widening eps plus the evaluation error
-        // (≤ eps, derived in src/lighting/volumes.rs) of the exact range: ≤ 2·eps each side.
+        // (≤ eps, derived in src/lighting/light_volume.rs) of the exact range: ≤ 2·eps each side.
         let (za, zb) = (
-            exact::window_depth(lo, ni, fi, conv),
+            exact::light_volume_window_depth(lo, ni, fi, conv),
             if hi.is_infinite() {
                 if rev[i] == 0 { 1.0 } else { 0.0 }
             } else {
-                exact::window_depth(hi, ni, fi, conv)
+                exact::light_volume_window_depth(hi, ni, fi, conv)
             },
         );
         let (emin, emax) = (za.min(zb), za.max(zb));
@@ -195,10 +195,10 @@ fn sphere_stencil_choice_is_conservative() {
     let radii: Vec<f32> = cases.iter().map(|c| c.1).collect();
     let rho: Vec<f32> = cases
         .iter()
-        .map(|c| volumes::near_corner_distance(c.2, c.3, c.4))
+        .map(|c| light_volume::light_volume_near_corner_distance(c.2, c.3, c.4))
         .collect();
     let out = gpu()
-        .kernel(LIGHT_VOLUMES, "light_volume_sphere_needs_depth_fail")
+        .kernel(LIGHT_VOLUME, "light_volume_sphere_needs_depth_fail")
         .unwrap()
         .run(
             &[
@@ -219,7 +219,7 @@ fn sphere_stencil_choice_is_conservative() {
             || len <= f64::from(r);
         assert_eq!(
             got,
-            volumes::sphere_needs_depth_fail(Vec3::from(c), r, rho[i]),
+            light_volume::light_volume_sphere_needs_depth_fail(Vec3::from(c), r, rho[i]),
             "case {i}: twin differs"
         );
         if touches {
@@ -260,10 +260,10 @@ fn cone_stencil_choice_is_conservative() {
     let rt: Vec<[f32; 2]> = cases.iter().map(|c| [c.2, c.3]).collect();
     let rho: Vec<f32> = cases
         .iter()
-        .map(|c| volumes::near_corner_distance(c.4, c.5, c.5))
+        .map(|c| light_volume::light_volume_near_corner_distance(c.4, c.5, c.5))
         .collect();
     let out = gpu()
-        .kernel(LIGHT_VOLUMES, "light_volume_cone_needs_depth_fail")
+        .kernel(LIGHT_VOLUME, "light_volume_cone_needs_depth_fail")
         .unwrap()
         .run(
             &[
@@ -309,8 +309,12 @@ fn cone_stencil_choice_is_conservative() {
             needed += 1;
         }
         flagged += got;
-        let twin =
-            volumes::cone_needs_depth_fail(Vec3::from(a), Vec3::from(d), Vec2::new(h, k), rho[i]);
+        let twin = light_volume::light_volume_cone_needs_depth_fail(
+            Vec3::from(a),
+            Vec3::from(d),
+            Vec2::new(h, k),
+            rho[i],
+        );
         if twin != got {
             twin_diff += 1;
         }
@@ -332,10 +336,10 @@ fn bad_input_answers_depth_fail_and_the_full_range() {
     let bad = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY, -1.0];
     let g = gpu();
     let sphere = g
-        .kernel(LIGHT_VOLUMES, "light_volume_sphere_needs_depth_fail")
+        .kernel(LIGHT_VOLUME, "light_volume_sphere_needs_depth_fail")
         .unwrap();
     let bounds = g
-        .kernel(LIGHT_VOLUMES, "light_volume_sphere_depth_bounds24")
+        .kernel(LIGHT_VOLUME, "light_volume_sphere_depth_bounds24")
         .unwrap();
     for &x in &bad {
         let out = sphere
@@ -352,7 +356,7 @@ fn bad_input_answers_depth_fail_and_the_full_range() {
         let first = if x == -1.0 { 0 } else { 1 };
         assert_eq!(out.as_u32(), &[first, 1, 1], "bad {x}");
         assert_eq!(
-            volumes::sphere_needs_depth_fail(Vec3::new(x, 0.0, 5.0), 1.0, 0.1),
+            light_volume::light_volume_sphere_needs_depth_fail(Vec3::new(x, 0.0, 5.0), 1.0, 0.1),
             first
         );
         // center, radius, near, far bad in turn (far = +Inf is valid: infinite far plane).
@@ -383,7 +387,7 @@ fn bad_input_answers_depth_fail_and_the_full_range() {
             };
             assert_eq!(out.as_u32(), &want, "{row:?}");
             assert_eq!(
-                volumes::sphere_depth_bounds24(
+                light_volume::light_volume_sphere_depth_bounds24(
                     row[0],
                     row[1],
                     row[2],
@@ -394,5 +398,8 @@ fn bad_input_answers_depth_fail_and_the_full_range() {
             );
         }
     }
-    assert_eq!(volumes::near_corner_distance(f32::NAN, 1.0, 1.0), 3.4e38);
+    assert_eq!(
+        light_volume::light_volume_near_corner_distance(f32::NAN, 1.0, 1.0),
+        3.4e38
+    );
 }
