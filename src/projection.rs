@@ -18,6 +18,19 @@ pub enum DepthConvention {
     Reversed,
 }
 
+impl DepthConvention {
+    /// The `u32` the WGSL takes for a convention (the `reversed` argument of
+    /// `light_volume_window_depth`, `light_volume_sphere_depth_bounds` and
+    /// `light_volume_sphere_depth_bounds24`): 0 standard, 1 reversed. The WGSL reads any
+    /// non-zero value as reversed.
+    pub fn wgsl(self) -> u32 {
+        match self {
+            Self::Standard => 0,
+            Self::Reversed => 1,
+        }
+    }
+}
+
 /// A rejected [`Projection`] parameter: which field, and why.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ProjectionError {

@@ -34,30 +34,12 @@
 //! **Twins** are the same `f32` formulas, not bit-identical (division, `sqrt`); the tests check
 //! the conservative property on both sides.
 
+use crate::projection::DepthConvention;
 use glam::{Vec2, Vec3};
 
 /// Unit roundoff of `f32`, `2^-24`.
 pub const LIGHT_VOLUME_U: f32 = 5.960_464_5e-8;
 const LIGHT_VOLUME_DEPTH24_MAX: f32 = 16_777_215.0;
-
-/// Which window-depth convention a depth buffer uses.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DepthConvention {
-    /// near → 0, far → 1.
-    Standard,
-    /// near → 1, far → 0.
-    Reversed,
-}
-
-impl DepthConvention {
-    /// The `u32` the WGSL takes: 0 standard, 1 reversed.
-    pub fn wgsl(self) -> u32 {
-        match self {
-            Self::Standard => 0,
-            Self::Reversed => 1,
-        }
-    }
-}
 
 fn light_volume_finite(x: f32) -> bool {
     (x.to_bits() & 0x7fff_ffff) < 0x7f80_0000
@@ -181,6 +163,17 @@ pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: Depth
 /// Depth-bounds range `(min, max)` of window depth containing every point of a sphere light
 /// (view depth `center_z`, `radius`), widened by `ε = 16u(1 + f/(f − n))` and clamped to
 /// `[0, 1]`; `(1, 0)` when the sphere lies wholly outside `[near, far]`.
+///
+/// The planes and convention can come straight from a [`Projection`](crate::projection::Projection)
+/// (for the WGSL, pass `convention.wgsl()` as its `reversed` argument):
+/// ```
+/// use prepass::lighting::light_volume::light_volume_sphere_depth_bounds;
+/// use prepass::projection::{DepthConvention, Projection};
+/// let p = Projection::new(0.1, 100.0, DepthConvention::Reversed).unwrap();
+/// let b = light_volume_sphere_depth_bounds(10.0, 1.0, p.near(), p.far(), p.convention());
+/// assert!(b.x < b.y && b.y < 0.02);
+/// assert_eq!(p.convention().wgsl(), 1);
+/// ```
 pub fn light_volume_sphere_depth_bounds(
     center_z: f32,
     radius: f32,
@@ -247,7 +240,7 @@ pub fn light_volume_sphere_depth_bounds24(
 
 /// Exact references (f64).
 pub mod exact {
-    use super::DepthConvention;
+    use crate::projection::DepthConvention;
 
     /// Window depth in f64 (no guards, like the twin: NaN propagates).
     pub fn light_volume_window_depth(

@@ -157,11 +157,11 @@ fn range_code(r: rough::Range) -> u32 {
 }
 
 /// The light-volume WGSL's convention argument: 0 standard, anything else reversed.
-fn convention(code: u32) -> vol::DepthConvention {
+fn convention(code: u32) -> DepthConvention {
     if code == 0 {
-        vol::DepthConvention::Standard
+        DepthConvention::Standard
     } else {
-        vol::DepthConvention::Reversed
+        DepthConvention::Reversed
     }
 }
 
