@@ -32,6 +32,7 @@
 //! other values is unspecified.
 
 use crate::depth24::DEPTH24_MAX;
+use crate::projection::{Depth24Consts, DepthConsts, ReversedDepthConsts};
 
 /// `n/f` with an infinite far plane giving exactly 0 (as WGSL `ld_near_over_far`).
 fn near_over_far(near: f32, far: f32) -> f32 {
@@ -50,58 +51,72 @@ fn divide_or_inf(numerator: f32, s: f32) -> f32 {
 /// View distance of a 24-bit standard-convention depth code (twin of WGSL
 /// `view_z_from_depth24`). See the module docs for the formula and error bound.
 pub fn view_z_from_depth24(d: u32, near: f32, far: f32) -> f32 {
-    view_z_from_depth24_consts(d, [near * DEPTH24_MAX as f32, near_over_far(near, far)])
+    let k = Depth24Consts {
+        near_times_max: near * DEPTH24_MAX as f32,
+        near_over_far: near_over_far(near, far),
+    };
+    view_z_from_depth24_consts(d, k)
 }
 
 /// [`view_z_from_depth24`] with `k = (n·(2^24 − 1), n/f)` from
 /// [`crate::projection::Projection::depth24_consts`] (twin of `view_z_from_depth24_consts`).
-pub fn view_z_from_depth24_consts(d: u32, k: [f32; 2]) -> f32 {
+pub fn view_z_from_depth24_consts(d: u32, k: Depth24Consts) -> f32 {
     let code = d.min(DEPTH24_MAX);
-    let s = (DEPTH24_MAX - code) as f32 + code as f32 * k[1];
-    divide_or_inf(k[0], s)
+    let s = (DEPTH24_MAX - code) as f32 + code as f32 * k.near_over_far;
+    divide_or_inf(k.near_times_max, s)
 }
 
 /// View distance of a float standard-convention depth (twin of WGSL `view_z_from_depth`).
 pub fn view_z_from_depth(z: f32, near: f32, far: f32) -> f32 {
     let r = near_over_far(near, far);
-    view_z_from_depth_consts(z, [near, r, 1.0 - r])
+    let k = DepthConsts {
+        near,
+        near_over_far: r,
+        one_minus_near_over_far: 1.0 - r,
+    };
+    view_z_from_depth_consts(z, k)
 }
 
 /// [`view_z_from_depth`] with `k = (n, n/f, (f − n)/f)` from
 /// [`crate::projection::Projection::depth_consts`]. Below `z = 0.5` the denominator is
 /// `1 − z·(1 − n/f)` (where `1 − z` would round and let the result step backwards), so the
 /// result is monotonic in `z`.
-pub fn view_z_from_depth_consts(z: f32, k: [f32; 3]) -> f32 {
+pub fn view_z_from_depth_consts(z: f32, k: DepthConsts) -> f32 {
     if z.is_nan() {
         return f32::NAN;
     }
     let zc = z.clamp(0.0, 1.0);
     let s = if zc < 0.5 {
-        1.0 - zc * k[2]
+        1.0 - zc * k.one_minus_near_over_far
     } else {
         // Exact in f32 (Sterbenz): the same value the WGSL builds from z's bits
         // (`ld_one_minus`), which keeps it exact under any reassociation on the GPU.
-        (1.0 - zc) + zc * k[1]
+        (1.0 - zc) + zc * k.near_over_far
     };
-    divide_or_inf(k[0], s)
+    divide_or_inf(k.near, s)
 }
 
 /// View distance of a float reversed-convention depth (twin of WGSL
 /// `view_z_from_reversed_depth`). Depth 0 of an infinite projection (the sky) gives `+∞`.
 pub fn view_z_from_reversed_depth(z: f32, near: f32, far: f32) -> f32 {
     let r = near_over_far(near, far);
-    view_z_from_reversed_depth_consts(z, [near, 1.0 - r, r])
+    let k = ReversedDepthConsts {
+        near,
+        one_minus_near_over_far: 1.0 - r,
+        near_over_far: r,
+    };
+    view_z_from_reversed_depth_consts(z, k)
 }
 
 /// [`view_z_from_reversed_depth`] with `k = (n, (f − n)/f, n/f)` from
 /// [`crate::projection::Projection::reversed_depth_consts`].
-pub fn view_z_from_reversed_depth_consts(z: f32, k: [f32; 3]) -> f32 {
+pub fn view_z_from_reversed_depth_consts(z: f32, k: ReversedDepthConsts) -> f32 {
     if z.is_nan() {
         return f32::NAN;
     }
     let zc = z.clamp(0.0, 1.0);
-    let s = zc * k[1] + k[2];
-    divide_or_inf(k[0], s)
+    let s = zc * k.one_minus_near_over_far + k.near_over_far;
+    divide_or_inf(k.near, s)
 }
 
 /// Error bounds of every function here, in f32 ULPs of the exact distance, kept once: the tests,

@@ -31,6 +31,96 @@ impl DepthConvention {
     }
 }
 
+/// The per-pixel constants of WGSL `view_z_from_depth24_consts(d, k)` (standard convention, 24-bit
+/// code `d`): `vz = near_times_max / ((2^24 − 1 − d) + d·near_over_far)`. From
+/// [`Projection::depth24_consts`]; [`to_wgsl`](Self::to_wgsl) gives the `k: vec2<f32>` to upload.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C)]
+pub struct Depth24Consts {
+    /// `n·(2^24 − 1)`: the near plane in code units, the formula's numerator (`k.x`).
+    pub near_times_max: f32,
+    /// `n/f`, exactly 0 for an infinite far plane: the weight of the code in the denominator
+    /// (`k.y`).
+    pub near_over_far: f32,
+}
+
+impl Depth24Consts {
+    /// The vector the WGSL takes, in its order: `(near_times_max, near_over_far)`.
+    pub fn to_wgsl(self) -> [f32; 2] {
+        [self.near_times_max, self.near_over_far]
+    }
+
+    /// The constants from that vector (the inverse of [`to_wgsl`](Self::to_wgsl)).
+    pub fn from_wgsl(k: [f32; 2]) -> Self {
+        Self {
+            near_times_max: k[0],
+            near_over_far: k[1],
+        }
+    }
+}
+
+/// The per-pixel constants of WGSL `view_z_from_depth_consts(z, k)` (standard convention, float
+/// depth `z`): `vz = near / ((1 − z) + z·near_over_far)` for `z ≥ 0.5` and
+/// `near / (1 − z·one_minus_near_over_far)` below. From [`Projection::depth_consts`];
+/// [`to_wgsl`](Self::to_wgsl) gives the `k: vec3<f32>` to upload.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C)]
+pub struct DepthConsts {
+    /// `n`, the near plane (`k.x`).
+    pub near: f32,
+    /// `n/f`, exactly 0 for an infinite far plane (`k.y`).
+    pub near_over_far: f32,
+    /// `(f − n)/f = 1 − n/f`, exactly 1 for an infinite far plane (`k.z`).
+    pub one_minus_near_over_far: f32,
+}
+
+impl DepthConsts {
+    /// The vector the WGSL takes, in its order: `(near, near_over_far, one_minus_near_over_far)`.
+    pub fn to_wgsl(self) -> [f32; 3] {
+        [self.near, self.near_over_far, self.one_minus_near_over_far]
+    }
+
+    /// The constants from that vector (the inverse of [`to_wgsl`](Self::to_wgsl)).
+    pub fn from_wgsl(k: [f32; 3]) -> Self {
+        Self {
+            near: k[0],
+            near_over_far: k[1],
+            one_minus_near_over_far: k[2],
+        }
+    }
+}
+
+/// The per-pixel constants of WGSL `view_z_from_reversed_depth_consts(z, k)` (reversed
+/// convention, float depth `z`): `vz = near / (z·one_minus_near_over_far + near_over_far)`. From
+/// [`Projection::reversed_depth_consts`]; [`to_wgsl`](Self::to_wgsl) gives the `k: vec3<f32>` to
+/// upload. The order differs from [`DepthConsts`]: it is the order the WGSL reads.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C)]
+pub struct ReversedDepthConsts {
+    /// `n`, the near plane (`k.x`).
+    pub near: f32,
+    /// `(f − n)/f = 1 − n/f`, exactly 1 for an infinite far plane: the weight of `z` (`k.y`).
+    pub one_minus_near_over_far: f32,
+    /// `n/f`, exactly 0 for an infinite far plane: the denominator at `z = 0` (`k.z`).
+    pub near_over_far: f32,
+}
+
+impl ReversedDepthConsts {
+    /// The vector the WGSL takes, in its order: `(near, one_minus_near_over_far, near_over_far)`.
+    pub fn to_wgsl(self) -> [f32; 3] {
+        [self.near, self.one_minus_near_over_far, self.near_over_far]
+    }
+
+    /// The constants from that vector (the inverse of [`to_wgsl`](Self::to_wgsl)).
+    pub fn from_wgsl(k: [f32; 3]) -> Self {
+        Self {
+            near: k[0],
+            one_minus_near_over_far: k[1],
+            near_over_far: k[2],
+        }
+    }
+}
+
 /// A rejected [`Projection`] parameter: which field, and why.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ProjectionError {
@@ -133,22 +223,24 @@ impl Projection {
     }
 
     /// Constants for WGSL `view_z_from_depth24_consts(d, k)`: `k = (n·(2^24 − 1), n/f)`, each
-    /// computed in f64 and rounded once (standard convention codes).
-    pub fn depth24_consts(&self) -> [f32; 2] {
-        [
-            (f64::from(self.near) * f64::from(DEPTH24_MAX)) as f32,
-            self.ratio() as f32,
-        ]
+    /// computed in f64 and rounded once (standard convention codes). Upload
+    /// [`Depth24Consts::to_wgsl`].
+    pub fn depth24_consts(&self) -> Depth24Consts {
+        Depth24Consts {
+            near_times_max: (f64::from(self.near) * f64::from(DEPTH24_MAX)) as f32,
+            near_over_far: self.ratio() as f32,
+        }
     }
 
     /// Constants for WGSL `view_z_from_depth_consts(z, k)`: `k = (n, n/f, (f − n)/f)`
-    /// (standard convention; `(0, 1)` in the last two when infinite).
-    pub fn depth_consts(&self) -> [f32; 3] {
-        [
-            self.near,
-            self.ratio() as f32,
-            self.one_minus_ratio() as f32,
-        ]
+    /// (standard convention; `(0, 1)` in the last two when infinite), the last two computed in
+    /// f64 and rounded once. Upload [`DepthConsts::to_wgsl`].
+    pub fn depth_consts(&self) -> DepthConsts {
+        DepthConsts {
+            near: self.near,
+            near_over_far: self.ratio() as f32,
+            one_minus_near_over_far: self.one_minus_ratio() as f32,
+        }
     }
 
     /// `(f − n)/f` in f64 (1 for an infinite far plane).
@@ -161,13 +253,14 @@ impl Projection {
     }
 
     /// Constants for WGSL `view_z_from_reversed_depth_consts(z, k)`:
-    /// `k = (n, (f − n)/f, n/f)` (reversed convention; `(1, 0)` in the last two when infinite).
-    pub fn reversed_depth_consts(&self) -> [f32; 3] {
-        [
-            self.near,
-            self.one_minus_ratio() as f32,
-            self.ratio() as f32,
-        ]
+    /// `k = (n, (f − n)/f, n/f)` (reversed convention; `(1, 0)` in the last two when infinite),
+    /// the last two computed in f64 and rounded once. Upload [`ReversedDepthConsts::to_wgsl`].
+    pub fn reversed_depth_consts(&self) -> ReversedDepthConsts {
+        ReversedDepthConsts {
+            near: self.near,
+            one_minus_near_over_far: self.one_minus_ratio() as f32,
+            near_over_far: self.ratio() as f32,
+        }
     }
 
     /// Exact window depth of view distance `vz` under this projection's convention (f64).
@@ -259,6 +352,27 @@ mod tests {
         let e = Projection::new(1.0, 0.5, s).unwrap_err().to_string();
         assert!(e.contains("`far`") && e.contains("0.5"), "{e}");
         assert!(Projection::new(0.1, f32::INFINITY, s).is_ok());
+    }
+
+    #[test]
+    fn named_constants_reach_the_wgsl_in_its_order() {
+        let p = Projection::new(0.5, 100.0, DepthConvention::Standard).unwrap();
+        let k24 = p.depth24_consts();
+        assert_eq!(k24.to_wgsl(), [k24.near_times_max, k24.near_over_far]);
+        assert_eq!(Depth24Consts::from_wgsl(k24.to_wgsl()), k24);
+        let k = p.depth_consts();
+        assert_eq!(
+            k.to_wgsl(),
+            [k.near, k.near_over_far, k.one_minus_near_over_far]
+        );
+        assert_eq!(DepthConsts::from_wgsl(k.to_wgsl()), k);
+        let kr = p.reversed_depth_consts();
+        assert_eq!(
+            kr.to_wgsl(),
+            [kr.near, kr.one_minus_near_over_far, kr.near_over_far]
+        );
+        assert_eq!(ReversedDepthConsts::from_wgsl(kr.to_wgsl()), kr);
+        assert_eq!((k.near_over_far, kr.near_over_far), (0.005, 0.005));
     }
 
     #[test]

@@ -67,7 +67,7 @@ fn depth24_every_code_on_the_stiff_grid() {
             gpu(),
             LINEAR_DEPTH,
             "view_z_from_depth24_consts",
-            &[Arg::splat_vec(&k)],
+            &[Arg::splat_vec(&k.to_wgsl())],
             case,
             Some(&twin),
         )
@@ -102,7 +102,7 @@ fn standard_float_depths_on_the_stiff_grid() {
             Call {
                 source: LINEAR_DEPTH,
                 function: "view_z_from_depth_consts",
-                extra: &[Arg::splat_vec(&k)],
+                extra: &[Arg::splat_vec(&k.to_wgsl())],
             },
             &depths,
             (case, Standard),
@@ -139,7 +139,7 @@ fn reversed_float_depths_on_the_stiff_grid() {
             Call {
                 source: LINEAR_DEPTH,
                 function: "view_z_from_reversed_depth_consts",
-                extra: &[Arg::splat_vec(&k)],
+                extra: &[Arg::splat_vec(&k.to_wgsl())],
             },
             &depths,
             (case, Reversed),
@@ -289,21 +289,26 @@ fn every_path_holds_its_conforming_bound_under_emulation() {
         (
             "view_z_from_depth24_consts",
             true,
-            Some(|c| c.projection(Standard).depth24_consts().to_vec()),
+            Some(|c| c.projection(Standard).depth24_consts().to_wgsl().to_vec()),
             Standard,
         ),
         ("view_z_from_depth", false, None, Standard),
         (
             "view_z_from_depth_consts",
             false,
-            Some(|c| c.projection(Standard).depth_consts().to_vec()),
+            Some(|c| c.projection(Standard).depth_consts().to_wgsl().to_vec()),
             Standard,
         ),
         ("view_z_from_reversed_depth", false, None, Reversed),
         (
             "view_z_from_reversed_depth_consts",
             false,
-            Some(|c| c.projection(Reversed).reversed_depth_consts().to_vec()),
+            Some(|c| {
+                c.projection(Reversed)
+                    .reversed_depth_consts()
+                    .to_wgsl()
+                    .to_vec()
+            }),
             Reversed,
         ),
     ];

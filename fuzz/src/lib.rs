@@ -278,9 +278,9 @@ pub const BUILDERS: &[Entry] = &[
             Ok(p) => {
                 // Documented: every per-pixel constant is finite and n·(2^24 − 1), n/f are normal
                 // or zero (n/f = 0 exactly when far = +Inf).
-                let k24 = p.depth24_consts();
-                let k = p.depth_consts();
-                let kr = p.reversed_depth_consts();
+                let k24 = p.depth24_consts().to_wgsl();
+                let k = p.depth_consts().to_wgsl();
+                let kr = p.reversed_depth_consts().to_wgsl();
                 for c in k24.iter().chain(&k).chain(&kr) {
                     assert!(c.is_finite() && *c >= 0.0, "{p:?}: constant {c}");
                 }

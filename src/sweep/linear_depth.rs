@@ -302,7 +302,7 @@ pub fn grid_table(
             };
             let row = match path {
                 DepthPath::Code24 => {
-                    let k = [Arg::splat_vec(&p.depth24_consts())];
+                    let k = [Arg::splat_vec(&p.depth24_consts().to_wgsl())];
                     GridRow {
                         path,
                         case,
@@ -313,7 +313,7 @@ pub fn grid_table(
                     }
                 }
                 DepthPath::FloatStandard => {
-                    let k = [Arg::splat_vec(&p.depth_consts())];
+                    let k = [Arg::splat_vec(&p.depth_consts().to_wgsl())];
                     GridRow {
                         path,
                         case,
@@ -324,7 +324,7 @@ pub fn grid_table(
                     }
                 }
                 DepthPath::FloatReversed => {
-                    let k = [Arg::splat_vec(&p.reversed_depth_consts())];
+                    let k = [Arg::splat_vec(&p.reversed_depth_consts().to_wgsl())];
                     GridRow {
                         path,
                         case,

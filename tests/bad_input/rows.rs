@@ -17,7 +17,9 @@ use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
 use prepass::position as pos;
 use prepass::precision::inputs::{self, ChannelError};
 use prepass::precision::metrics;
-use prepass::projection::{DepthConvention, Projection};
+use prepass::projection::{
+    Depth24Consts, DepthConsts, DepthConvention, Projection, ReversedDepthConsts,
+};
 use prepass::roughness as rough;
 
 /// A value in the table: an argument or a result.
@@ -281,7 +283,7 @@ pub const FUNCS: &[Func] = &[
         twin: |a| {
             V::F32(ld::view_z_from_depth24_consts(
                 a[0].u32(),
-                a[1].vec2().to_array(),
+                Depth24Consts::from_wgsl(a[1].vec2().to_array()),
             ))
         },
     },
@@ -296,7 +298,7 @@ pub const FUNCS: &[Func] = &[
         twin: |a| {
             V::F32(ld::view_z_from_depth_consts(
                 a[0].f32(),
-                a[1].vec3().to_array(),
+                DepthConsts::from_wgsl(a[1].vec3().to_array()),
             ))
         },
     },
@@ -320,7 +322,7 @@ pub const FUNCS: &[Func] = &[
         twin: |a| {
             V::F32(ld::view_z_from_reversed_depth_consts(
                 a[0].f32(),
-                a[1].vec3().to_array(),
+                ReversedDepthConsts::from_wgsl(a[1].vec3().to_array()),
             ))
         },
     },

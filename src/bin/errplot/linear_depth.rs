@@ -129,7 +129,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             (
                 "stable_consts",
                 "view_z_from_depth24_consts",
-                vec![Arg::splat_vec(&k24)],
+                vec![Arg::splat_vec(&k24.to_wgsl())],
                 Box::new(move |d| ld::view_z_from_depth24_consts(d, k24)),
             ),
             (
@@ -226,7 +226,12 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             "view_z_from_depth24_consts" => (
                 vec![
                     TimedArg::Column(tile.clone()),
-                    TimedArg::Splat([k24[0].to_bits(), k24[1].to_bits(), 0, 0]),
+                    TimedArg::Splat([
+                        k24.near_times_max.to_bits(),
+                        k24.near_over_far.to_bits(),
+                        0,
+                        0,
+                    ]),
                 ],
                 twin_timer(tile.clone(), move |d| {
                     ld::view_z_from_depth24_consts(d, k24)
