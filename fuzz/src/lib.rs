@@ -151,7 +151,11 @@ pub const ENCODERS: &[Entry] = &[
             assert_eq!(p >> 24, 0, "{d:#x}: alpha byte must be 0");
             assert_eq!(depth24::depth24_from_packed(p), code, "{d:#x}");
             let [r, g, b, _] = depth24::unpack4x8unorm(p);
-            assert_eq!(depth24::depth24_from_rgb8(Vec3::new(r, g, b)), code, "{d:#x}");
+            assert_eq!(
+                depth24::depth24_from_rgb8(Vec3::new(r, g, b)),
+                code,
+                "{d:#x}"
+            );
         },
     },
     Entry {
