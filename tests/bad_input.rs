@@ -135,12 +135,12 @@ fn from_words(like: V, w: &[u32]) -> V {
 fn func(name: &str) -> &'static Func {
     FUNCS
         .iter()
-        .find(|f| f.name == name)
+        .find(|f| f.key() == name)
         .unwrap_or_else(|| panic!("row names `{name}`, which is not in FUNCS"))
 }
 
 fn rows_of(f: &Func) -> Vec<&'static Row> {
-    ROWS.iter().filter(|r| r.func == f.name).collect()
+    ROWS.iter().filter(|r| r.func == f.key()).collect()
 }
 
 fn describe(r: &Row) -> String {
@@ -211,7 +211,11 @@ fn wgsl_gives_the_documented_answers_on_the_adapter() {
 #[test]
 fn every_function_has_rows_and_every_row_a_function() {
     for f in FUNCS {
-        assert!(!rows_of(f).is_empty(), "`{}` has no bad-input rows", f.name);
+        assert!(
+            !rows_of(f).is_empty(),
+            "`{}` has no bad-input rows",
+            f.key()
+        );
     }
     for r in ROWS {
         func(r.func);
@@ -257,9 +261,16 @@ fn table_line(r: &Row) -> String {
     } else {
         "Rust (no WGSL)"
     };
+    // The key is the WGSL name; a Rust-only function's key is its Rust path already.
+    let twin = if f.wgsl.is_some() {
+        format!("`{}`", f.rust)
+    } else {
+        "—".to_string()
+    };
     format!(
-        "| `{}` | {} | `{}` | `{}` | {} | {} |",
+        "| `{}` | {} | {} | `{}` | `{}` | {} | {} |",
         r.func,
+        twin,
         r.case,
         args.join(", "),
         text(r.expect),
@@ -275,8 +286,8 @@ const END: &str = "<!-- bad-input-table:end -->";
 fn readme_table_is_exactly_the_rows() {
     let readme = include_str!("../README.md");
     let want: Vec<String> = ROWS.iter().map(table_line).collect();
-    let header = "| function | bad input | arguments | WGSL and Rust return | checked | why |\n\
-                  |---|---|---|---|---|---|";
+    let header = "| function | Rust twin | bad input | arguments | WGSL and Rust return | checked | why |\n\
+                  |---|---|---|---|---|---|---|";
     let expected = format!("{BEGIN}\n{header}\n{}\n{END}", want.join("\n"));
     let found = readme
         .find(BEGIN)
