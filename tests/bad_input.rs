@@ -1,5 +1,6 @@
-//! The bad-input contract (README, "Bad input"): every row of `bad_input/rows.rs` runs through
-//! the WGSL on the adapter and through the Rust twin, and both must return the documented answer.
+//! The bad-input contract (README, "Bad input"): every row of `bad_input/` (one file per module,
+//! listed in `bad_input/rows.rs`) runs through the WGSL on the adapter and through the Rust twin,
+//! and both must return the documented answer.
 //! The README's table is generated from the same rows and must match them exactly.
 
 mod common;
@@ -9,7 +10,7 @@ mod rows;
 
 use common::gpu;
 use prepass::harness::Arg;
-use rows::{FUNCS, Func, ROWS, Row, V, WGSL_HELPERS};
+use rows::{Func, Row, V, funcs, rows, wgsl_helpers};
 
 fn f32_text(x: f32) -> String {
     if x.is_nan() {
@@ -133,14 +134,13 @@ fn from_words(like: V, w: &[u32]) -> V {
 }
 
 fn func(name: &str) -> &'static Func {
-    FUNCS
-        .iter()
+    funcs()
         .find(|f| f.key() == name)
-        .unwrap_or_else(|| panic!("row names `{name}`, which is not in FUNCS"))
+        .unwrap_or_else(|| panic!("row names `{name}`, which is in no FUNCS"))
 }
 
 fn rows_of(f: &Func) -> Vec<&'static Row> {
-    ROWS.iter().filter(|r| r.func == f.key()).collect()
+    rows().filter(|r| r.func == f.key()).collect()
 }
 
 fn describe(r: &Row) -> String {
@@ -151,7 +151,7 @@ fn describe(r: &Row) -> String {
 #[test]
 fn rust_twins_give_the_documented_answers() {
     let mut wrong = Vec::new();
-    for r in ROWS {
+    for r in rows() {
         let got = (func(r.func).twin)(r.args);
         if !same(got, r.expect) {
             wrong.push(format!(
@@ -169,7 +169,7 @@ fn rust_twins_give_the_documented_answers() {
 fn wgsl_gives_the_documented_answers_on_the_adapter() {
     let mut wrong = Vec::new();
     let mut ran = 0;
-    for f in FUNCS {
+    for f in funcs() {
         let Some((source, name)) = f.wgsl else {
             continue;
         };
@@ -210,14 +210,14 @@ fn wgsl_gives_the_documented_answers_on_the_adapter() {
 
 #[test]
 fn every_function_has_rows_and_every_row_a_function() {
-    for f in FUNCS {
+    for f in funcs() {
         assert!(
             !rows_of(f).is_empty(),
             "`{}` has no bad-input rows",
             f.key()
         );
     }
-    for r in ROWS {
+    for r in rows() {
         func(r.func);
     }
 }
@@ -235,20 +235,20 @@ fn every_shipped_wgsl_function_is_in_the_table() {
             // A row may call the function directly, or through a `bad_input_<name>` wrapper
             // appended to the file's text (for arguments the harness cannot feed, e.g. matrices).
             let wrapper = format!("bad_input_{name}");
-            let covered = FUNCS.iter().any(|g| {
+            let covered = funcs().any(|g| {
                 g.wgsl.is_some_and(|(src, n)| {
                     (src == file.source && n == name)
                         || (src.starts_with(file.source) && n == wrapper)
                 })
             });
-            if !covered && !WGSL_HELPERS.iter().any(|(h, _)| *h == name) {
+            if !covered && !wgsl_helpers().any(|(h, _)| *h == name) {
                 missing.push(format!("{}: `{name}`", file.name));
             }
         }
     }
     assert!(
         missing.is_empty(),
-        "WGSL functions without bad-input rows (add them to tests/bad_input/rows.rs):\n{}",
+        "WGSL functions without bad-input rows (add them to their module's file in tests/bad_input/):\n{}",
         missing.join("\n")
     );
 }
@@ -285,7 +285,7 @@ const END: &str = "<!-- bad-input-table:end -->";
 #[test]
 fn readme_table_is_exactly_the_rows() {
     let readme = include_str!("../README.md");
-    let want: Vec<String> = ROWS.iter().map(table_line).collect();
+    let want: Vec<String> = rows().map(table_line).collect();
     let header = "| function | Rust twin | bad input | arguments | WGSL and Rust return | checked | why |\n\
                   |---|---|---|---|---|---|---|";
     let expected = format!("{BEGIN}\n{header}\n{}\n{END}", want.join("\n"));
@@ -296,7 +296,7 @@ fn readme_table_is_exactly_the_rows() {
     assert_eq!(
         found,
         Some(expected.as_str()),
-        "README.md's bad-input table differs from tests/bad_input/rows.rs; replace the block \
+        "README.md's bad-input table differs from the rows in tests/bad_input/; replace the block \
          between the markers with:\n\n{expected}\n"
     );
 }

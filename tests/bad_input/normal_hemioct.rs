@@ -1,0 +1,104 @@
+//! `wgsl/normal_hemioct.wgsl` and `normal::hemioct`: hemi-octahedral view-space normals in 24
+//! bits.
+
+use super::normal::{B15, B127, B247, normal_vec4};
+use super::{Func, INF, NAN, NEG_NAN, Row, SNAN, SUB_MAX, SUB_MIN, V};
+use prepass::normal::hemioct;
+
+pub const FUNCS: &[Func] = &[
+    Func {
+        rust: "normal::hemioct::encode_normal_hemioct24",
+        wgsl: Some((prepass::wgsl::NORMAL_HEMIOCT, "encode_normal_hemioct24")),
+        twin: |a| V::U32(hemioct::encode_normal_hemioct24(a[0].vec3())),
+    },
+    Func {
+        rust: "normal::hemioct::encode_normal_hemioct24_fast",
+        wgsl: Some((
+            prepass::wgsl::NORMAL_HEMIOCT,
+            "encode_normal_hemioct24_fast",
+        )),
+        twin: |a| V::U32(hemioct::encode_normal_hemioct24_fast(a[0].vec3())),
+    },
+    Func {
+        rust: "normal::hemioct::decode_normal_hemioct24",
+        wgsl: Some((prepass::wgsl::NORMAL_HEMIOCT, "decode_normal_hemioct24")),
+        twin: |a| V::Vec3(hemioct::decode_normal_hemioct24(a[0].u32()).to_array()),
+    },
+    Func {
+        rust: "normal::hemioct::encode_normal_hemioct24_unorm",
+        wgsl: Some((
+            prepass::wgsl::NORMAL_HEMIOCT,
+            "encode_normal_hemioct24_unorm",
+        )),
+        twin: |a| V::Vec4(hemioct::encode_normal_hemioct24_unorm(a[0].vec3())),
+    },
+    Func {
+        rust: "normal::hemioct::decode_normal_hemioct24_unorm",
+        wgsl: Some((
+            prepass::wgsl::NORMAL_HEMIOCT,
+            "decode_normal_hemioct24_unorm",
+        )),
+        twin: |a| V::Vec3(hemioct::decode_normal_hemioct24_unorm(normal_vec4(a[0])).to_array()),
+    },
+];
+
+pub const WGSL_HELPERS: &[(&str, &str)] = &[
+    (
+        "hemioct_sanitize",
+        "private to normal_hemioct.wgsl: NaN/Inf/subnormal/z < 0 handling, behind every encoder row",
+    ),
+    (
+        "hemioct_continuous",
+        "private to normal_hemioct.wgsl: continuous code coordinates, behind the encoder rows",
+    ),
+    (
+        "hemioct_lattice",
+        "private to normal_hemioct.wgsl: a code's integer vector, behind the decoder rows",
+    ),
+    (
+        "hemioct_sin2",
+        "private to normal_hemioct.wgsl: the precise encoder's score, behind its rows",
+    ),
+];
+
+#[rustfmt::skip]
+pub const ROWS: &[Row] = &[
+    // Encoders (the rules they share are in `normal.rs`).
+    Row { func: "encode_normal_hemioct24", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x007f_f7ff), why: "NaN anywhere → code of +z" },
+    Row { func: "encode_normal_hemioct24", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x007f_f7ff), why: "every NaN → code of +z" },
+    Row { func: "encode_normal_hemioct24", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x00ff_ffff), why: "infinities win: code of +x" },
+    Row { func: "encode_normal_hemioct24", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x00ff_f7ff), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "encode_normal_hemioct24", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0x007f_f7ff), why: "−z clamped to the equator: zero → code of +z" },
+    Row { func: "encode_normal_hemioct24", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x007f_f7ff), why: "all subnormal = zero → code of +z" },
+    Row { func: "encode_normal_hemioct24", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0xfff), why: "subnormals count as 0: code of +y" },
+    Row { func: "encode_normal_hemioct24", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x007f_f7ff), why: "code of +z" },
+    Row { func: "encode_normal_hemioct24", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x007f_f7ff), why: "code of +z" },
+    Row { func: "encode_normal_hemioct24", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0x007f_fd54), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "encode_normal_hemioct24", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x00ff_f000), why: "no underflow: code of −y" },
+    Row { func: "encode_normal_hemioct24", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x00ff_ffff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "encode_normal_hemioct24", case: "out of range: z < 0", args: &[V::Vec3([1.0, 0.0, -5.0])], expect: V::U32(0x00ff_ffff), why: "z clamped to 0: code of +x" },
+    Row { func: "encode_normal_hemioct24_fast", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x0080_0800), why: "NaN anywhere → code of +z" },
+    Row { func: "encode_normal_hemioct24_fast", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x0080_0800), why: "every NaN → code of +z" },
+    Row { func: "encode_normal_hemioct24_fast", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x00ff_ffff), why: "infinities win: code of +x" },
+    Row { func: "encode_normal_hemioct24_fast", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x00ff_f800), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "encode_normal_hemioct24_fast", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0x0080_0800), why: "−z clamped to the equator: zero → code of +z" },
+    Row { func: "encode_normal_hemioct24_fast", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x0080_0800), why: "all subnormal = zero → code of +z" },
+    Row { func: "encode_normal_hemioct24_fast", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0xfff), why: "subnormals count as 0: code of +y" },
+    Row { func: "encode_normal_hemioct24_fast", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x0080_0800), why: "code of +z" },
+    Row { func: "encode_normal_hemioct24_fast", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x0080_0800), why: "code of +z" },
+    Row { func: "encode_normal_hemioct24_fast", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0x0080_0d55), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "encode_normal_hemioct24_fast", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x00ff_f000), why: "no underflow: code of −y" },
+    Row { func: "encode_normal_hemioct24_fast", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x00ff_ffff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "encode_normal_hemioct24_fast", case: "out of range: z < 0", args: &[V::Vec3([1.0, 0.0, -5.0])], expect: V::U32(0x00ff_ffff), why: "z clamped to 0: code of +x" },
+    // Decoders.
+    Row { func: "decode_normal_hemioct24", case: "all ones (unused bits 24–31 set)", args: &[V::U32(u32::MAX)], expect: V::Vec3([1.0, 0.0, 0.0]), why: "high bits ignored; corner (M, M) = +x" },
+    Row { func: "decode_normal_hemioct24", case: "unused bits 24–31 only", args: &[V::U32(0xff00_0000)], expect: V::Vec3([-1.0, 0.0, 0.0]), why: "high bits ignored; corner (0, 0) = −x" },
+    Row { func: "decode_normal_hemioct24", case: "unused bits set, corner (M, 0)", args: &[V::U32(0xab00_0fff)], expect: V::Vec3([0.0, 1.0, 0.0]), why: "high bits ignored; +y" },
+    // Render-target forms.
+    Row { func: "encode_normal_hemioct24_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec4([1.0, B247, B127, 0.0]), why: "+z: code 0x7ff7ff, alpha 0" },
+    Row { func: "encode_normal_hemioct24_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec4([1.0, 1.0, 1.0, 0.0]), why: "+x: code 0xffffff" },
+    Row { func: "encode_normal_hemioct24_unorm", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::Vec4([1.0, B247, B127, 0.0]), why: "+z" },
+    Row { func: "decode_normal_hemioct24_unorm", case: "NaN", args: &[V::Vec4([NAN, NAN, NAN, NAN])], expect: V::Vec3([-1.0, 0.0, 0.0]), why: "bytes 0: corner (0, 0) = −x" },
+    Row { func: "decode_normal_hemioct24_unorm", case: "+Inf (alpha set)", args: &[V::Vec4([INF, INF, INF, INF])], expect: V::Vec3([1.0, 0.0, 0.0]), why: "alpha ignored; corner (M, M) = +x" },
+    Row { func: "decode_normal_hemioct24_unorm", case: "out of range, −Inf, NaN", args: &[V::Vec4([INF, B15, -1.0, NAN])], expect: V::Vec3([0.0, 1.0, 0.0]), why: "code (0xfff, 0): +y" },
+];
