@@ -13,7 +13,7 @@
 //! | [`position`] | `wgsl/position.wgsl` | frustum rays, view/world/camera-relative position rebuild |
 //! | [`scene`] | composed | scene declaration → minimal WGSL module + G-buffer layout |
 //! | [`roughness`] | `wgsl/roughness.wgsl` | specular exponent in log range, 8 bits; normal + roughness RGBA8 texel |
-//! | [`lighting`] | `wgsl/lpp.wgsl`, `wgsl/aggregate_light.wgsl`, `wgsl/light_volume.wgsl` | light pre-pass P/C and specular reconstruction, aggregate vertex lights, light volumes and depth bounds |
+//! | [`lighting`] (`lpp`, `aggregate_light`, `light_volume`) | `wgsl/lpp.wgsl`, `wgsl/aggregate_light.wgsl`, `wgsl/light_volume.wgsl` | light pre-pass P/C and specular reconstruction, aggregate vertex lights, light volumes and depth bounds; each twin has its WGSL function's name |
 //! | [`normal`] | `wgsl/normal_*.wgsl` | normal encodings: xyz8, xy FP16, octahedral 16/24/32, hemi-octahedral 24 |
 //! | [`precision`] | — | error metrics (ULP, relative, angular, mismatches) and test inputs |
 //! | `precision::strategies`, `precision::check` | any | proptest strategies with adversarial cases; batched checks of any WGSL against a Rust reference, shrinking on the adapter (features `proptest`; `check` also `harness`) |
