@@ -9,11 +9,7 @@
 mod common;
 
 use common::gpu;
-use prepass::conforming::{EmulatedKernel, Emulation, Policy};
-use prepass::harness::Arg;
-use prepass::scene::{NormalChoice, Scene};
-use prepass::sweep::conforming::emulated_codec_sweep;
-use prepass::sweep::normal::{CODECS, adversarial_directions, fibonacci_directions, round_trip};
+use prepass::conforming::{Emulation, Policy};
 use std::fmt::Write as _;
 use std::sync::Mutex;
 
@@ -56,86 +52,52 @@ fn adapter_line() -> String {
 
 #[test]
 fn normal_encodings() {
+    use prepass::sweep::conforming::normal_figures;
+    use prepass::sweep::normal::{adversarial_directions, fibonacci_directions};
     // One sample for the adapter and the emulation, so the columns compare.
     let mut inputs = fibonacci_directions(1 << 18);
     inputs.extend(adversarial_directions());
+    let rows = normal_figures(
+        gpu(),
+        &inputs,
+        &[Policy::Upper, Policy::Lower, Policy::Seeded(1)],
+    )
+    .unwrap();
     let mut readme = String::from(
         "| encoding | bits | target format | max° | mean° | max° on the worst conforming adapter | SPIR-V encode / decode |\n|---|---|---|---|---|---|---|\n",
     );
     let mut full = adapter_line();
-    full.push_str(&
-        format!("\n| encoding | bits | max° | mean° | emulated max° (upper / lower / seeded) | emulated mean° | codes ≠ Rust twin (emulated, of {}) | max \\|len − 1\\| of emulated decodes |\n|---|---|---|---|---|---|---|---|\n", inputs.len()),
+    let _ = writeln!(
+        full,
+        "\n| encoding | bits | max° | mean° | emulated max° (upper / lower / seeded) | emulated mean° | codes ≠ Rust twin (emulated, of {}) | max \\|len − 1\\| of emulated decodes |\n|---|---|---|---|---|---|---|---|",
+        inputs.len()
     );
-    for c in &CODECS {
-        let hemisphere = c.name.starts_with("hemioct") || c.name.starts_with("xy");
-        let pick = |rt: &prepass::sweep::normal::RoundTrip| {
-            if hemisphere {
-                rt.error_upper.clone()
-            } else {
-                rt.error.clone()
-            }
-        };
-        let plain = pick(&round_trip(gpu(), c, &inputs).unwrap());
-        // 65,536 codes spread over the code space (every code of a 16-bit one: 65,521 is odd).
-        let codes: Vec<u32> = (0..1u64 << 16)
-            .map(|i| ((i * 65_521) % (1u64 << c.bits)) as u32)
-            .collect();
-        let (mut maxes, mut mean, mut changed, mut len) = (Vec::new(), 0.0f64, 0u64, 0.0f64);
-        for policy in [Policy::Upper, Policy::Lower, Policy::Seeded(1)] {
-            let e =
-                emulated_codec_sweep(gpu(), c, &Emulation::new(policy), &inputs, &codes).unwrap();
-            let s = pick(&e.round_trip);
-            maxes.push(s.max);
-            mean = mean.max(s.mean());
-            changed = changed.max(e.round_trip.twin_encode.count);
-            len = len.max(e.round_trip_length.0).max(e.decoder.max_len_error);
-        }
-        let worst = maxes.iter().copied().fold(0.0, f64::max);
-        let enc = prepass::wgsl::spirv_instruction_count(c.source, c.encode)
-            .unwrap()
-            .total;
-        let dec = prepass::wgsl::spirv_instruction_count(c.source, c.decode)
-            .unwrap()
-            .total;
-        let encoding = prepass::scene::NormalEncoding::ALL
-            .into_iter()
-            .find(|e| {
-                format!("{e:?}").to_lowercase() == c.name.trim_end_matches(" fast").replace(' ', "")
-            })
-            .unwrap_or_else(|| panic!("no NormalEncoding for {}", c.name));
-        let scene = Scene {
-            normal: NormalChoice {
-                encoding: Some(encoding),
-                fast_encoder: c.name.ends_with("fast"),
-            },
-            ..Scene::default()
-        };
-        let format = scene
-            .gbuffer()
-            .unwrap()
-            .targets
-            .iter()
-            .find(|t| t.name == "normal")
-            .map(|t| format!("{:?}", t.format.to_wgpu()))
-            .unwrap_or_default();
+    for r in &rows {
+        let worst = r.emulated_max.iter().copied().fold(0.0, f64::max);
         let _ = writeln!(
             readme,
-            "| {} | {} | {format} | {:.4} | {:.4} | {worst:.4} | {enc} / {dec} |",
-            c.name,
-            c.bits,
-            plain.max,
-            plain.mean()
+            "| {} | {} | {} | {:.4} | {:.4} | {worst:.4} | {} / {} |",
+            r.name,
+            r.bits,
+            r.target,
+            r.adapter.max,
+            r.adapter.mean(),
+            r.spirv.0,
+            r.spirv.1
         );
         let _ = writeln!(
             full,
-            "| {} | {} | {:.6} | {:.6} | {:.6} / {:.6} / {:.6} | {mean:.6} | {changed} | {len:.3e} |",
-            c.name,
-            c.bits,
-            plain.max,
-            plain.mean(),
-            maxes[0],
-            maxes[1],
-            maxes[2]
+            "| {} | {} | {:.6} | {:.6} | {:.6} / {:.6} / {:.6} | {:.6} | {} | {:.3e} |",
+            r.name,
+            r.bits,
+            r.adapter.max,
+            r.adapter.mean(),
+            r.emulated_max[0],
+            r.emulated_max[1],
+            r.emulated_max[2],
+            r.emulated_mean,
+            r.twin_changed,
+            r.max_len_error
         );
     }
     publish("README.md", "normal-encodings", &readme);
@@ -144,35 +106,14 @@ fn normal_encodings() {
 
 #[test]
 fn linear_depth() {
-    use prepass::linear_depth::bounds;
-    use prepass::sweep::linear_depth::{PATHS, sampled_worst};
     let mut table = String::from(
         "| function | max ULP (this adapter) | max ULP (worst emulated) | bound, correctly rounded | bound, every conforming adapter |\n|---|---|---|---|---|\n",
     );
-    for path in &PATHS {
-        let (cr, conf, _) = bounds::of(path.function).unwrap();
-        let k = gpu()
-            .kernel(prepass::wgsl::LINEAR_DEPTH, path.function)
-            .unwrap();
-        let plain = sampled_worst(path, &|a: &[Arg<'_>], n| Ok(k.run(a, n)?.as_f32().to_vec()))
-            .unwrap()
-            .0;
-        let mut worst = 0.0f64;
-        for policy in Policy::WORST {
-            let k = EmulatedKernel::new(
-                gpu(),
-                prepass::wgsl::LINEAR_DEPTH,
-                path.function,
-                &Emulation::new(policy),
-            )
-            .unwrap();
-            let run = |a: &[Arg<'_>], n: u64| Ok(k.run(a, n)?.0.as_f32().to_vec());
-            worst = worst.max(sampled_worst(path, &run).unwrap().0);
-        }
+    for r in prepass::sweep::conforming::linear_depth_figures(gpu(), &Policy::WORST).unwrap() {
         let _ = writeln!(
             table,
-            "| `{}` | {plain:.2} | {worst:.2} | {cr:.2} | {conf:.2} |",
-            path.function
+            "| `{}` | {:.2} | {:.2} | {:.2} | {:.2} |",
+            r.function, r.adapter, r.emulated, r.bound_correctly_rounded, r.bound_conforming
         );
     }
     publish("README.md", "linear-depth", &table);

@@ -156,3 +156,155 @@ pub fn emulated_codec_sweep(
         max_code_step,
     })
 }
+
+/// One encoding's published figures: its round trip on the adapter and on the emulated worst
+/// adapter, over the same inputs.
+#[derive(Clone, Debug)]
+pub struct NormalFigures {
+    /// The codec's table name.
+    pub name: &'static str,
+    /// Bits of the code.
+    pub bits: u32,
+    /// The render-target format the scene stores it in (`Scene::gbuffer`).
+    pub target: String,
+    /// Round-trip angle (degrees) on the adapter (z ≥ 0 only for the hemisphere codes and xy
+    /// FP16).
+    pub adapter: crate::precision::metrics::ErrorStats,
+    /// Largest round-trip angle under each policy, in the order given.
+    pub emulated_max: Vec<f64>,
+    /// Largest mean round-trip angle over the policies.
+    pub emulated_mean: f64,
+    /// Most codes differing from the Rust twin's under any policy.
+    pub twin_changed: u64,
+    /// Largest `|len − 1|` of any emulated decode (round trip and decoder sample).
+    pub max_len_error: f64,
+    /// SPIR-V instructions of the encoder and of the decoder, callees included.
+    pub spirv: (usize, usize),
+}
+
+/// [`NormalFigures`] of every codec over `inputs`, under each of `policies`; each decoder also
+/// over 65,536 codes spread over its code space (every code of a 16-bit one).
+pub fn normal_figures(
+    gpu: &Gpu,
+    inputs: &[[f32; 3]],
+    policies: &[crate::conforming::Policy],
+) -> Result<Vec<NormalFigures>, HarnessError> {
+    use crate::scene::{NormalChoice, NormalEncoding, Scene};
+    let mut rows = Vec::new();
+    for c in &super::normal::CODECS {
+        let hemisphere = c.name.starts_with("hemioct") || c.name.starts_with("xy");
+        let pick = |rt: &RoundTrip| {
+            if hemisphere {
+                rt.error_upper.clone()
+            } else {
+                rt.error.clone()
+            }
+        };
+        let adapter = pick(&round_trip(gpu, c, inputs)?);
+        // 65,521 is odd: i·65,521 mod 2^16 is every 16-bit code once.
+        let codes: Vec<u32> = (0..1u64 << 16)
+            .map(|i| ((i * 65_521) % (1u64 << c.bits)) as u32)
+            .collect();
+        let mut row = NormalFigures {
+            name: c.name,
+            bits: c.bits,
+            target: String::new(),
+            adapter,
+            emulated_max: Vec::new(),
+            emulated_mean: 0.0,
+            twin_changed: 0,
+            max_len_error: 0.0,
+            spirv: (0, 0),
+        };
+        for &policy in policies {
+            let e = emulated_codec_sweep(gpu, c, &Emulation::new(policy), inputs, &codes)?;
+            let s = pick(&e.round_trip);
+            row.emulated_max.push(s.max);
+            row.emulated_mean = row.emulated_mean.max(s.mean());
+            row.twin_changed = row.twin_changed.max(e.round_trip.twin_encode.count);
+            row.max_len_error = row
+                .max_len_error
+                .max(e.round_trip_length.0)
+                .max(e.decoder.max_len_error);
+        }
+        let cost = |f: &str| {
+            crate::wgsl::spirv_instruction_count(c.source, f)
+                .map(|s| s.total)
+                .map_err(|e| HarnessError::Shader(e.to_string()))
+        };
+        row.spirv = (cost(c.encode)?, cost(c.decode)?);
+        let base = c.name.trim_end_matches(" fast").replace(' ', "");
+        if let Some(encoding) = NormalEncoding::ALL
+            .into_iter()
+            .find(|e| format!("{e:?}").to_lowercase() == base)
+        {
+            let scene = Scene {
+                normal: NormalChoice {
+                    encoding: Some(encoding),
+                    fast_encoder: c.name.ends_with("fast"),
+                },
+                ..Scene::default()
+            };
+            if let Ok(g) = scene.gbuffer() {
+                row.target = g
+                    .targets
+                    .iter()
+                    .find(|t| t.name == "normal")
+                    .map(|t| format!("{:?}", t.format.to_wgpu()))
+                    .unwrap_or_default();
+            }
+        }
+        rows.push(row);
+    }
+    Ok(rows)
+}
+
+/// One linear-depth path's published figures.
+#[derive(Clone, Debug)]
+pub struct LinearFigures {
+    /// The function.
+    pub function: &'static str,
+    /// Worst ULP error on the adapter ([`super::linear_depth::sampled_worst`]).
+    pub adapter: f64,
+    /// Worst ULP error under any of the policies.
+    pub emulated: f64,
+    /// The bound where `+ − × /` are correctly rounded (`linear_depth::bounds`).
+    pub bound_correctly_rounded: f64,
+    /// The bound on every conforming adapter.
+    pub bound_conforming: f64,
+}
+
+/// [`LinearFigures`] of every shipped path under each of `policies`.
+pub fn linear_depth_figures(
+    gpu: &Gpu,
+    policies: &[crate::conforming::Policy],
+) -> Result<Vec<LinearFigures>, HarnessError> {
+    use super::linear_depth::{PATHS, sampled_worst};
+    use crate::conforming::EmulatedKernel;
+    let mut rows = Vec::new();
+    for path in &PATHS {
+        let (cr, conf, _) =
+            crate::linear_depth::bounds::of(path.function).expect("every shipped path has a bound");
+        let k = gpu.kernel(crate::wgsl::LINEAR_DEPTH, path.function)?;
+        let adapter = sampled_worst(path, &|a, n| Ok(k.run(a, n)?.as_f32().to_vec()))?.0;
+        let mut emulated = 0.0f64;
+        for &policy in policies {
+            let k = EmulatedKernel::new(
+                gpu,
+                crate::wgsl::LINEAR_DEPTH,
+                path.function,
+                &Emulation::new(policy),
+            )?;
+            let run = |a: &[crate::harness::Arg<'_>], n: u64| Ok(k.run(a, n)?.0.as_f32().to_vec());
+            emulated = emulated.max(sampled_worst(path, &run)?.0);
+        }
+        rows.push(LinearFigures {
+            function: path.function,
+            adapter,
+            emulated,
+            bound_correctly_rounded: cr,
+            bound_conforming: conf,
+        });
+    }
+    Ok(rows)
+}

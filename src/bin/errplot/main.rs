@@ -18,6 +18,7 @@
 //!    timing arguments, the twin's timer): the cost table and the Pareto plots pick them up;
 //! 4. one line per CSV file in `files.rs` documenting its columns.
 
+mod conforming;
 mod cost;
 mod ctx;
 mod depth24;
@@ -46,6 +47,7 @@ const SECTIONS: &[(&str, Section)] = &[
     ("normal encodings", normal::section),
     ("roughness", roughness::section),
     ("lighting", lighting::section),
+    ("conforming adapters", conforming::section),
     ("error against run time", cost::section),
     ("files", files::section),
 ];
