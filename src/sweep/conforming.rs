@@ -194,11 +194,7 @@ pub fn normal_figures(
     for c in &super::normal::CODECS {
         let hemisphere = c.name.starts_with("hemioct") || c.name.starts_with("xy");
         let pick = |rt: &RoundTrip| {
-            if hemisphere {
-                rt.error_upper.clone()
-            } else {
-                rt.error.clone()
-            }
+            if hemisphere { rt.error_upper } else { rt.error }
         };
         let adapter = pick(&round_trip(gpu, c, inputs)?);
         // 65,521 is odd: i·65,521 mod 2^16 is every 16-bit code once.

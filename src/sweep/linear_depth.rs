@@ -342,6 +342,10 @@ pub fn grid_table(
     Ok(rows)
 }
 
+/// Runs a batch (arguments, element count) and returns the `f32` results: the shipped kernel, or
+/// an emulated one.
+pub type RunBatch<'a> = dyn Fn(&[Arg<'_>], u64) -> Result<Vec<f32>, HarnessError> + 'a;
+
 /// One shipped linear-depth function, as the sampled sweeps call it.
 #[derive(Clone, Copy, Debug)]
 pub struct Path {
@@ -409,10 +413,7 @@ pub fn sampled_codes() -> Vec<u32> {
 /// [`float_depths`]), run by `kernel` (the shipped WGSL, or an emulation of it): the ULP error
 /// and a description of the input. A subnormal float depth that an emulated adapter flushed to
 /// the sky (`+∞` with an infinite far plane) counts as its documented answer.
-pub fn sampled_worst(
-    path: &Path,
-    run: &dyn Fn(&[Arg<'_>], u64) -> Result<Vec<f32>, HarnessError>,
-) -> Result<(f64, String), HarnessError> {
+pub fn sampled_worst(path: &Path, run: &RunBatch<'_>) -> Result<(f64, String), HarnessError> {
     let codes = sampled_codes();
     let depths = float_depths(1 << 16);
     let mut worst = (0.0f64, String::new());
