@@ -31,6 +31,31 @@ fn rebuild_source() -> String {
     )
 }
 
+/// A `side`×`side` screen: each pixel's NDC centre, and a different depth code per pixel spread
+/// over the whole range.
+fn screen(side: usize) -> (Vec<[f32; 2]>, Vec<u32>) {
+    let mut ndc = Vec::with_capacity(side * side);
+    let mut codes = Vec::with_capacity(side * side);
+    for j in 0..side {
+        for i in 0..side {
+            let x = (i as f32 + 0.5) / side as f32 * 2.0 - 1.0;
+            let y = 1.0 - (j as f32 + 0.5) / side as f32 * 2.0;
+            ndc.push([x, y]);
+            codes.push(((i * side + j) as u32).wrapping_mul(0x9e37_79b9) >> 8);
+        }
+    }
+    (ndc, codes)
+}
+
+/// The exact view-space position of pixel `ndc` at view distance `vz` (f64), left-handed.
+fn exact_position(ndc: [f32; 2], tan: [f32; 2], vz: f64) -> [f64; 3] {
+    [
+        f64::from(ndc[0]) * f64::from(tan[0]) * vz,
+        f64::from(ndc[1]) * f64::from(tan[1]) * vz,
+        vz,
+    ]
+}
+
 #[test]
 fn view_position_within_view_z_error_plus_two_roundings_over_screen_and_fov() {
     let src = rebuild_source();
@@ -40,17 +65,7 @@ fn view_position_within_view_z_error_plus_two_roundings_over_screen_and_fov() {
     for fov_deg in [1.0f64, 5.0, 30.0, 60.0, 90.0, 120.0, 150.0, 179.0] {
         let ty = (fov_deg.to_radians() / 2.0).tan() as f32;
         let tan = [ty * 16.0 / 9.0, ty];
-        let mut ndc = Vec::with_capacity(side * side);
-        let mut codes = Vec::with_capacity(side * side);
-        for j in 0..side {
-            for i in 0..side {
-                let x = (i as f32 + 0.5) / side as f32 * 2.0 - 1.0;
-                let y = 1.0 - (j as f32 + 0.5) / side as f32 * 2.0;
-                ndc.push([x, y]);
-                // Every pixel a different depth code, spread over the whole range.
-                codes.push(((i * side + j) as u32).wrapping_mul(0x9e37_79b9) >> 8);
-            }
-        }
+        let (ndc, codes) = screen(side);
         let n = ndc.len() as u64;
         let args = [
             Arg::column(&ndc),
@@ -69,11 +84,7 @@ fn view_position_within_view_z_error_plus_two_roundings_over_screen_and_fov() {
         for k in 0..ndc.len() {
             let vz_exact = exact::view_z_from_depth24(codes[k], near, far);
             let e_vz = relative_error(f64::from(vz.as_f32()[k]), vz_exact);
-            let exact_p = [
-                f64::from(ndc[k][0]) * f64::from(tan[0]) * vz_exact,
-                f64::from(ndc[k][1]) * f64::from(tan[1]) * vz_exact,
-                vz_exact,
-            ];
+            let exact_p = exact_position(ndc[k], tan, vz_exact);
             // Bound: x and y pass two correctly rounded products (ndc·tan, then ·vz), each
             // ≤ 2^-24 relative, on top of vz's own error; second-order terms ≤ 2^-44.
             // z is 1·vz (exact): vz's error alone. In ULPs, 2·2^-24 relative is ≤ 2 ULP.
@@ -419,16 +430,7 @@ fn view_position_within_view_z_error_plus_two_roundings_under_emulation() {
         for fov_deg in [1.0f64, 60.0, 120.0, 179.0] {
             let ty = (fov_deg.to_radians() / 2.0).tan() as f32;
             let tan = [ty * 16.0 / 9.0, ty];
-            let (mut ndc, mut codes) = (Vec::new(), Vec::new());
-            for j in 0..side {
-                for i in 0..side {
-                    ndc.push([
-                        (i as f32 + 0.5) / side as f32 * 2.0 - 1.0,
-                        1.0 - (j as f32 + 0.5) / side as f32 * 2.0,
-                    ]);
-                    codes.push(((i * side + j) as u32).wrapping_mul(0x9e37_79b9) >> 8);
-                }
-            }
+            let (ndc, codes) = screen(side);
             let n = ndc.len() as u64;
             let nf = [near, far];
             let args = [
@@ -444,11 +446,7 @@ fn view_position_within_view_z_error_plus_two_roundings_under_emulation() {
             for k in 0..ndc.len() {
                 let vz_exact = exact::view_z_from_depth24(codes[k], near, far);
                 let e_vz = relative_error(f64::from(vz.as_f32()[k]), vz_exact);
-                let exact_p = [
-                    f64::from(ndc[k][0]) * f64::from(tan[0]) * vz_exact,
-                    f64::from(ndc[k][1]) * f64::from(tan[1]) * vz_exact,
-                    vz_exact,
-                ];
+                let exact_p = exact_position(ndc[k], tan, vz_exact);
                 for (c, exact_c) in exact_p.iter().enumerate() {
                     let e = relative_error(f64::from(p.as_vec3()[k][c]), *exact_c);
                     let bound = e_vz + if c < 2 { 4.0 * U + 2f64.powi(-42) } else { 0.0 };
