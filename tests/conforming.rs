@@ -410,7 +410,7 @@ fn inverse_sqrt_sqrt_and_length_stay_inside_their_intervals() {
         for i in 0..n {
             if !normal[i] {
                 assert!(
-                    flags[i] || policy == Policy::Identity || flags[i],
+                    flags[i] || policy == Policy::Identity,
                     "inverseSqrt of subnormal {} not flagged",
                     xs[i]
                 );
@@ -723,7 +723,7 @@ fn identity_reproduces_every_shipped_module_bit_for_bit() {
                 .params
                 .iter()
                 .enumerate()
-                .map(|(k, p)| column_for(p.ty, n, 0x9e37_79b9 ^ (k as u64 + 1) * 0x1000_0001))
+                .map(|(k, p)| column_for(p.ty, n, 0x9e37_79b9 ^ ((k as u64 + 1) * 0x1000_0001)))
                 .collect();
             let args: Vec<Arg<'_>> = cols.iter().map(|c| Arg::column(c)).collect();
             let original = gpu()

@@ -360,7 +360,7 @@ fn site_for(
                 M::Pow => call(plan, "pow", &[arg, arg1?]),
                 M::Fma => call(plan, "fma", &[arg, arg1?, arg2?]),
                 M::Mix => call(plan, "mix", &[arg, arg1?, arg2?]),
-                M::Dot => both(plan, "dot").map(|(h, a)| (h, a)),
+                M::Dot => both(plan, "dot"),
                 M::Distance => both(plan, "distance"),
                 M::Reflect => both(plan, "reflect"),
                 M::Cross => both(plan, "cross"),
