@@ -43,7 +43,7 @@
 
 use super::metrics::ErrorStats;
 pub use super::value::{WgslArgs, WgslValue};
-use crate::harness::{Arg, Gpu, HarnessError, Kernel, ValueType};
+use crate::harness::{Arg, Gpu, HarnessError, Kernel, Output, ValueType};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 use std::fmt::{self, Debug};
@@ -244,6 +244,20 @@ fn runner(seed: u64, case: u64) -> TestRunner {
     )
 }
 
+/// Run `kernel` once over `inputs`, each parameter's bits in a column of its own.
+fn run_batch<I: WgslArgs>(kernel: &Kernel<'_>, inputs: &[I]) -> Result<Output, HarnessError> {
+    let params = kernel.signature().params.len();
+    let mut columns = vec![Vec::with_capacity(inputs.len() * 4); params];
+    for x in inputs {
+        x.push_columns(&mut columns);
+    }
+    let args: Vec<Arg<'_>> = columns
+        .iter()
+        .map(|c| Arg::Column(bytemuck::cast_slice(c)))
+        .collect();
+    kernel.run(&args, inputs.len() as u64)
+}
+
 /// An error fails unless it is within the bound; NaN (unmeasurable) fails.
 fn fails(error: f64, bound: f64) -> bool {
     error.is_nan() || error > bound
@@ -360,15 +374,7 @@ impl<'g> PrecisionCheck<'g> {
                 O::TYPE
             )));
         }
-        let mut columns = vec![Vec::with_capacity(inputs.len() * 4); want.len()];
-        for x in inputs {
-            x.push_columns(&mut columns);
-        }
-        let args: Vec<Arg<'_>> = columns
-            .iter()
-            .map(|c| Arg::Column(bytemuck::cast_slice(c)))
-            .collect();
-        let out = self.kernel.run(&args, inputs.len() as u64)?;
+        let out = run_batch(&self.kernel, inputs)?;
         Ok(out
             .words()
             .chunks(O::TYPE.words())
@@ -385,16 +391,7 @@ impl<'g> PrecisionCheck<'g> {
         let Some(k) = &self.undefined else {
             return Ok(Vec::new());
         };
-        let n = k.signature().params.len();
-        let mut columns = vec![Vec::with_capacity(inputs.len() * 4); n];
-        for x in inputs {
-            x.push_columns(&mut columns);
-        }
-        let args: Vec<Arg<'_>> = columns
-            .iter()
-            .map(|c| Arg::Column(bytemuck::cast_slice(c)))
-            .collect();
-        let out = k.run(&args, inputs.len() as u64)?;
+        let out = run_batch(k, inputs)?;
         Ok(out.as_u32().iter().map(|&f| f != 0).collect())
     }
 
