@@ -121,28 +121,24 @@ impl Scene {
                 format: TargetFormat::Depth32Float,
                 channels: format!("float depth ({convention}{far})"),
             }),
-            DepthStorage::Code24 => {
+            DepthStorage::Code24 | DepthStorage::Code24Rgba8 => {
                 targets.push(Target {
                     name: "depth",
                     format: TargetFormat::Depth24PlusStencil8,
                     channels: format!("hardware depth test + stencil ({convention}{far})"),
                 });
+                let (format, channels) = if self.depth.storage == DepthStorage::Code24 {
+                    (TargetFormat::R32Uint, "r: 24-bit depth code")
+                } else {
+                    (
+                        TargetFormat::Rgba8Unorm,
+                        "r: code bits 23–16, g: 15–8, b: 7–0, a: free",
+                    )
+                };
                 targets.push(Target {
                     name: "depth code",
-                    format: TargetFormat::R32Uint,
-                    channels: "r: 24-bit depth code".into(),
-                });
-            }
-            DepthStorage::Code24Rgba8 => {
-                targets.push(Target {
-                    name: "depth",
-                    format: TargetFormat::Depth24PlusStencil8,
-                    channels: format!("hardware depth test + stencil ({convention}{far})"),
-                });
-                targets.push(Target {
-                    name: "depth code",
-                    format: TargetFormat::Rgba8Unorm,
-                    channels: "r: code bits 23–16, g: 15–8, b: 7–0, a: free".into(),
+                    format,
+                    channels: channels.into(),
                 });
             }
         }
