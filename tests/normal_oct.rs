@@ -9,7 +9,7 @@ mod common;
 use common::gpu;
 use prepass::normal::oct;
 use prepass::sweep::normal::{
-    Codec, UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, decode_range,
+    Codec, adversarial_directions, bad_inputs, codec, decode_codes, decode_range,
     fibonacci_directions, optimality_tolerance_deg, precise_optimality, round_trip,
     stratified_codes32,
 };
@@ -95,43 +95,18 @@ fn oct32_precise_and_fast_round_trip() {
     check(codec("oct32 fast"));
 }
 
-/// Decoded vectors: finite, unit within the normalize budget, the exact direction of the code
-/// up to that rounding, bit-identical to the Rust twin.
-fn assert_decoder(name: &str, d: &prepass::sweep::normal::DecoderCheck) {
-    eprintln!(
-        "{name}: {} codes, max |len-1| {:.3e}, max angle to exact {:.3e}°, twin differs {}",
-        d.codes, d.max_len_error, d.max_angle_deg, d.twin.count
-    );
-    assert_eq!(
-        d.not_unit, 0,
-        "{name}: {} results not unit within {UNIT_TOLERANCE}",
-        d.not_unit
-    );
-    // Bound: only the per-component rounding of the final divide turns the direction:
-    // ≤ √2·2^-24 rad (plus the f64 angle's own 1e-15).
-    assert!(
-        d.max_angle_deg <= (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12,
-        "{name}"
-    );
-    assert_eq!(
-        d.twin.count, 0,
-        "{name}: Rust decoder differs: {:?}",
-        d.twin.first
-    );
-}
-
 #[test]
 fn every_16_and_24_bit_code_decodes_to_a_unit_vector() {
     let d16 = decode_range(gpu(), codec("oct16"), 0, 1 << 16).unwrap();
-    assert_decoder("oct16 all 2^16", &d16);
+    common::assert_decoder("oct16 all 2^16", &d16);
     // Bits above the code are ignored.
     let junk: Vec<u32> = (0u32..1 << 16)
         .map(|p| p | (p.wrapping_mul(0x9e37_79b9) & 0xffff_0000))
         .collect();
     let dj = decode_codes(gpu(), codec("oct16"), &junk).unwrap();
-    assert_decoder("oct16 with junk high bits", &dj);
+    common::assert_decoder("oct16 with junk high bits", &dj);
     let d24 = decode_range(gpu(), codec("oct24"), 0, 1 << 24).unwrap();
-    assert_decoder("oct24 all 2^24", &d24);
+    common::assert_decoder("oct24 all 2^24", &d24);
     let junk: Vec<u32> = (0u32..1 << 16)
         .map(|p| (p * 256 + 7) | 0xff00_0000)
         .collect();
@@ -152,7 +127,7 @@ fn every_16_and_24_bit_code_decodes_to_a_unit_vector() {
 fn oct32_decoder_stratified_2_26() {
     let codes = stratified_codes32();
     let d = decode_codes(gpu(), codec("oct32"), &codes).unwrap();
-    assert_decoder("oct32 stratified", &d);
+    common::assert_decoder("oct32 stratified", &d);
 }
 
 #[test]

@@ -9,8 +9,8 @@ use glam::Vec3;
 use prepass::harness::Arg;
 use prepass::normal::xyz8;
 use prepass::sweep::normal::{
-    UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, decode_range,
-    fibonacci_directions, round_trip,
+    adversarial_directions, bad_inputs, codec, decode_codes, decode_range, fibonacci_directions,
+    round_trip,
 };
 
 /// The worst case of rounding each coordinate to the byte grid: each decoded coordinate
@@ -64,14 +64,7 @@ fn every_code_decodes_to_a_unit_vector_and_byte_3_is_ignored() {
         .collect();
     let dj = decode_codes(gpu(), c, &junk).unwrap();
     for (name, d) in [("all 2^24", &d), ("byte 3 junk", &dj)] {
-        eprintln!(
-            "xyz8 {name}: max |len-1| {:.3e}, max angle to exact {:.3e}°, twin differs {}",
-            d.max_len_error, d.max_angle_deg, d.twin.count
-        );
-        assert_eq!(d.not_unit, 0, "{name}: not unit within {UNIT_TOLERANCE}");
-        // Bound: only the final per-component divide turns the direction, ≤ √2·2^-24 rad.
-        assert!(d.max_angle_deg <= (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12);
-        assert_eq!(d.twin.count, 0, "{name}: {:?}", d.twin.first);
+        common::assert_decoder(&format!("xyz8 {name}"), d);
     }
     let k = gpu().kernel(c.source, c.decode).unwrap();
     let got = k.run(&[Arg::column(&junk)], junk.len() as u64).unwrap();

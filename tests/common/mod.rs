@@ -119,3 +119,30 @@ pub fn assert_round_trip_matches_twins(what: &str, rt: &prepass::sweep::normal::
     );
     assert_eq!(rt.not_unit, 0, "{what}: decoded vectors off unit length");
 }
+
+/// Decoded vectors: finite, unit within the normalize budget, the exact direction of the code
+/// up to that rounding, bit-identical to the Rust twin.
+#[allow(dead_code)]
+pub fn assert_decoder(name: &str, d: &prepass::sweep::normal::DecoderCheck) {
+    use prepass::sweep::normal::UNIT_TOLERANCE;
+    eprintln!(
+        "{name}: {} codes, max |len-1| {:.3e}, max angle to exact {:.3e}°, twin differs {}",
+        d.codes, d.max_len_error, d.max_angle_deg, d.twin.count
+    );
+    assert_eq!(
+        d.not_unit, 0,
+        "{name}: {} results not unit within {UNIT_TOLERANCE}",
+        d.not_unit
+    );
+    // Bound: only the per-component rounding of the final divide turns the direction:
+    // ≤ √2·2^-24 rad (plus the f64 angle's own 1e-15).
+    assert!(
+        d.max_angle_deg <= (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12,
+        "{name}"
+    );
+    assert_eq!(
+        d.twin.count, 0,
+        "{name}: Rust decoder differs: {:?}",
+        d.twin.first
+    );
+}
