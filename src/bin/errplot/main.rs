@@ -10,7 +10,7 @@
 //!
 //! One file per section. A new module joins the report with:
 //! 1. a file here with `pub fn section(ctx: &mut Ctx) -> Result<(), String>` that runs its sweeps
-//!    (from `src/sweep/<topic>.rs`), writes Markdown (`ctx.line`), CSV (`ctx.csv`) and charts
+//!    (from `src/sweep/<topic>`), writes Markdown (`ctx.line`), CSV (`ctx.csv`) and charts
 //!    (`ctx.chart` with a `plot::Chart`), marking adapter-only cells `NEEDS_ADAPTER` when
 //!    `ctx.gpu()` is `None`;
 //! 2. one line in [`SECTIONS`] (before the cost section);
