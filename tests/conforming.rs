@@ -409,11 +409,7 @@ fn inverse_sqrt_sqrt_and_length_stay_inside_their_intervals() {
         let normal: Vec<bool> = xs.iter().map(|&x| x >= f32::MIN_POSITIVE).collect();
         for i in 0..n {
             if !normal[i] {
-                assert!(
-                    flags[i] || policy == Policy::Identity,
-                    "inverseSqrt of subnormal {} not flagged",
-                    xs[i]
-                );
+                assert!(flags[i], "inverseSqrt of subnormal {} not flagged", xs[i]);
                 continue;
             }
             assert!(
@@ -754,4 +750,97 @@ fn identity_reproduces_every_shipped_module_bit_for_bit() {
         functions >= 60,
         "only {functions} shipped functions were checked"
     );
+}
+
+/// Every normal encoding on the emulated worst adapter (upper, lower, one seed): round-trip
+/// error beside the adapter's own (`round_trip` without emulation), every decode finite and
+/// unit within the conforming budget, the codes the emulated encoder chooses differently from
+/// the Rust twin, and the precise octahedral encoders' optimality. Sampled to fit CI: 2^16
+/// Fibonacci directions plus the whole adversarial set; decoders over every 16-bit code, every
+/// 61st 24-bit code, every 97th code of the 32-bit stratified sample.
+#[test]
+fn every_normal_encoding_under_emulation() {
+    use prepass::sweep::conforming::{
+        UNIT_TOLERANCE_CONFORMING, emulated_codec_sweep, optimality_tolerance_conforming_deg,
+    };
+    use prepass::sweep::normal::{
+        CODECS, adversarial_directions, fibonacci_directions, optimality_tolerance_deg,
+        precise_optimality, round_trip, stratified_codes32,
+    };
+    let mut inputs = fibonacci_directions(1 << 16);
+    inputs.extend(adversarial_directions());
+    let codes16: Vec<u32> = (0..1 << 16).collect();
+    let codes24: Vec<u32> = (0..1 << 24).step_by(61).chain([(1 << 24) - 1]).collect();
+    let codes32: Vec<u32> = stratified_codes32().into_iter().step_by(97).collect();
+    for c in &CODECS {
+        let codes = match c.bits {
+            16 => &codes16,
+            24 => &codes24,
+            _ => &codes32,
+        };
+        let plain = round_trip(gpu(), c, &inputs).unwrap();
+        // The hemisphere codes (and xy FP16, which keeps z ≥ 0 only) are measured on z ≥ 0.
+        let upper_only = c.name.starts_with("hemioct") || c.name.starts_with("xy");
+        let stat = |rt: &prepass::sweep::normal::RoundTrip| {
+            if upper_only { rt.error_upper } else { rt.error }
+        };
+        let p = stat(&plain);
+        eprintln!(
+            "{:14} adapter: round trip max {:.6}° mean {:.6}°",
+            c.name,
+            p.max,
+            p.mean()
+        );
+        for policy in [Policy::Upper, Policy::Lower, Policy::Seeded(1)] {
+            let e =
+                emulated_codec_sweep(gpu(), c, &Emulation::new(policy), &inputs, codes).unwrap();
+            let s = stat(&e.round_trip);
+            let (len_rt, bad_rt) = e.round_trip_length;
+            let (len_dec, dec_ok) = e.decode_length();
+            eprintln!(
+                "{:14} {policy:10}: round trip max {:.6}° mean {:.6}°, {} codes differ from the twin; |len−1| ≤ {len_rt:.3e} (round trip), {len_dec:.3e} (decoder, {} codes), budget {UNIT_TOLERANCE_CONFORMING:.3e}",
+                c.name,
+                s.max,
+                s.mean(),
+                e.round_trip.twin_encode.count,
+                e.decoder.codes
+            );
+            assert_eq!(
+                bad_rt, 0,
+                "{} {policy}: {bad_rt} round-trip decodes not finite or beyond the conforming unit budget {UNIT_TOLERANCE_CONFORMING:e} (derivation: sweep::conforming)",
+                c.name
+            );
+            assert!(
+                dec_ok,
+                "{} {policy}: decoder |len − 1| = {len_dec:e} beyond the conforming budget {UNIT_TOLERANCE_CONFORMING:e}, or a non-finite result (max angle {}°)",
+                c.name, e.decoder.max_angle_deg
+            );
+            if c.name.starts_with("oct") && !c.name.ends_with("fast") {
+                let o = precise_optimality(c, &inputs, &e.round_trip);
+                let tol = optimality_tolerance_conforming_deg();
+                eprintln!(
+                    "{:14} {policy:10}: precise choice's worst excess over the best neighbour {:.3e}° (correctly rounded tolerance {:.3e}°, conforming {tol:.3e}°)",
+                    c.name,
+                    o.worst_excess_deg,
+                    optimality_tolerance_deg()
+                );
+                assert!(
+                    o.worst_excess_deg <= tol,
+                    "{} {policy}: the precise encoder's choice is {:e}° worse than the best neighbour, beyond the conforming tolerance {tol:e}° (sweep::conforming::optimality_tolerance_conforming_deg)",
+                    c.name,
+                    o.worst_excess_deg
+                );
+            }
+            eprintln!(
+                "{:14} {policy:10}: codes differing from the twin are at most {} code step(s) away",
+                c.name, e.max_code_step
+            );
+            assert!(
+                e.max_code_step <= 1,
+                "{} {policy}: an emulated code is {} steps from the twin's (the twins promise: within one code on every conforming adapter)",
+                c.name,
+                e.max_code_step
+            );
+        }
+    }
 }

@@ -301,3 +301,54 @@ fn emulation_breaks_the_division_baseline_but_not_the_integer_construction() {
         );
     }
 }
+
+/// The 24-bit recovery on the emulated worst adapter: every code comes back from channels off
+/// by 0, ±3 ULP (both sign patterns), and through the emulated `unpack4x8unorm` (3 ULP), under
+/// the upper, lower and one seeded policy — the rounding of each channel survives any
+/// conforming arithmetic (255·c within 0.45 + 2^-15 of the byte: the product's either-neighbour
+/// rounding adds 2^-16 at most).
+#[test]
+fn recovery_survives_emulation() {
+    use prepass::conforming::{Emulation, Policy, emulate};
+    use prepass::precision::inputs::ChannelError;
+    let round_trip = format!(
+        "{DEPTH24}\nfn roundtrip(d: u32) -> u32 {{ return depth24_from_rgb8(unpack4x8unorm(pack_depth24(d)).xyz); }}"
+    );
+    for policy in [Policy::Upper, Policy::Lower, Policy::Seeded(1)] {
+        let e = emulate(DEPTH24, &Emulation::new(policy)).unwrap();
+        let f = e.function_name("depth24_from_rgb8").unwrap();
+        for (error, flip) in [
+            (ChannelError::Exact, false),
+            (ChannelError::Ulps(3), false),
+            (ChannelError::Ulps(3), true),
+        ] {
+            let r = recover_all(gpu(), &e.source, f, error, flip).unwrap();
+            eprintln!(
+                "emulated {policy}: depth24_from_rgb8, {error} (flip {flip}): {} wrong codes",
+                r.mismatches.count
+            );
+            assert_eq!(
+                r.mismatches.count, 0,
+                "{policy} {error} flip {flip}: {:?}",
+                r.mismatches.first
+            );
+        }
+        let e = emulate(&round_trip, &Emulation::new(policy)).unwrap();
+        let back = gpu()
+            .kernel(&e.source, e.function_name("roundtrip").unwrap())
+            .unwrap()
+            .run(&[Arg::Index { start: 0 }], CODES)
+            .unwrap()
+            .into_words();
+        let m = Mismatches::count(&back, |d| d as u32);
+        eprintln!(
+            "emulated {policy}: pack → unpack4x8unorm → recover: {} wrong codes",
+            m.count
+        );
+        assert_eq!(
+            m.count, 0,
+            "{policy}: emulated unpack4x8unorm round trip: {:?}",
+            m.first
+        );
+    }
+}

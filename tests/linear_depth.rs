@@ -267,113 +267,35 @@ fn twin_of_clamped(conv: prepass::projection::DepthConvention, z: f32, n: f32, f
 }
 
 /// Every path under every worst-case policy of the conforming-adapter emulation, on the whole
-/// stiff grid. Sampled to fit CI: codes 0–255, every 257th code and the top 256; 2^16 float
-/// depths spread in ULP space (`float_depths`). Asserted against the conforming bound of
-/// `linear_depth::bounds`; the worst figure per path is printed for the README.
+/// stiff grid, sampled to fit CI (`sweep::linear_depth::sampled_worst`: codes 0–255, every
+/// 257th code and the top 256; 2^16 float depths spread in ULP space). Asserted against the
+/// conforming bound of `linear_depth::bounds`; the worst figure per path is printed.
 #[test]
 fn every_path_holds_its_conforming_bound_under_emulation() {
     use prepass::conforming::{EmulatedKernel, Emulation, Policy};
-    use prepass::linear_depth::{bounds, exact};
-    use prepass::sweep::linear_depth::distance_error;
-    let mut codes: Vec<u32> = (0..256).chain((256..0x00ff_ff00).step_by(257)).collect();
-    codes.extend(0x00ff_ff00..=0x00ff_ffff);
-    let depths = float_depths(1 << 16);
-    type Consts = fn(&prepass::sweep::linear_depth::StiffCase) -> Vec<f32>;
-    let paths: [(
-        &str,
-        bool,
-        Option<Consts>,
-        prepass::projection::DepthConvention,
-    ); 6] = [
-        ("view_z_from_depth24", true, None, Standard),
-        (
-            "view_z_from_depth24_consts",
-            true,
-            Some(|c| c.projection(Standard).depth24_consts().to_wgsl().to_vec()),
-            Standard,
-        ),
-        ("view_z_from_depth", false, None, Standard),
-        (
-            "view_z_from_depth_consts",
-            false,
-            Some(|c| c.projection(Standard).depth_consts().to_wgsl().to_vec()),
-            Standard,
-        ),
-        ("view_z_from_reversed_depth", false, None, Reversed),
-        (
-            "view_z_from_reversed_depth_consts",
-            false,
-            Some(|c| {
-                c.projection(Reversed)
-                    .reversed_depth_consts()
-                    .to_wgsl()
-                    .to_vec()
-            }),
-            Reversed,
-        ),
-    ];
-    for (function, is_code, consts, convention) in paths {
-        let (_, bound, why) = bounds::of(function).expect("every path has a bound");
+    use prepass::linear_depth::bounds;
+    use prepass::sweep::linear_depth::{PATHS, sampled_worst};
+    for path in &PATHS {
+        let (_, bound, why) = bounds::of(path.function).expect("every path has a bound");
         let mut worst = (0.0f64, String::new());
         for policy in Policy::WORST {
-            let k = EmulatedKernel::new(gpu(), LINEAR_DEPTH, function, &Emulation::new(policy))
-                .unwrap();
-            for case in stiff_grid() {
-                let (n, f) = (case.near, case.far);
-                let kv = consts.map(|c| c(&case));
-                let mut args = vec![if is_code {
-                    Arg::column(&codes)
-                } else {
-                    Arg::column(&depths)
-                }];
-                match &kv {
-                    Some(v) => args.push(Arg::splat_vec(v)),
-                    None => args.extend([Arg::splat_f32(n), Arg::splat_f32(f)]),
-                }
-                let len = if is_code { codes.len() } else { depths.len() };
-                let (out, _) = k.run(&args, len as u64).unwrap();
-                for (i, &g) in out.as_f32().iter().enumerate() {
-                    let e = if is_code {
-                        exact::view_z_from_depth24(codes[i], n, f)
-                    } else if convention == Standard {
-                        exact::view_z_from_depth(depths[i], n, f)
-                    } else {
-                        exact::view_z_from_reversed_depth(depths[i], n, f)
-                    };
-                    // A subnormal depth may be flushed to 0 (WGSL allows it): with an infinite
-                    // far plane that is the sky, +∞ — documented in linear_depth's bad input.
-                    let flushed_sky = !is_code
-                        && f.is_infinite()
-                        && depths[i] < f32::MIN_POSITIVE
-                        && g == f32::INFINITY;
-                    let err = if flushed_sky {
-                        0.0
-                    } else {
-                        distance_error(g, e)
-                    };
-                    if err > worst.0 {
-                        let input = if is_code {
-                            format!("code {}", codes[i])
-                        } else {
-                            format!("z {:e}", depths[i])
-                        };
-                        worst = (
-                            err,
-                            format!(
-                                "{policy}, near {n:e}, far {f:e}, {input}: {g:e} vs exact {e:e}"
-                            ),
-                        );
-                    }
-                }
+            let k =
+                EmulatedKernel::new(gpu(), LINEAR_DEPTH, path.function, &Emulation::new(policy))
+                    .unwrap();
+            let run = |args: &[Arg<'_>], n: u64| Ok(k.run(args, n)?.0.as_f32().to_vec());
+            let (e, at) = sampled_worst(path, &run).unwrap();
+            if e > worst.0 {
+                worst = (e, format!("{policy}, {at}"));
             }
         }
         eprintln!(
-            "emulated {function:36} worst {:.3} ULP ({}) — conforming bound {bound} ULP",
-            worst.0, worst.1
+            "emulated {:36} worst {:.3} ULP ({}) — conforming bound {bound} ULP",
+            path.function, worst.0, worst.1
         );
         assert!(
             worst.0 <= bound,
-            "{function} under emulation: {:.3} ULP ({}) exceeds the conforming bound {bound} ULP (margin {:.3}; bound from {why})",
+            "{} under emulation: {:.3} ULP ({}) exceeds the conforming bound {bound} ULP (margin {:.3}; bound from {why})",
+            path.function,
             worst.0,
             worst.1,
             bound - worst.0

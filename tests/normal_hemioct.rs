@@ -6,12 +6,11 @@
 mod common;
 
 use common::gpu;
-use glam::Vec3;
 use prepass::harness::Arg;
 use prepass::normal::hemioct;
 use prepass::sweep::normal::{
-    UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_range, fibonacci_directions,
-    optimality_tolerance_deg, precise_optimality, reference_error, round_trip, unorm_forms,
+    adversarial_directions, bad_inputs, codec, decode_range, fibonacci_directions,
+    optimality_tolerance_deg, precise_optimality, reference_error, round_trip,
 };
 
 #[test]
@@ -28,17 +27,7 @@ fn round_trip_matches_the_f64_reproduction_and_is_optimal() {
         let c = codec(name);
         for (set, inputs) in [("fibonacci z >= 0", &upper), ("adversarial z >= 0", &adv)] {
             let rt = round_trip(gpu(), c, inputs).unwrap();
-            assert_eq!(
-                rt.twin_encode.count, 0,
-                "{name} {set}: {:?}",
-                rt.twin_encode.first
-            );
-            assert_eq!(
-                rt.twin_decode.count, 0,
-                "{name} {set}: {:?}",
-                rt.twin_decode.first
-            );
-            assert_eq!(rt.not_unit, 0);
+            common::assert_round_trip_matches_twins(&format!("{name} {set}"), &rt);
             let r = reference_error(c, inputs);
             eprintln!(
                 "{name} {set}: mean {:.6}° max {:.6}° (f64 reproduction {:.6} / {:.6})",
@@ -76,14 +65,7 @@ fn round_trip_matches_the_f64_reproduction_and_is_optimal() {
 fn every_code_decodes_to_a_unit_vector_in_the_upper_hemisphere() {
     let c = codec("hemioct24");
     let d = decode_range(gpu(), c, 0, 1 << 24).unwrap();
-    eprintln!(
-        "hemioct24 all 2^24: max |len-1| {:.3e}, max angle to exact {:.3e}°, twin differs {}",
-        d.max_len_error, d.max_angle_deg, d.twin.count
-    );
-    assert_eq!(d.not_unit, 0, "not unit within {UNIT_TOLERANCE}");
-    // Bound: only the final per-component divide turns the direction, ≤ √2·2^-24 rad.
-    assert!(d.max_angle_deg <= (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12);
-    assert_eq!(d.twin.count, 0, "{:?}", d.twin.first);
+    common::assert_decoder("hemioct24 all 2^24", &d);
     // z >= 0 for every code, and bits 24-31 are ignored.
     let codes: Vec<u32> = (0u32..1 << 16)
         .map(|i| i.wrapping_mul(0x9e37_79b9))
@@ -125,28 +107,19 @@ fn bad_input_gets_the_documented_code_on_both_sides() {
 
 #[test]
 fn render_target_form_matches_the_code_path() {
-    let inputs: Vec<[f32; 3]> = fibonacci_directions(1 << 16)
-        .into_iter()
-        .chain(bad_inputs().into_iter().map(|c| c.0))
-        .collect();
-    let f = unorm_forms(
-        gpu(),
-        codec("hemioct24"),
+    let inputs = common::render_target_inputs();
+    common::assert_unorm_forms(
+        "hemioct24",
         "encode_normal_hemioct24_unorm",
         "decode_normal_hemioct24_unorm",
         4,
         &inputs,
-    )
-    .unwrap();
-    assert_eq!(f.encode.count, 0, "{:?}", f.encode.first);
-    // Bound: 0. Every channel is within 0.45/255 of byte/255, so round(255 c) is the byte.
-    assert_eq!(f.decode.count, 0, "{:?}", f.decode.first);
-    for v in &inputs {
-        let v = Vec3::from(*v);
-        let ch = hemioct::encode_normal_hemioct24_unorm(v);
-        assert_eq!(
-            hemioct::decode_normal_hemioct24_unorm(ch),
-            hemioct::decode_normal_hemioct24(hemioct::encode_normal_hemioct24(v))
-        );
-    }
+    );
+    common::assert_twin_unorm_form(
+        &inputs,
+        hemioct::encode_normal_hemioct24_unorm,
+        hemioct::decode_normal_hemioct24_unorm,
+        hemioct::encode_normal_hemioct24,
+        hemioct::decode_normal_hemioct24,
+    );
 }

@@ -7,12 +7,11 @@
 mod common;
 
 use common::gpu;
-use glam::Vec3;
 use prepass::normal::oct;
 use prepass::sweep::normal::{
-    Codec, UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, decode_range,
+    Codec, adversarial_directions, bad_inputs, codec, decode_codes, decode_range,
     fibonacci_directions, optimality_tolerance_deg, precise_optimality, round_trip,
-    stratified_codes32, unorm_forms,
+    stratified_codes32,
 };
 use std::sync::OnceLock;
 
@@ -38,21 +37,7 @@ fn check(c: &Codec) {
             rt.error.mean(),
             rt.error.max
         );
-        assert_eq!(
-            rt.twin_encode.count, 0,
-            "{} {set}: Rust encoder differs: {:?}",
-            c.name, rt.twin_encode.first
-        );
-        assert_eq!(
-            rt.twin_decode.count, 0,
-            "{} {set}: Rust decoder differs: {:?}",
-            c.name, rt.twin_decode.first
-        );
-        assert_eq!(
-            rt.not_unit, 0,
-            "{} {set}: decoded vectors off unit length",
-            c.name
-        );
+        common::assert_round_trip_matches_twins(&format!("{} {set}", c.name), &rt);
         assert_eq!(rt.error.nan_count, 0);
         // The adversarial set's max is held to the same target: its points sit on folds, poles
         // and cell edges, where the error is no larger than the cell's worst corner.
@@ -110,43 +95,18 @@ fn oct32_precise_and_fast_round_trip() {
     check(codec("oct32 fast"));
 }
 
-/// Decoded vectors: finite, unit within the normalize budget, the exact direction of the code
-/// up to that rounding, bit-identical to the Rust twin.
-fn assert_decoder(name: &str, d: &prepass::sweep::normal::DecoderCheck) {
-    eprintln!(
-        "{name}: {} codes, max |len-1| {:.3e}, max angle to exact {:.3e}°, twin differs {}",
-        d.codes, d.max_len_error, d.max_angle_deg, d.twin.count
-    );
-    assert_eq!(
-        d.not_unit, 0,
-        "{name}: {} results not unit within {UNIT_TOLERANCE}",
-        d.not_unit
-    );
-    // Bound: only the per-component rounding of the final divide turns the direction:
-    // ≤ √2·2^-24 rad (plus the f64 angle's own 1e-15).
-    assert!(
-        d.max_angle_deg <= (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12,
-        "{name}"
-    );
-    assert_eq!(
-        d.twin.count, 0,
-        "{name}: Rust decoder differs: {:?}",
-        d.twin.first
-    );
-}
-
 #[test]
 fn every_16_and_24_bit_code_decodes_to_a_unit_vector() {
     let d16 = decode_range(gpu(), codec("oct16"), 0, 1 << 16).unwrap();
-    assert_decoder("oct16 all 2^16", &d16);
+    common::assert_decoder("oct16 all 2^16", &d16);
     // Bits above the code are ignored.
     let junk: Vec<u32> = (0u32..1 << 16)
         .map(|p| p | (p.wrapping_mul(0x9e37_79b9) & 0xffff_0000))
         .collect();
     let dj = decode_codes(gpu(), codec("oct16"), &junk).unwrap();
-    assert_decoder("oct16 with junk high bits", &dj);
+    common::assert_decoder("oct16 with junk high bits", &dj);
     let d24 = decode_range(gpu(), codec("oct24"), 0, 1 << 24).unwrap();
-    assert_decoder("oct24 all 2^24", &d24);
+    common::assert_decoder("oct24 all 2^24", &d24);
     let junk: Vec<u32> = (0u32..1 << 16)
         .map(|p| (p * 256 + 7) | 0xff00_0000)
         .collect();
@@ -167,7 +127,7 @@ fn every_16_and_24_bit_code_decodes_to_a_unit_vector() {
 fn oct32_decoder_stratified_2_26() {
     let codes = stratified_codes32();
     let d = decode_codes(gpu(), codec("oct32"), &codes).unwrap();
-    assert_decoder("oct32 stratified", &d);
+    common::assert_decoder("oct32 stratified", &d);
 }
 
 #[test]
@@ -194,10 +154,7 @@ fn bad_input_gets_the_documented_code_on_both_sides() {
 
 #[test]
 fn render_target_forms_match_the_code_path() {
-    let inputs: Vec<[f32; 3]> = fibonacci_directions(1 << 16)
-        .into_iter()
-        .chain(bad_inputs().into_iter().map(|c| c.0))
-        .collect();
+    let inputs = common::render_target_inputs();
     for (name, enc, dec, lanes) in [
         (
             "oct16",
@@ -218,23 +175,22 @@ fn render_target_forms_match_the_code_path() {
             4,
         ),
     ] {
-        let f = unorm_forms(gpu(), codec(name), enc, dec, lanes, &inputs).unwrap();
-        assert_eq!(f.encode.count, 0, "{name}: {:?}", f.encode.first);
-        // Bound: 0. Every channel is within 0.45/255 of byte/255, so round(255 c) is the byte.
-        assert_eq!(f.decode.count, 0, "{name}: {:?}", f.decode.first);
+        common::assert_unorm_forms(name, enc, dec, lanes, &inputs);
     }
     // The Rust render-target forms agree with their code paths.
-    for v in fibonacci_directions(4096) {
-        let v = Vec3::from(v);
-        let c = oct::encode_normal_oct24_unorm(v);
-        assert_eq!(
-            oct::decode_normal_oct24_unorm(c),
-            oct::decode_normal_oct24(oct::encode_normal_oct24(v))
-        );
-        let c = oct::encode_normal_oct16_unorm(v);
-        assert_eq!(
-            oct::decode_normal_oct16_unorm(c),
-            oct::decode_normal_oct16(oct::encode_normal_oct16(v))
-        );
-    }
+    let directions = fibonacci_directions(4096);
+    common::assert_twin_unorm_form(
+        &directions,
+        oct::encode_normal_oct24_unorm,
+        oct::decode_normal_oct24_unorm,
+        oct::encode_normal_oct24,
+        oct::decode_normal_oct24,
+    );
+    common::assert_twin_unorm_form(
+        &directions,
+        oct::encode_normal_oct16_unorm,
+        oct::decode_normal_oct16_unorm,
+        oct::encode_normal_oct16,
+        oct::decode_normal_oct16,
+    );
 }

@@ -10,7 +10,7 @@ use glam::Vec3;
 use prepass::normal::xy_fp16;
 use prepass::sweep::normal::{
     UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, fibonacci_directions,
-    killzone_myth, round_trip, stratified_codes32, unorm_forms,
+    killzone_myth, round_trip, stratified_codes32,
 };
 
 /// Worst case for z ≥ 0: the halves are within δ = 2^-12 of x, y (half an f16 ULP at [0.5, 1);
@@ -39,17 +39,7 @@ fn round_trip_upper_hemisphere_and_the_mirror_below() {
             rt.error.mean(),
             rt.error.max
         );
-        assert_eq!(
-            rt.twin_encode.count, 0,
-            "{set}: Rust encoder differs: {:?}",
-            rt.twin_encode.first
-        );
-        assert_eq!(
-            rt.twin_decode.count, 0,
-            "{set}: Rust decoder differs: {:?}",
-            rt.twin_decode.first
-        );
-        assert_eq!(rt.not_unit, 0);
+        common::assert_round_trip_matches_twins(set, &rt);
         // Bound: worst_case_upper_deg plus f32 slack (a few 2^-24 rad ≈ 1e-5°).
         assert!(
             rt.error_upper.max <= worst_case_upper_deg() + 1e-5,
@@ -148,28 +138,19 @@ fn bad_input_gets_the_documented_code_on_both_sides() {
 
 #[test]
 fn render_target_form_matches_the_code_path() {
-    let inputs: Vec<[f32; 3]> = fibonacci_directions(1 << 16)
-        .into_iter()
-        .chain(bad_inputs().into_iter().map(|c| c.0))
-        .collect();
-    let f = unorm_forms(
-        gpu(),
-        codec("xy fp16"),
+    let inputs = common::render_target_inputs();
+    common::assert_unorm_forms(
+        "xy fp16",
         "encode_normal_xy_fp16_unorm",
         "decode_normal_xy_fp16_unorm",
         4,
         &inputs,
-    )
-    .unwrap();
-    assert_eq!(f.encode.count, 0, "{:?}", f.encode.first);
-    // Bound: 0. Every channel is within 0.45/255 of byte/255, so round(255 c) is the byte.
-    assert_eq!(f.decode.count, 0, "{:?}", f.decode.first);
-    for v in &inputs {
-        let v = Vec3::from(*v);
-        let ch = xy_fp16::encode_normal_xy_fp16_unorm(v);
-        assert_eq!(
-            xy_fp16::decode_normal_xy_fp16_unorm(ch),
-            xy_fp16::decode_normal_xy_fp16(xy_fp16::encode_normal_xy_fp16(v))
-        );
-    }
+    );
+    common::assert_twin_unorm_form(
+        &inputs,
+        xy_fp16::encode_normal_xy_fp16_unorm,
+        xy_fp16::decode_normal_xy_fp16_unorm,
+        xy_fp16::encode_normal_xy_fp16,
+        xy_fp16::decode_normal_xy_fp16,
+    );
 }

@@ -9,8 +9,8 @@ use glam::Vec3;
 use prepass::harness::Arg;
 use prepass::normal::xyz8;
 use prepass::sweep::normal::{
-    UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, decode_range,
-    fibonacci_directions, round_trip, unorm_forms,
+    adversarial_directions, bad_inputs, codec, decode_codes, decode_range, fibonacci_directions,
+    round_trip,
 };
 
 /// The worst case of rounding each coordinate to the byte grid: each decoded coordinate
@@ -35,17 +35,7 @@ fn round_trip_meets_target_and_twin_is_bit_identical() {
             rt.error.max,
             worst_case_deg()
         );
-        assert_eq!(
-            rt.twin_encode.count, 0,
-            "{set}: Rust encoder differs: {:?}",
-            rt.twin_encode.first
-        );
-        assert_eq!(
-            rt.twin_decode.count, 0,
-            "{set}: Rust decoder differs: {:?}",
-            rt.twin_decode.first
-        );
-        assert_eq!(rt.not_unit, 0);
+        common::assert_round_trip_matches_twins(set, &rt);
         assert_eq!(rt.error.nan_count, 0);
         assert!(
             rt.codes.iter().all(|p| p >> 24 == 0),
@@ -74,14 +64,7 @@ fn every_code_decodes_to_a_unit_vector_and_byte_3_is_ignored() {
         .collect();
     let dj = decode_codes(gpu(), c, &junk).unwrap();
     for (name, d) in [("all 2^24", &d), ("byte 3 junk", &dj)] {
-        eprintln!(
-            "xyz8 {name}: max |len-1| {:.3e}, max angle to exact {:.3e}°, twin differs {}",
-            d.max_len_error, d.max_angle_deg, d.twin.count
-        );
-        assert_eq!(d.not_unit, 0, "{name}: not unit within {UNIT_TOLERANCE}");
-        // Bound: only the final per-component divide turns the direction, ≤ √2·2^-24 rad.
-        assert!(d.max_angle_deg <= (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12);
-        assert_eq!(d.twin.count, 0, "{name}: {:?}", d.twin.first);
+        common::assert_decoder(&format!("xyz8 {name}"), d);
     }
     let k = gpu().kernel(c.source, c.decode).unwrap();
     let got = k.run(&[Arg::column(&junk)], junk.len() as u64).unwrap();
@@ -102,30 +85,21 @@ fn bad_input_gets_the_documented_code_on_both_sides() {
 
 #[test]
 fn render_target_form_matches_the_code_path() {
-    let inputs: Vec<[f32; 3]> = fibonacci_directions(1 << 16)
-        .into_iter()
-        .chain(bad_inputs().into_iter().map(|c| c.0))
-        .collect();
-    let f = unorm_forms(
-        gpu(),
-        codec("xyz8"),
+    let inputs = common::render_target_inputs();
+    common::assert_unorm_forms(
+        "xyz8",
         "encode_normal_xyz8_unorm",
         "decode_normal_xyz8_unorm",
         4,
         &inputs,
-    )
-    .unwrap();
-    assert_eq!(f.encode.count, 0, "{:?}", f.encode.first);
-    // Bound: 0. Every channel is within 0.45/255 of byte/255, so round(255 c) is the byte.
-    assert_eq!(f.decode.count, 0, "{:?}", f.decode.first);
-    for v in &inputs {
-        let v = Vec3::from(*v);
-        let ch = xyz8::encode_normal_xyz8_unorm(v);
-        assert_eq!(
-            xyz8::decode_normal_xyz8_unorm(ch),
-            xyz8::decode_normal_xyz8(xyz8::encode_normal_xyz8(v))
-        );
-    }
+    );
+    common::assert_twin_unorm_form(
+        &inputs,
+        xyz8::encode_normal_xyz8_unorm,
+        xyz8::decode_normal_xyz8_unorm,
+        xyz8::encode_normal_xyz8,
+        xyz8::decode_normal_xyz8,
+    );
     assert_eq!(
         xyz8::decode_normal_xyz8_unorm([f32::NAN, 2.0, -1.0, 0.5]),
         xyz8::decode_normal_xyz8(0x0000_ff00)

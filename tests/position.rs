@@ -31,6 +31,31 @@ fn rebuild_source() -> String {
     )
 }
 
+/// A `side`×`side` screen: each pixel's NDC centre, and a different depth code per pixel spread
+/// over the whole range.
+fn screen(side: usize) -> (Vec<[f32; 2]>, Vec<u32>) {
+    let mut ndc = Vec::with_capacity(side * side);
+    let mut codes = Vec::with_capacity(side * side);
+    for j in 0..side {
+        for i in 0..side {
+            let x = (i as f32 + 0.5) / side as f32 * 2.0 - 1.0;
+            let y = 1.0 - (j as f32 + 0.5) / side as f32 * 2.0;
+            ndc.push([x, y]);
+            codes.push(((i * side + j) as u32).wrapping_mul(0x9e37_79b9) >> 8);
+        }
+    }
+    (ndc, codes)
+}
+
+/// The exact view-space position of pixel `ndc` at view distance `vz` (f64), left-handed.
+fn exact_position(ndc: [f32; 2], tan: [f32; 2], vz: f64) -> [f64; 3] {
+    [
+        f64::from(ndc[0]) * f64::from(tan[0]) * vz,
+        f64::from(ndc[1]) * f64::from(tan[1]) * vz,
+        vz,
+    ]
+}
+
 #[test]
 fn view_position_within_view_z_error_plus_two_roundings_over_screen_and_fov() {
     let src = rebuild_source();
@@ -40,17 +65,7 @@ fn view_position_within_view_z_error_plus_two_roundings_over_screen_and_fov() {
     for fov_deg in [1.0f64, 5.0, 30.0, 60.0, 90.0, 120.0, 150.0, 179.0] {
         let ty = (fov_deg.to_radians() / 2.0).tan() as f32;
         let tan = [ty * 16.0 / 9.0, ty];
-        let mut ndc = Vec::with_capacity(side * side);
-        let mut codes = Vec::with_capacity(side * side);
-        for j in 0..side {
-            for i in 0..side {
-                let x = (i as f32 + 0.5) / side as f32 * 2.0 - 1.0;
-                let y = 1.0 - (j as f32 + 0.5) / side as f32 * 2.0;
-                ndc.push([x, y]);
-                // Every pixel a different depth code, spread over the whole range.
-                codes.push(((i * side + j) as u32).wrapping_mul(0x9e37_79b9) >> 8);
-            }
-        }
+        let (ndc, codes) = screen(side);
         let n = ndc.len() as u64;
         let args = [
             Arg::column(&ndc),
@@ -69,11 +84,7 @@ fn view_position_within_view_z_error_plus_two_roundings_over_screen_and_fov() {
         for k in 0..ndc.len() {
             let vz_exact = exact::view_z_from_depth24(codes[k], near, far);
             let e_vz = relative_error(f64::from(vz.as_f32()[k]), vz_exact);
-            let exact_p = [
-                f64::from(ndc[k][0]) * f64::from(tan[0]) * vz_exact,
-                f64::from(ndc[k][1]) * f64::from(tan[1]) * vz_exact,
-                vz_exact,
-            ];
+            let exact_p = exact_position(ndc[k], tan, vz_exact);
             // Bound: x and y pass two correctly rounded products (ndc·tan, then ·vz), each
             // ≤ 2^-24 relative, on top of vz's own error; second-order terms ≤ 2^-44.
             // z is 1·vz (exact): vz's error alone. In ULPs, 2·2^-24 relative is ≤ 2 ULP.
@@ -399,4 +410,57 @@ fn rasteriser_interpolates_corner_rays_to_each_pixels_ray() {
         "rasterised corner rays: worst error {worst:e} = {:.2e} of a pixel step",
         worst / step
     );
+}
+
+/// The same rebuild on the emulated worst conforming adapter: each of x and y is two products
+/// (`ndc·tan`, then `·vz`), each rounded to either neighbour (≤ 2·2^-24 relative), on top of view
+/// z's own (emulated) error; z is `1·vz`, exact. 64×64 pixels at four fields of view, every
+/// worst-case policy.
+#[test]
+fn view_position_within_view_z_error_plus_two_roundings_under_emulation() {
+    use prepass::conforming::{EmulatedKernel, Emulation, Policy};
+    let src = rebuild_source();
+    let (near, far) = (0.1f32, 1.0e5f32);
+    let side = 64usize;
+    for policy in Policy::WORST {
+        let emu = Emulation::new(policy);
+        let rebuild = EmulatedKernel::new(gpu(), &src, "rebuild", &emu).unwrap();
+        let vz_only = EmulatedKernel::new(gpu(), &src, "vz_only", &emu).unwrap();
+        let mut worst = 0.0f64;
+        for fov_deg in [1.0f64, 60.0, 120.0, 179.0] {
+            let ty = (fov_deg.to_radians() / 2.0).tan() as f32;
+            let tan = [ty * 16.0 / 9.0, ty];
+            let (ndc, codes) = screen(side);
+            let n = ndc.len() as u64;
+            let nf = [near, far];
+            let args = [
+                Arg::column(&ndc),
+                Arg::splat_vec(&tan),
+                Arg::column(&codes),
+                Arg::splat_vec(&nf),
+            ];
+            let (p, _) = rebuild.run(&args, n).unwrap();
+            let (vz, _) = vz_only
+                .run(&[Arg::column(&codes), Arg::splat_vec(&nf)], n)
+                .unwrap();
+            for k in 0..ndc.len() {
+                let vz_exact = exact::view_z_from_depth24(codes[k], near, far);
+                let e_vz = relative_error(f64::from(vz.as_f32()[k]), vz_exact);
+                let exact_p = exact_position(ndc[k], tan, vz_exact);
+                for (c, exact_c) in exact_p.iter().enumerate() {
+                    let e = relative_error(f64::from(p.as_vec3()[k][c]), *exact_c);
+                    let bound = e_vz + if c < 2 { 4.0 * U + 2f64.powi(-42) } else { 0.0 };
+                    assert!(
+                        e <= bound,
+                        "{policy}, fov {fov_deg}°, pixel {k}, component {c}: rel err {e:e} > {bound:e} (view z's own {e_vz:e} + two either-neighbour products, 4·2^-24)"
+                    );
+                    worst = worst.max(e - e_vz);
+                }
+            }
+        }
+        eprintln!(
+            "emulated {policy}: position rebuild worst error beyond view z's own = {:.3} × 2^-24 relative (bound 4)",
+            worst / U
+        );
+    }
 }

@@ -131,6 +131,28 @@ fn linear_8bit_baselines_are_measured_beside_it() {
 }
 
 /// Powers spread over `[1, max]` for the non-power-of-two ranges: every 61st f32 pattern.
+/// The decode part of [`general_range_bound`], relative.
+/// decode: x = k·log2(max)/255 off by ≤ (6 + 2 + 5)u·x (log2 3 ULP, × either neighbour, / 2.5
+/// ULP; u = 2^-24, one ULP ≤ 2u relative), adding 13u·x·ln 2 relative; exp2 adds (3 + 2x) ULP
+/// ≤ (3 + 2x)·2u. With x ≤ L = log2(max).
+fn general_range_decode_bound(max: f32) -> f64 {
+    let l = f64::from(max).log2();
+    13.0 * U * l * std::f64::consts::LN_2 + (3.0 + 2.0 * l) * 2.0 * U
+}
+
+/// The relative round-trip bound of a general (not power-of-two) range on every conforming
+/// adapter (WGSL accuracy rules): the quantisation limit, plus
+/// encode: t = 255·log2(p)/log2(max); each log2 within 3 ULP (6u relative), × either neighbour
+/// (2u), / 2.5 ULP (5u): t off by ≤ (6 + 6 + 2 + 5)u·t ≤ 19u·255 codes; a power within that of
+/// a boundary may take the other code, which costs at most 19u·255·(L/255)·ln 2 more; plus the
+/// decode part and u for the final comparison in f64.
+fn general_range_bound(max: f32) -> f64 {
+    let l = f64::from(max).log2();
+    let limit = quantisation_limit(f64::from(max));
+    let enc = 19.0 * U * l * std::f64::consts::LN_2;
+    limit + enc + general_range_decode_bound(max) + U
+}
+
 fn sampled_powers(max: f32) -> Vec<f32> {
     (ONE_BITS..=max.to_bits())
         .step_by(61)
@@ -142,17 +164,9 @@ fn sampled_powers(max: f32) -> Vec<f32> {
 #[test]
 fn general_ranges_stay_within_their_derived_bound() {
     for max in [1000.0f32, 100.5, 3.0e6] {
-        let l = f64::from(max).log2();
         let limit = quantisation_limit(f64::from(max));
-        // Derivation (WGSL accuracy rules, u = 2^-24, one ULP ≤ 2u relative):
-        // encode: t = 255·log2(p)/log2(max); each log2 within 3 ULP (6u relative), × 0.5 ULP,
-        // / 2.5 ULP: t off by ≤ (6 + 6 + 1 + 5)u·t ≤ 18u·255 codes; a power within that of a
-        // boundary may take the other code, which costs at most 18u·255·(L/255)·ln 2 more.
-        // decode: x = k·log2(max)/255 off by ≤ (6 + 1 + 5)u·x, adding 12u·x·ln 2 relative;
-        // exp2 adds (3 + 2x) ULP ≤ (3 + 2x)·2u. With x ≤ L:
-        let enc = 18.0 * U * l * std::f64::consts::LN_2;
-        let dec = 12.0 * U * l * std::f64::consts::LN_2 + (3.0 + 2.0 * l) * 2.0 * U;
-        let bound = limit + enc + dec + U;
+        let dec = general_range_decode_bound(max);
+        let bound = general_range_bound(max);
         let ps = sampled_powers(max);
         let out = gpu()
             .kernel(
@@ -323,6 +337,59 @@ fn normal_and_roughness_share_one_texel() {
             assert_eq!(w[2], code.min(255));
             assert_eq!(roughness::normal_xyz8_from_log_roughness_texel(t), i);
             assert_eq!(roughness::log_roughness_code_from_texel(t), code.min(255));
+        }
+    }
+}
+
+/// The power-of-two ranges are integer constructions, so their promise — the exact nearest
+/// code, and the decode bit-identical to the twin — must hold on every conforming adapter: run
+/// under every worst-case policy of the emulation on sampled powers (every 61st f32 in
+/// [1, max]) and every code. General ranges keep their derived bound under emulation too.
+#[test]
+fn every_range_keeps_its_promise_under_emulation() {
+    use prepass::conforming::{EmulatedKernel, Emulation, Policy};
+    let src = format!(
+        "{ROUGHNESS}\nfn rt(p: f32, m: f32) -> vec2<u32> {{ let c = encode_log_roughness(p, m); \
+         return vec2<u32>(c, bitcast<u32>(decode_log_roughness(c, m))); }}"
+    );
+    for policy in Policy::WORST {
+        let k = EmulatedKernel::new(gpu(), &src, "rt", &Emulation::new(policy)).unwrap();
+        for max in [8192.0f32, 256.0, 1000.0, 100.5, 3.0e6] {
+            let ps = sampled_powers(max);
+            let (out, _) = k
+                .run(&[Arg::column(&ps), Arg::splat_f32(max)], ps.len() as u64)
+                .unwrap();
+            let (mut code_diff, mut value_diff, mut worst) = (0u64, 0u64, 0.0f64);
+            for (p, w) in ps.iter().zip(out.words().chunks_exact(2)) {
+                let v = f64::from(f32::from_bits(w[1]));
+                worst = worst.max((v - f64::from(*p)).abs() / f64::from(*p));
+                code_diff +=
+                    u64::from(roughness::exact::encode(f64::from(*p), f64::from(max)) != w[0]);
+                value_diff +=
+                    u64::from(roughness::decode_log_roughness(w[0], max).to_bits() != w[1]);
+            }
+            let limit = quantisation_limit(f64::from(max));
+            eprintln!(
+                "emulated {policy}, max {max}: {} powers, max rel {worst:.7} (limit {limit:.7}); {code_diff} codes off the exact nearest, {value_diff} decodes off the twin",
+                ps.len()
+            );
+            if max.log2().fract() == 0.0 {
+                assert_eq!(
+                    code_diff, 0,
+                    "{policy} max {max}: the integer encoder is not exact under emulation"
+                );
+                assert_eq!(
+                    value_diff, 0,
+                    "{policy} max {max}: the table decoder differs from the twin under emulation"
+                );
+            } else {
+                let bound = general_range_bound(max);
+                assert!(
+                    worst <= bound,
+                    "{policy} max {max}: {worst} beyond the derived bound {bound} (margin {:e}; general_range_bound)",
+                    bound - worst
+                );
+            }
         }
     }
 }

@@ -5,7 +5,10 @@ mod common;
 
 use prepass::projection::DepthConvention;
 use prepass::scene::gbuffer::{GBufferLayout, Target, TargetFormat, megabytes};
-use prepass::scene::{DepthChoice, DepthStorage, Library, PositionChoice, Scene};
+use prepass::scene::{
+    DepthChoice, DepthStorage, Library, LightBuffers, LightingChoice, Lights, NormalChoice,
+    NormalEncoding, PositionChoice, RoughnessChoice, Scene, Specular,
+};
 use std::collections::{BTreeSet, HashMap};
 use std::path::Path;
 
@@ -62,10 +65,87 @@ fn a_depth_only_scene_contains_only_its_depth_function_and_helpers() {
     }
 }
 
+/// Every scene declaration, valid or not: 119,808 of them (the exhaustive tests' input).
+fn all_scenes() -> Vec<Scene> {
+    let mut depths = Vec::new();
+    for storage in [
+        DepthStorage::Float32,
+        DepthStorage::Code24,
+        DepthStorage::Code24Rgba8,
+    ] {
+        for convention in [DepthConvention::Standard, DepthConvention::Reversed] {
+            for infinite_far in [false, true] {
+                depths.push(DepthChoice {
+                    storage,
+                    convention,
+                    infinite_far,
+                });
+            }
+        }
+    }
+    let positions = [
+        PositionChoice::None,
+        PositionChoice::View,
+        PositionChoice::World,
+        PositionChoice::CameraRelative,
+    ];
+    let mut normals = vec![NormalChoice::default()];
+    for e in NormalEncoding::ALL {
+        for fast_encoder in [false, true] {
+            normals.push(NormalChoice {
+                encoding: Some(e),
+                fast_encoder,
+            });
+        }
+    }
+    let mut lightings = Vec::new();
+    for lights in [
+        Lights::None,
+        Lights::Point,
+        Lights::Spot,
+        Lights::PointAndSpot,
+    ] {
+        for specular in [Specular::None, Specular::BlinnPhong, Specular::Phong] {
+            for buffers in [LightBuffers::One, LightBuffers::Two] {
+                for aggregate_vertex_lights in [false, true] {
+                    for light_volumes in [false, true] {
+                        lightings.push(LightingChoice {
+                            lights,
+                            specular,
+                            buffers,
+                            aggregate_vertex_lights,
+                            light_volumes,
+                        });
+                    }
+                }
+            }
+        }
+    }
+    let mut v = Vec::new();
+    for &depth in &depths {
+        for &position in &positions {
+            for &normal in &normals {
+                for roughness in [RoughnessChoice::None, RoughnessChoice::Log8] {
+                    for &lighting in &lightings {
+                        v.push(Scene {
+                            depth,
+                            position,
+                            normal,
+                            roughness,
+                            lighting,
+                        });
+                    }
+                }
+            }
+        }
+    }
+    v
+}
+
 #[test]
 fn every_valid_combination_composes_validates_and_translates() {
     let lib = Library::shipped().unwrap();
-    let all = Scene::all();
+    let all = all_scenes();
     assert_eq!(all.len(), 119_808);
     // One representative declaration per distinct root set (the module depends on nothing else).
     let mut by_roots: HashMap<Vec<&str>, Scene> = HashMap::new();
@@ -129,7 +209,7 @@ fn blocks(wgsl: &str) -> Vec<String> {
 
 /// Every scene that differs from `s` in exactly one choice (field value), valid or not.
 fn neighbours(s: &Scene) -> Vec<Scene> {
-    Scene::all()
+    all_scenes()
         .into_iter()
         .filter(|t| {
             let diffs = [
@@ -158,7 +238,7 @@ fn neighbours(s: &Scene) -> Vec<Scene> {
 #[test]
 fn adding_a_choice_never_changes_the_code_emitted_for_the_others() {
     let lib = Library::shipped().unwrap();
-    let valid: Vec<Scene> = Scene::all()
+    let valid: Vec<Scene> = all_scenes()
         .into_iter()
         .filter(|s| s.roots().is_ok())
         .collect();
@@ -191,10 +271,6 @@ fn adding_a_choice_never_changes_the_code_emitted_for_the_others() {
 
 /// A scene using a piece of every module: the README's "full scene" row.
 fn full_scene() -> Scene {
-    use prepass::scene::{
-        LightBuffers, LightingChoice, Lights, NormalChoice, NormalEncoding, RoughnessChoice,
-        Specular,
-    };
     Scene {
         depth: DepthChoice {
             storage: DepthStorage::Float32,
@@ -217,18 +293,25 @@ fn full_scene() -> Scene {
     }
 }
 
-#[test]
-fn the_full_scene_is_smaller_than_its_files() {
-    let s = full_scene();
-    let lib = Library::shipped().unwrap();
-    let roots = s.roots().unwrap();
-    let wgsl = lib.compose(roots.iter().copied()).unwrap();
+/// The shipped files the roots come from, and their bytes together: what a user who picks whole
+/// files by hand would ship.
+fn hand_picked(lib: &Library, roots: &[&str]) -> (BTreeSet<&'static str>, usize) {
     let files: BTreeSet<&str> = roots.iter().map(|r| lib.item(r).unwrap().file).collect();
     let hand: usize = prepass::wgsl::FILES
         .iter()
         .filter(|f| files.contains(f.name))
         .map(|f| f.source.len())
         .sum();
+    (files, hand)
+}
+
+#[test]
+fn the_full_scene_is_smaller_than_its_files() {
+    let s = full_scene();
+    let lib = Library::shipped().unwrap();
+    let roots = s.roots().unwrap();
+    let wgsl = lib.compose(roots.iter().copied()).unwrap();
+    let (files, hand) = hand_picked(&lib, &roots);
     eprintln!(
         "full scene: {} bytes composed, {hand} bytes in {files:?}; G-buffer {} B/pixel",
         wgsl.len(),
@@ -285,7 +368,7 @@ fn composed_module_is_no_larger_than_the_hand_picked_files() {
     let lib = Library::shipped().unwrap();
     eprintln!("| scene | composed bytes | hand-picked files | their bytes |");
     let mut seen = std::collections::HashSet::new();
-    for s in Scene::all().into_iter().filter(|s| s.roots().is_ok()) {
+    for s in all_scenes().into_iter().filter(|s| s.roots().is_ok()) {
         let roots = s.roots().unwrap();
         let mut key = roots.clone();
         key.sort_unstable();
@@ -293,18 +376,13 @@ fn composed_module_is_no_larger_than_the_hand_picked_files() {
             continue;
         }
         let wgsl = lib.compose(roots.iter().copied()).unwrap();
-        let files: BTreeSet<&str> = roots.iter().map(|r| lib.item(r).unwrap().file).collect();
-        let hand: usize = prepass::wgsl::FILES
-            .iter()
-            .filter(|f| files.contains(f.name))
-            .map(|f| f.source.len())
-            .sum();
+        let (files, hand) = hand_picked(&lib, &roots);
         assert!(wgsl.len() <= hand, "{s:?}: {} > {hand}", wgsl.len());
         // Print the depth/position scenes (the README's table); check all.
-        if s.normal.encoding.is_some() || s.roughness != prepass::scene::RoughnessChoice::None {
+        if s.normal.encoding.is_some() || s.roughness != RoughnessChoice::None {
             continue;
         }
-        if s.lighting != prepass::scene::LightingChoice::default() {
+        if s.lighting != LightingChoice::default() {
             continue;
         }
         eprintln!("| {s:?} | {} | {files:?} | {hand} |", wgsl.len());

@@ -7,9 +7,15 @@
 //! | octahedral, precise and rounding encoders (Cigolle et al. 2014) | 16, 24, 32 | `wgsl/normal_oct.wgsl` | [`oct`] |
 //! | hemi-octahedral, view-space `z ≥ 0` only (for comparison) | 24 | `wgsl/normal_hemioct.wgsl` | [`hemioct`] |
 //!
-//! Every encoder is bit-identical to its WGSL twin on a correctly rounded adapter (checked on
-//! lavapipe over every tested input by `tests/normal_*.rs`), so a normal baked on the CPU decodes
-//! exactly like one a shader wrote. The WGSL avoids the expressions an implementation may
+//! **Twins.** Every encoder is bit-identical to its WGSL twin on a correctly rounded adapter
+//! (checked on lavapipe over every tested input by `tests/normal_*.rs`), so a normal baked on the
+//! CPU decodes exactly like one a shader wrote there. On any conforming adapter — which may round
+//! `+ − ×` either way, err 2.5 ULP on `/` and 2 on `inverseSqrt`, fuse and reassociate — the
+//! WGSL encoder's code is within one code step of the twin's (per lane, two codes of one exact
+//! direction counting as equal), every decode is finite and unit within
+//! [`crate::sweep::conforming::UNIT_TOLERANCE_CONFORMING`] (`18·2^-24`, derived there), and the
+//! precise encoders stay within 5× their correctly rounded optimality tolerance: checked under
+//! the worst-case emulation by `tests/conforming.rs`; the figures are in `docs/figures.md`. The WGSL avoids the expressions an implementation may
 //! legitimately evaluate differently: no `a*b + c` whose fusion into an fma would change the
 //! result (the multiply is exact, or the sum is a `dot()`), no repeated factor an optimiser could
 //! pull out (Mesa rewrites `a*b + a*c` into `a*(b + c)`), and NaN/Inf/subnormals found from bits.

@@ -12,6 +12,8 @@ pub mod inputs;
 pub mod metrics;
 #[cfg(feature = "proptest")]
 pub mod strategies;
+#[cfg(all(feature = "proptest", feature = "harness"))]
+mod value;
 
 /// The proptest crate these strategies are built with, so downstream code combines them with
 /// the same version.

@@ -1,6 +1,11 @@
-//! The render targets a scene's choices imply, their bytes per pixel, and their memory at a
-//! resolution and MSAA count. Plain data: no wgpu needed (feature `harness` adds
-//! [`TargetFormat::to_wgpu`]).
+//! The render targets a scene's choices imply ([`Scene::gbuffer`]), their bytes per pixel,
+//! and their memory at a resolution and MSAA count. Plain data: no wgpu needed (feature
+//! `harness` adds [`TargetFormat::to_wgpu`]).
+
+use super::{
+    DepthStorage, LightBuffers, Lights, NormalEncoding, RoughnessChoice, Scene, SceneError,
+};
+use crate::projection::DepthConvention;
 
 /// A render-target or depth format, with the WebGPU format it corresponds to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -94,4 +99,121 @@ pub fn megabytes(bytes: u64) -> f64 {
 /// Bytes as binary mebibytes (2^20).
 pub fn mebibytes(bytes: u64) -> f64 {
     bytes as f64 / 1_048_576.0
+}
+
+impl Scene {
+    /// The G-buffer the choices imply.
+    pub fn gbuffer(&self) -> Result<GBufferLayout, SceneError> {
+        self.validate()?;
+        let mut targets = Vec::new();
+        let convention = match self.depth.convention {
+            DepthConvention::Standard => "standard",
+            DepthConvention::Reversed => "reversed",
+        };
+        let far = if self.depth.infinite_far {
+            ", infinite far"
+        } else {
+            ""
+        };
+        match self.depth.storage {
+            DepthStorage::Float32 => targets.push(Target {
+                name: "depth",
+                format: TargetFormat::Depth32Float,
+                channels: format!("float depth ({convention}{far})"),
+            }),
+            DepthStorage::Code24 | DepthStorage::Code24Rgba8 => {
+                targets.push(Target {
+                    name: "depth",
+                    format: TargetFormat::Depth24PlusStencil8,
+                    channels: format!("hardware depth test + stencil ({convention}{far})"),
+                });
+                let (format, channels) = if self.depth.storage == DepthStorage::Code24 {
+                    (TargetFormat::R32Uint, "r: 24-bit depth code")
+                } else {
+                    (
+                        TargetFormat::Rgba8Unorm,
+                        "r: code bits 23–16, g: 15–8, b: 7–0, a: free",
+                    )
+                };
+                targets.push(Target {
+                    name: "depth code",
+                    format,
+                    channels: channels.into(),
+                });
+            }
+        }
+        let rough = self.roughness == RoughnessChoice::Log8;
+        let alpha_free = matches!(
+            self.normal.encoding,
+            Some(NormalEncoding::Xyz8 | NormalEncoding::Oct24 | NormalEncoding::Hemioct24)
+        );
+        if let Some(e) = self.normal.encoding {
+            let a = if rough && alpha_free {
+                "a: log roughness"
+            } else if alpha_free {
+                "a: free (material)"
+            } else {
+                ""
+            };
+            let (format, channels) = match e {
+                NormalEncoding::Xyz8 => {
+                    (TargetFormat::Rgba8Unorm, format!("rgb: normal xyz8, {a}"))
+                }
+                NormalEncoding::XyFp16 => (
+                    TargetFormat::Rgba8Unorm,
+                    "rg: view-space x as f16, ba: y as f16".to_string(),
+                ),
+                NormalEncoding::Oct16 => (
+                    TargetFormat::Rg8Unorm,
+                    "rg: octahedral u, v (8 bits each)".into(),
+                ),
+                NormalEncoding::Oct24 => (
+                    TargetFormat::Rgba8Unorm,
+                    format!("rgb: octahedral u, v (12 bits each), {a}"),
+                ),
+                NormalEncoding::Oct32 => (
+                    TargetFormat::Rgba8Unorm,
+                    "rg: octahedral u, ba: v (16 bits each)".into(),
+                ),
+                NormalEncoding::Hemioct24 => (
+                    TargetFormat::Rgba8Unorm,
+                    format!("rgb: hemi-octahedral u, v (12 bits each), {a}"),
+                ),
+            };
+            targets.push(Target {
+                name: "normal",
+                format,
+                channels,
+            });
+        }
+        if rough && !alpha_free {
+            targets.push(Target {
+                name: "roughness",
+                format: TargetFormat::R8Unorm,
+                channels: "r: log roughness code".into(),
+            });
+        }
+        if self.lighting.lights != Lights::None {
+            match self.lighting.buffers {
+                LightBuffers::One => targets.push(Target {
+                    name: "light buffer",
+                    format: TargetFormat::Rgba16Float,
+                    channels: "rgb: Σ diffuse, a: Σ specular luminance".into(),
+                }),
+                LightBuffers::Two => {
+                    targets.push(Target {
+                        name: "diffuse light",
+                        format: TargetFormat::Rgba16Float,
+                        channels: "rgb: Σ diffuse".into(),
+                    });
+                    targets.push(Target {
+                        name: "specular light",
+                        format: TargetFormat::Rgba16Float,
+                        channels: "rgb: Σ specular".into(),
+                    });
+                }
+            }
+        }
+        Ok(GBufferLayout { targets })
+    }
 }

@@ -341,3 +341,131 @@ pub fn grid_table(
     }
     Ok(rows)
 }
+
+/// Runs a batch (arguments, element count) and returns the `f32` results: the shipped kernel, or
+/// an emulated one.
+pub type RunBatch<'a> = dyn Fn(&[Arg<'_>], u64) -> Result<Vec<f32>, HarnessError> + 'a;
+
+/// One shipped linear-depth function, as the sampled sweeps call it.
+#[derive(Clone, Copy, Debug)]
+pub struct Path {
+    /// The WGSL function (and Rust twin) name.
+    pub function: &'static str,
+    /// Whether it reads 24-bit codes (else float depth).
+    pub code: bool,
+    /// Whether it takes the per-projection constants (else near and far).
+    pub consts: bool,
+    /// The depth convention it reads.
+    pub convention: DepthConvention,
+}
+
+/// Every shipped path: codes, standard and reversed float depth, each with near/far and with
+/// per-pixel constants.
+pub const PATHS: [Path; 6] = [
+    Path {
+        function: "view_z_from_depth24",
+        code: true,
+        consts: false,
+        convention: DepthConvention::Standard,
+    },
+    Path {
+        function: "view_z_from_depth24_consts",
+        code: true,
+        consts: true,
+        convention: DepthConvention::Standard,
+    },
+    Path {
+        function: "view_z_from_depth",
+        code: false,
+        consts: false,
+        convention: DepthConvention::Standard,
+    },
+    Path {
+        function: "view_z_from_depth_consts",
+        code: false,
+        consts: true,
+        convention: DepthConvention::Standard,
+    },
+    Path {
+        function: "view_z_from_reversed_depth",
+        code: false,
+        consts: false,
+        convention: DepthConvention::Reversed,
+    },
+    Path {
+        function: "view_z_from_reversed_depth_consts",
+        code: false,
+        consts: true,
+        convention: DepthConvention::Reversed,
+    },
+];
+
+/// The sample of [`sampled_worst`]: codes 0–255, every 257th code and the top 256.
+pub fn sampled_codes() -> Vec<u32> {
+    let mut codes: Vec<u32> = (0..256)
+        .chain((256..DEPTH24_MAX - 255).step_by(257))
+        .collect();
+    codes.extend(DEPTH24_MAX - 255..=DEPTH24_MAX);
+    codes
+}
+
+/// The worst error of one path over the whole stiff grid, sampled ([`sampled_codes`], or 2^16
+/// [`float_depths`]), run by `kernel` (the shipped WGSL, or an emulation of it): the ULP error
+/// and a description of the input. A subnormal float depth that an emulated adapter flushed to
+/// the sky (`+∞` with an infinite far plane) counts as its documented answer.
+pub fn sampled_worst(path: &Path, run: &RunBatch<'_>) -> Result<(f64, String), HarnessError> {
+    let codes = sampled_codes();
+    let depths = float_depths(1 << 16);
+    let mut worst = (0.0f64, String::new());
+    for case in stiff_grid() {
+        let (n, f) = (case.near, case.far);
+        let p = case.projection(path.convention);
+        let k: Vec<f32> = match (path.code, path.convention) {
+            (true, _) => p.depth24_consts().to_wgsl().to_vec(),
+            (false, DepthConvention::Standard) => p.depth_consts().to_wgsl().to_vec(),
+            (false, DepthConvention::Reversed) => p.reversed_depth_consts().to_wgsl().to_vec(),
+        };
+        let mut args = vec![if path.code {
+            Arg::column(&codes)
+        } else {
+            Arg::column(&depths)
+        }];
+        if path.consts {
+            args.push(Arg::splat_vec(&k));
+        } else {
+            args.extend([Arg::splat_f32(n), Arg::splat_f32(f)]);
+        }
+        let len = if path.code { codes.len() } else { depths.len() };
+        let got = run(&args, len as u64)?;
+        for (i, &g) in got.iter().enumerate() {
+            let e = if path.code {
+                crate::linear_depth::exact::view_z_from_depth24(codes[i], n, f)
+            } else if path.convention == DepthConvention::Standard {
+                crate::linear_depth::exact::view_z_from_depth(depths[i], n, f)
+            } else {
+                crate::linear_depth::exact::view_z_from_reversed_depth(depths[i], n, f)
+            };
+            let flushed_sky = !path.code
+                && f.is_infinite()
+                && depths[i] < f32::MIN_POSITIVE
+                && g == f32::INFINITY;
+            let err = if flushed_sky {
+                0.0
+            } else {
+                distance_error(g, e)
+            };
+            if err > worst.0 {
+                let input = if path.code {
+                    format!("code {}", codes[i])
+                } else {
+                    format!("z {:e}", depths[i])
+                };
+                worst = (
+                    err,
+                    format!("near {n:e}, far {f:e}, {input}: {g:e} vs exact {e:e}"),
+                );
+            }
+        }
+    }
+    Ok(worst)
+}

@@ -1,6 +1,7 @@
 //! Precision sweeps that run the WGSL on the adapter and measure it against exact references
 //! (feature `harness`). The tests assert on their results; `errplot` tabulates them.
 
+pub mod conforming;
 pub mod depth24;
 pub mod linear_depth;
 pub mod lpp;

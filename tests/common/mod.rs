@@ -55,3 +55,94 @@ pub fn assert_encodes_like(codec: &str, bad: &[[f32; 3]], good: &[[f32; 3]]) -> 
     }
     got
 }
+
+/// The inputs of the normal render-target tests: 2^16 Fibonacci directions, then every bad
+/// encoder input.
+#[allow(dead_code)]
+pub fn render_target_inputs() -> Vec<[f32; 3]> {
+    use prepass::sweep::normal::{bad_inputs, fibonacci_directions};
+    fibonacci_directions(1 << 16)
+        .into_iter()
+        .chain(bad_inputs().into_iter().map(|c| c.0))
+        .collect()
+}
+
+/// `codec`'s WGSL render-target form (`encode_unorm` writing `lanes` unorm channels,
+/// `decode_unorm` reading them) agrees bit for bit with its code path on the adapter over
+/// `inputs` (see `prepass::sweep::normal::unorm_forms`).
+#[allow(dead_code)]
+pub fn assert_unorm_forms(
+    codec: &str,
+    encode_unorm: &str,
+    decode_unorm: &str,
+    lanes: usize,
+    inputs: &[[f32; 3]],
+) {
+    let c = prepass::sweep::normal::codec(codec);
+    let f =
+        prepass::sweep::normal::unorm_forms(gpu(), c, encode_unorm, decode_unorm, lanes, inputs)
+            .unwrap();
+    assert_eq!(f.encode.count, 0, "{codec}: {:?}", f.encode.first);
+    // Bound: 0. Every channel is within 0.45/255 of byte/255, so round(255 c) is the byte.
+    assert_eq!(f.decode.count, 0, "{codec}: {:?}", f.decode.first);
+}
+
+/// A Rust render-target form decodes like its code path:
+/// `decode_unorm(encode_unorm(v)) == decode(encode(v))` for every input.
+#[allow(dead_code)]
+pub fn assert_twin_unorm_form(
+    inputs: &[[f32; 3]],
+    encode_unorm: fn(glam::Vec3) -> [f32; 4],
+    decode_unorm: fn([f32; 4]) -> glam::Vec3,
+    encode: fn(glam::Vec3) -> u32,
+    decode: fn(u32) -> glam::Vec3,
+) {
+    for v in inputs {
+        let v = glam::Vec3::from(*v);
+        assert_eq!(decode_unorm(encode_unorm(v)), decode(encode(v)), "at {v}");
+    }
+}
+
+/// A round trip on the adapter agrees bit for bit with the Rust encoder and decoder, and every
+/// decoded vector is of unit length (within `UNIT_TOLERANCE`); `what` names the codec and set.
+#[allow(dead_code)]
+pub fn assert_round_trip_matches_twins(what: &str, rt: &prepass::sweep::normal::RoundTrip) {
+    assert_eq!(
+        rt.twin_encode.count, 0,
+        "{what}: Rust encoder differs: {:?}",
+        rt.twin_encode.first
+    );
+    assert_eq!(
+        rt.twin_decode.count, 0,
+        "{what}: Rust decoder differs: {:?}",
+        rt.twin_decode.first
+    );
+    assert_eq!(rt.not_unit, 0, "{what}: decoded vectors off unit length");
+}
+
+/// Decoded vectors: finite, unit within the normalize budget, the exact direction of the code
+/// up to that rounding, bit-identical to the Rust twin.
+#[allow(dead_code)]
+pub fn assert_decoder(name: &str, d: &prepass::sweep::normal::DecoderCheck) {
+    use prepass::sweep::normal::UNIT_TOLERANCE;
+    eprintln!(
+        "{name}: {} codes, max |len-1| {:.3e}, max angle to exact {:.3e}°, twin differs {}",
+        d.codes, d.max_len_error, d.max_angle_deg, d.twin.count
+    );
+    assert_eq!(
+        d.not_unit, 0,
+        "{name}: {} results not unit within {UNIT_TOLERANCE}",
+        d.not_unit
+    );
+    // Bound: only the per-component rounding of the final divide turns the direction:
+    // ≤ √2·2^-24 rad (plus the f64 angle's own 1e-15).
+    assert!(
+        d.max_angle_deg <= (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12,
+        "{name}"
+    );
+    assert_eq!(
+        d.twin.count, 0,
+        "{name}: Rust decoder differs: {:?}",
+        d.twin.first
+    );
+}

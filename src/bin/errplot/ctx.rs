@@ -1,8 +1,8 @@
 //! What every section of the report shares: options, the adapter (if any), the Markdown being
 //! written, the CSV files, the charts and the registry of encoding variants.
 
-use crate::cost::Variant;
 use crate::plot::{self, Chart};
+use crate::variant::Variant;
 use indicatif::{ProgressBar, ProgressStyle};
 use prepass::harness::Gpu;
 use std::path::PathBuf;

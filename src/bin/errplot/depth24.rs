@@ -1,8 +1,8 @@
 //! 24-bit depth codes in RGBA8 texels (`wgsl/depth24.wgsl`): recovery from sampled channels and
 //! the hyperbolic depth of every code, against the textbook baselines.
 
-use crate::cost::{TimedArg, Variant, Wgsl, twin_timer};
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
+use crate::variant::{TimedArg, Variant, Wgsl, twin_timer};
 use prepass::depth24::{self, DEPTH24_MAX};
 use prepass::precision::inputs::{ChannelError, rgb8_channels};
 use prepass::precision::metrics::ErrorStats;

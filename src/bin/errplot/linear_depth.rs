@@ -2,9 +2,9 @@
 //! (`tests/baselines/linear_depth.wgsl`): error against distance, the stiff-grid table, and the
 //! cost-table variants.
 
-use crate::cost::{TimedArg, Variant, Wgsl, twin_timer};
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
 use crate::plot::{Chart, LineChart, Series};
+use crate::variant::{TimedArg, Variant, Wgsl, twin_timer};
 use prepass::depth24::DEPTH24_MAX;
 use prepass::harness::Arg;
 use prepass::linear_depth as ld;

@@ -10,14 +10,15 @@
 //!
 //! One file per section. A new module joins the report with:
 //! 1. a file here with `pub fn section(ctx: &mut Ctx) -> Result<(), String>` that runs its sweeps
-//!    (from `src/sweep/<topic>.rs`), writes Markdown (`ctx.line`), CSV (`ctx.csv`) and charts
+//!    (from `src/sweep/<topic>`), writes Markdown (`ctx.line`), CSV (`ctx.csv`) and charts
 //!    (`ctx.chart` with a `plot::Chart`), marking adapter-only cells `NEEDS_ADAPTER` when
 //!    `ctx.gpu()` is `None`;
 //! 2. one line in [`SECTIONS`] (before the cost section);
-//! 3. one `ctx.variants.push(cost::Variant { .. })` per encoding variant (its error, the WGSL and
+//! 3. one `ctx.variants.push(variant::Variant { .. })` per encoding variant (its error, the WGSL and
 //!    timing arguments, the twin's timer): the cost table and the Pareto plots pick them up;
 //! 4. one line per CSV file in `files.rs` documenting its columns.
 
+mod conforming;
 mod cost;
 mod ctx;
 mod depth24;
@@ -28,6 +29,7 @@ mod lpp;
 mod normal;
 mod plot;
 mod roughness;
+mod variant;
 
 use ctx::{Ctx, Options};
 use prepass::harness::Gpu;
@@ -46,6 +48,7 @@ const SECTIONS: &[(&str, Section)] = &[
     ("normal encodings", normal::section),
     ("roughness", roughness::section),
     ("light pre-pass (lpp)", lpp::section),
+    ("conforming adapters", conforming::section),
     ("error against run time", cost::section),
     ("files", files::section),
 ];

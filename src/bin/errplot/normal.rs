@@ -2,9 +2,9 @@
 //! spherical-Fibonacci directions, as an octahedral error image per encoding and one histogram,
 //! and each encoder and decoder as a cost-table variant.
 
-use crate::cost::{TimedArg, Variant, Wgsl, twin_timer};
 use crate::ctx::{Ctx, num};
 use crate::plot::{Bin, Chart, ErrorImage, Histogram};
+use crate::variant::{TimedArg, Variant, Wgsl, twin_timer};
 use glam::Vec3;
 use prepass::precision::metrics::{ErrorStats, angle_degrees, widen3};
 use prepass::sweep::normal::{CODECS, Codec, fibonacci_directions, round_trip};

@@ -1,9 +1,9 @@
 //! Log-range roughness (`wgsl/roughness.wgsl`): relative error of `decode(encode(p))` against
 //! the specular power, beside linear and affine 8-bit storage (`tests/baselines/roughness.wgsl`).
 
-use crate::cost::{TimedArg, Variant, Wgsl, twin_timer};
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
 use crate::plot::{Chart, LineChart, Series};
+use crate::variant::{TimedArg, Variant, Wgsl, twin_timer};
 use prepass::roughness;
 use prepass::sweep::roughness::{
     ONE_BITS, RoundTrip, log_roughness_all_powers, profile_bin_start, roundtrip_all_powers,

@@ -1,0 +1,104 @@
+//! Beside each adapter figure, the worst conforming adapter's (`prepass::conforming`, the same
+//! inputs under the upper, lower and seeded policies) and the derived bound that holds on every
+//! conforming adapter.
+
+use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
+use prepass::conforming::Policy;
+use prepass::sweep::conforming::{linear_depth_figures, normal_figures};
+use prepass::sweep::normal::{adversarial_directions, fibonacci_directions};
+
+/// The section: linear depth and normal encodings, adapter beside emulation beside bound.
+pub fn section(ctx: &mut Ctx) -> Result<(), String> {
+    ctx.line("## On every conforming adapter");
+    ctx.line("");
+    ctx.line(
+        "WGSL lets an adapter round `+ − ×` to either neighbour, err 2.5 ULP on `/`, flush \
+         subnormals, fuse and reassociate. Each figure below is measured on this adapter and on \
+         the same adapter emulating the worst conforming one (`prepass::conforming`: every free \
+         operation at the upper end, the lower end, or a seeded choice of both), beside the \
+         bound derived from the WGSL accuracy table.",
+    );
+    ctx.line("");
+    let Some(gpu) = ctx.gpu() else {
+        ctx.line(format!("({NEEDS_ADAPTER})"));
+        ctx.line("");
+        return Ok(());
+    };
+    let quick = ctx.opts.quick;
+    let policies: &[Policy] = if quick {
+        &[Policy::Upper, Policy::Seeded(1)]
+    } else {
+        &Policy::WORST
+    };
+    let linear = linear_depth_figures(gpu, policies).map_err(|e| e.to_string())?;
+    let mut inputs = fibonacci_directions(if quick { 1 << 12 } else { 1 << 18 });
+    if !quick {
+        inputs.extend(adversarial_directions());
+    }
+    let normal_policies: &[Policy] = if quick {
+        &[Policy::Upper]
+    } else {
+        &[Policy::Upper, Policy::Lower, Policy::Seeded(1)]
+    };
+    let normals = normal_figures(gpu, &inputs, normal_policies).map_err(|e| e.to_string())?;
+    let names: Vec<String> = policies.iter().map(Policy::to_string).collect();
+    ctx.line(format!(
+        "Linear depth over the stiff grid, sampled (`sweep::linear_depth::sampled_worst`); \
+         emulated: {}.",
+        names.join(", ")
+    ));
+    ctx.line("");
+    ctx.line("| function | max ULP (adapter) | max ULP (worst emulated) | bound, correctly rounded | bound, conforming |");
+    ctx.line("|---|---|---|---|---|");
+    let mut csv = String::from(
+        "family,variant,adapter,worst_emulated,bound_correctly_rounded,bound_conforming\n",
+    );
+    for r in &linear {
+        ctx.line(format!(
+            "| `{}` | {} | {} | {} | {} |",
+            r.function,
+            num(r.adapter),
+            num(r.emulated),
+            num(r.bound_correctly_rounded),
+            num(r.bound_conforming)
+        ));
+        csv.push_str(&format!(
+            "linear_depth_ulp,{},{},{},{},{}\n",
+            r.function, r.adapter, r.emulated, r.bound_correctly_rounded, r.bound_conforming
+        ));
+    }
+    ctx.line("");
+    let names: Vec<String> = normal_policies.iter().map(Policy::to_string).collect();
+    ctx.line(format!(
+        "Normal encodings, round trip over {} directions (degrees); emulated: {}.",
+        inputs.len(),
+        names.join(", ")
+    ));
+    ctx.line("");
+    ctx.line("| encoding | max° (adapter) | max° (worst emulated) | mean° (adapter) | mean° (worst emulated) | codes ≠ twin (emulated) | max \\|len − 1\\| (emulated) |");
+    ctx.line("|---|---|---|---|---|---|---|");
+    for r in &normals {
+        let worst = r.emulated_max.iter().copied().fold(0.0, f64::max);
+        ctx.line(format!(
+            "| {} | {} | {} | {} | {} | {} | {} |",
+            r.name,
+            num(r.adapter.max),
+            num(worst),
+            num(r.adapter.mean()),
+            num(r.emulated_mean),
+            r.twin_changed,
+            num(r.max_len_error)
+        ));
+        csv.push_str(&format!(
+            "normal_round_trip_deg,{},{},{},,\n",
+            r.name, r.adapter.max, worst
+        ));
+    }
+    ctx.line("");
+    ctx.line(format!(
+        "Decodes are unit within the conforming budget {} (`sweep::conforming::UNIT_TOLERANCE_CONFORMING`).",
+        num(prepass::sweep::conforming::UNIT_TOLERANCE_CONFORMING)
+    ));
+    ctx.line("");
+    ctx.csv("conforming.csv", &csv)
+}

@@ -1,0 +1,306 @@
+//! The normal-encoding sweeps on the worst conforming adapter: each codec's WGSL rewritten by
+//! [`crate::conforming::emulate`] and run through the same sweeps as on the adapter itself.
+
+use super::normal::{Codec, DecoderCheck, RoundTrip, decode_codes, round_trip};
+use crate::conforming::{EmulateError, Emulation, emulate};
+use crate::harness::{Gpu, HarnessError};
+
+/// How far a decoded vector's length may be from 1 on any conforming adapter, for a decoder
+/// that ends in WGSL's `normalize(v)` = `v / length(v)` (or `v·inverseSqrt(dot(v, v))`, which is
+/// within it). With `u = 2^-24`: `dot` is three products and two sums of non-negative terms,
+/// each rounded to either neighbour (`2u` relative): `6u`; `inverseSqrt` (2 ULP ≤ `4u`) of it:
+/// `3u + 4u = 7u`; `length = 1/inverseSqrt` adds the division's 2.5 ULP (`5u`): `12u`; each
+/// component's division by it another `5u`: `17u`, plus `u` for second-order terms: `18u`.
+/// (On a correctly rounded adapter the budget is [`super::normal::UNIT_TOLERANCE`].)
+pub const UNIT_TOLERANCE_CONFORMING: f64 = 18.0 / 16_777_216.0;
+
+/// The slack the precise encoder's choice may have over the best neighbour on any conforming
+/// adapter: [`super::normal::optimality_tolerance_deg`] times 5. That tolerance is a sum of
+/// roundings of `+ − ×` (each `u` relative where correctly rounded, `2u` on any conforming
+/// adapter) and of one division (`u`, against WGSL's 2.5 ULP ≤ `5u`): every term grows at most
+/// fivefold.
+pub fn optimality_tolerance_conforming_deg() -> f64 {
+    5.0 * super::normal::optimality_tolerance_deg()
+}
+
+/// `codec` with its WGSL replaced by the emulating module. The module's text is leaked (a
+/// [`Codec`] holds `&'static str`): a handful per test run.
+pub fn emulated_codec(codec: &Codec, emulation: &Emulation) -> Result<Codec, EmulateError> {
+    let e = emulate(codec.source, emulation)?;
+    let name = |f: &str| {
+        e.function_name(f)
+            .map(|n| &*Box::leak(n.to_string().into_boxed_str()))
+            .ok_or_else(|| EmulateError(format!("no function `{f}`")))
+    };
+    let (encode, decode) = (name(codec.encode)?, name(codec.decode)?);
+    Ok(Codec {
+        source: Box::leak(e.source.into_boxed_str()),
+        encode,
+        decode,
+        ..*codec
+    })
+}
+
+/// Largest `|len − 1|` of decoded vectors (f64 length of the f32 result), and how many are not
+/// finite or beyond `tolerance`.
+pub fn length_check(decoded: &[[f32; 3]], tolerance: f64) -> (f64, u64) {
+    let mut worst = 0.0f64;
+    let mut bad = 0;
+    for v in decoded {
+        let l = v.iter().map(|&x| f64::from(x).powi(2)).sum::<f64>().sqrt();
+        if l.is_finite() {
+            worst = worst.max((l - 1.0).abs());
+        }
+        bad += u64::from(!l.is_finite() || (l - 1.0).abs() > tolerance);
+    }
+    (worst, bad)
+}
+
+/// One codec's round trip under one emulation, and its decoder over `codes`.
+pub struct EmulatedCodec {
+    /// Encoded and decoded by the emulating module (the twins are the unemulated Rust ones, so
+    /// `twin_encode` counts the codes that the emulated adapter chooses differently).
+    pub round_trip: RoundTrip,
+    /// The decoder over the given codes (its `not_unit` counts against the correctly rounded
+    /// tolerance; see [`EmulatedCodec::decode_length`] for the conforming one).
+    pub decoder: DecoderCheck,
+    /// (largest `|len − 1|`, count beyond [`UNIT_TOLERANCE_CONFORMING`] or not finite) over the
+    /// round trip's decoded vectors.
+    pub round_trip_length: (f64, u64),
+    /// Over the codes that differ from the Rust twin's: the largest difference in any lane of
+    /// the code (an octahedral coordinate, a byte of xyz8, an f16 of xy FP16 counted in f16
+    /// steps), i.e. how many code steps away the emulated adapter lands; two codes of one exact
+    /// direction count as 0.
+    pub max_code_step: u32,
+}
+
+/// The largest per-lane difference between two codes of `codec` (lanes: 3 bytes for 24-bit
+/// xyz8-style codes, else two halves of the code's bits).
+fn code_step(codec: &Codec, a: u32, b: u32) -> u32 {
+    let lanes: &[(u32, u32)] = if codec.name.starts_with("xyz8") {
+        &[(0, 8), (8, 8), (16, 8)]
+    } else {
+        match codec.bits {
+            16 => &[(0, 8), (8, 8)],
+            24 => &[(0, 12), (12, 12)],
+            _ => &[(0, 16), (16, 16)],
+        }
+    };
+    // f16 lanes are compared in their order (±0 one value), so a signed zero is no step.
+    let halves = codec.name.starts_with("xy");
+    let ordered = |h: u32| -> i64 {
+        if halves && h & 0x8000 != 0 {
+            -i64::from(h & 0x7fff)
+        } else {
+            i64::from(h)
+        }
+    };
+    lanes
+        .iter()
+        .map(|&(shift, width)| {
+            let m = (1u32 << width) - 1;
+            ordered((a >> shift) & m).abs_diff(ordered((b >> shift) & m)) as u32
+        })
+        .max()
+        .unwrap_or(0)
+}
+
+impl EmulatedCodec {
+    /// Decoder lengths against the conforming budget: the largest `|len − 1|`, and whether it is
+    /// within [`UNIT_TOLERANCE_CONFORMING`] (non-finite results count as beyond).
+    pub fn decode_length(&self) -> (f64, bool) {
+        (
+            self.decoder.max_len_error,
+            self.decoder.max_len_error <= UNIT_TOLERANCE_CONFORMING
+                && self.decoder.max_angle_deg.is_finite(),
+        )
+    }
+}
+
+/// Run `codec` under `emulation`: encode and decode `inputs`, and decode `codes`.
+pub fn emulated_codec_sweep(
+    gpu: &Gpu,
+    codec: &Codec,
+    emulation: &Emulation,
+    inputs: &[[f32; 3]],
+    codes: &[u32],
+) -> Result<EmulatedCodec, HarnessError> {
+    let c = emulated_codec(codec, emulation).map_err(|e| HarnessError::Shader(e.to_string()))?;
+    let rt = round_trip(gpu, &c, inputs)?;
+    let round_trip_length = length_check(&rt.decoded, UNIT_TOLERANCE_CONFORMING);
+    let decoder = decode_codes(gpu, &c, codes)?;
+    let max_code_step = rt
+        .codes
+        .iter()
+        .zip(inputs)
+        .map(|(&got, &n)| {
+            let twin = (codec.twin_encode)(glam::Vec3::from(n));
+            // Codes of one direction (the four corners of the octahedral square are all −z)
+            // are no step apart.
+            let (a, b) = (
+                (codec.reference_decode)(got),
+                (codec.reference_decode)(twin),
+            );
+            if a == b {
+                0
+            } else {
+                code_step(codec, got, twin)
+            }
+        })
+        .max()
+        .unwrap_or(0);
+    Ok(EmulatedCodec {
+        round_trip: rt,
+        decoder,
+        round_trip_length,
+        max_code_step,
+    })
+}
+
+/// One encoding's published figures: its round trip on the adapter and on the emulated worst
+/// adapter, over the same inputs.
+#[derive(Clone, Debug)]
+pub struct NormalFigures {
+    /// The codec's table name.
+    pub name: &'static str,
+    /// Bits of the code.
+    pub bits: u32,
+    /// The render-target format the scene stores it in (`Scene::gbuffer`).
+    pub target: String,
+    /// Round-trip angle (degrees) on the adapter (z ≥ 0 only for the hemisphere codes and xy
+    /// FP16).
+    pub adapter: crate::precision::metrics::ErrorStats,
+    /// Largest round-trip angle under each policy, in the order given.
+    pub emulated_max: Vec<f64>,
+    /// Largest mean round-trip angle over the policies.
+    pub emulated_mean: f64,
+    /// Most codes differing from the Rust twin's under any policy.
+    pub twin_changed: u64,
+    /// Largest `|len − 1|` of any emulated decode (round trip and decoder sample).
+    pub max_len_error: f64,
+    /// SPIR-V instructions of the encoder and of the decoder, callees included.
+    pub spirv: (usize, usize),
+}
+
+/// [`NormalFigures`] of every codec over `inputs`, under each of `policies`; each decoder also
+/// over 65,536 codes spread over its code space (every code of a 16-bit one).
+pub fn normal_figures(
+    gpu: &Gpu,
+    inputs: &[[f32; 3]],
+    policies: &[crate::conforming::Policy],
+) -> Result<Vec<NormalFigures>, HarnessError> {
+    use crate::scene::{NormalChoice, NormalEncoding, Scene};
+    let mut rows = Vec::new();
+    for c in &super::normal::CODECS {
+        let hemisphere = c.name.starts_with("hemioct") || c.name.starts_with("xy");
+        let pick = |rt: &RoundTrip| {
+            if hemisphere { rt.error_upper } else { rt.error }
+        };
+        let adapter = pick(&round_trip(gpu, c, inputs)?);
+        // 65,521 is odd: i·65,521 mod 2^16 is every 16-bit code once.
+        let codes: Vec<u32> = (0..1u64 << 16)
+            .map(|i| ((i * 65_521) % (1u64 << c.bits)) as u32)
+            .collect();
+        let mut row = NormalFigures {
+            name: c.name,
+            bits: c.bits,
+            target: String::new(),
+            adapter,
+            emulated_max: Vec::new(),
+            emulated_mean: 0.0,
+            twin_changed: 0,
+            max_len_error: 0.0,
+            spirv: (0, 0),
+        };
+        for &policy in policies {
+            let e = emulated_codec_sweep(gpu, c, &Emulation::new(policy), inputs, &codes)?;
+            let s = pick(&e.round_trip);
+            row.emulated_max.push(s.max);
+            row.emulated_mean = row.emulated_mean.max(s.mean());
+            row.twin_changed = row.twin_changed.max(e.round_trip.twin_encode.count);
+            row.max_len_error = row
+                .max_len_error
+                .max(e.round_trip_length.0)
+                .max(e.decoder.max_len_error);
+        }
+        let cost = |f: &str| {
+            crate::wgsl::spirv_instruction_count(c.source, f)
+                .map(|s| s.total)
+                .map_err(|e| HarnessError::Shader(e.to_string()))
+        };
+        row.spirv = (cost(c.encode)?, cost(c.decode)?);
+        let base = c.name.trim_end_matches(" fast").replace(' ', "");
+        if let Some(encoding) = NormalEncoding::ALL
+            .into_iter()
+            .find(|e| format!("{e:?}").to_lowercase() == base)
+        {
+            let scene = Scene {
+                normal: NormalChoice {
+                    encoding: Some(encoding),
+                    fast_encoder: c.name.ends_with("fast"),
+                },
+                ..Scene::default()
+            };
+            if let Ok(g) = scene.gbuffer() {
+                row.target = g
+                    .targets
+                    .iter()
+                    .find(|t| t.name == "normal")
+                    .map(|t| format!("{:?}", t.format.to_wgpu()))
+                    .unwrap_or_default();
+            }
+        }
+        rows.push(row);
+    }
+    Ok(rows)
+}
+
+/// One linear-depth path's published figures.
+#[derive(Clone, Debug)]
+pub struct LinearFigures {
+    /// The function.
+    pub function: &'static str,
+    /// Worst ULP error on the adapter ([`super::linear_depth::sampled_worst`]).
+    pub adapter: f64,
+    /// Worst ULP error under any of the policies.
+    pub emulated: f64,
+    /// The bound where `+ − × /` are correctly rounded (`linear_depth::bounds`).
+    pub bound_correctly_rounded: f64,
+    /// The bound on every conforming adapter.
+    pub bound_conforming: f64,
+}
+
+/// [`LinearFigures`] of every shipped path under each of `policies`.
+pub fn linear_depth_figures(
+    gpu: &Gpu,
+    policies: &[crate::conforming::Policy],
+) -> Result<Vec<LinearFigures>, HarnessError> {
+    use super::linear_depth::{PATHS, sampled_worst};
+    use crate::conforming::EmulatedKernel;
+    let mut rows = Vec::new();
+    for path in &PATHS {
+        let (cr, conf, _) =
+            crate::linear_depth::bounds::of(path.function).expect("every shipped path has a bound");
+        let k = gpu.kernel(crate::wgsl::LINEAR_DEPTH, path.function)?;
+        let adapter = sampled_worst(path, &|a, n| Ok(k.run(a, n)?.as_f32().to_vec()))?.0;
+        let mut emulated = 0.0f64;
+        for &policy in policies {
+            let k = EmulatedKernel::new(
+                gpu,
+                crate::wgsl::LINEAR_DEPTH,
+                path.function,
+                &Emulation::new(policy),
+            )?;
+            let run = |a: &[crate::harness::Arg<'_>], n: u64| Ok(k.run(a, n)?.0.as_f32().to_vec());
+            emulated = emulated.max(sampled_worst(path, &run)?.0);
+        }
+        rows.push(LinearFigures {
+            function: path.function,
+            adapter,
+            emulated,
+            bound_correctly_rounded: cr,
+            bound_conforming: conf,
+        });
+    }
+    Ok(rows)
+}

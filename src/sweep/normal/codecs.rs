@@ -1,0 +1,209 @@
+//! The encodings the normal sweeps measure: each one's WGSL functions, Rust twins and f64
+//! reference, in one table.
+
+use crate::normal::{hemioct, oct, xy_fp16, xyz8};
+use crate::wgsl::{NORMAL_HEMIOCT, NORMAL_OCT, NORMAL_XY_FP16, NORMAL_XYZ8};
+use glam::Vec3;
+
+/// One encoding: its WGSL functions, its Rust twins and its f64 reference encoder.
+#[derive(Clone, Copy)]
+pub struct Codec {
+    /// Short name for tables (`oct24`, `oct24 fast`, …).
+    pub name: &'static str,
+    /// Bits of the code.
+    pub bits: u32,
+    /// The WGSL file holding both functions.
+    pub source: &'static str,
+    /// WGSL encoder `fn(n: vec3<f32>) -> u32`.
+    pub encode: &'static str,
+    /// WGSL decoder `fn(p: u32) -> vec3<f32>`.
+    pub decode: &'static str,
+    /// Rust twin of the encoder.
+    pub twin_encode: fn(Vec3) -> u32,
+    /// Rust twin of the decoder.
+    pub twin_decode: fn(u32) -> Vec3,
+    /// The same algorithm in f64 (the survey's, for the octahedral codes).
+    pub reference_encode: fn([f64; 3]) -> u32,
+    /// The exact direction a code stands for, in f64.
+    pub reference_decode: fn(u32) -> [f64; 3],
+    /// The targets (mean°, max°) from its float64 reproduction, where it gives them.
+    pub target: Option<(f64, f64)>,
+}
+
+fn xyfp16_ref_encode(n: [f64; 3]) -> u32 {
+    let u = crate::normal::exact::unit(n).unwrap_or([0.0, 0.0, 1.0]);
+    let h = |x: f64| u32::from(half::f16::from_f64(x.clamp(-1.0, 1.0)).to_bits());
+    h(u[0]) | (h(u[1]) << 16)
+}
+
+fn xyfp16_ref_decode(p: u32) -> [f64; 3] {
+    let h = |b: u32| f64::from(half::f16::from_bits(b as u16).to_f32());
+    let (x, y) = (h(p).clamp(-1.0, 1.0), h(p >> 16).clamp(-1.0, 1.0));
+    let (x, y) = (
+        if x.is_nan() { 0.0 } else { x },
+        if y.is_nan() { 0.0 } else { y },
+    );
+    crate::normal::exact::unit([x, y, (1.0 - x * x - y * y).max(0.0).sqrt()])
+        .unwrap_or([0.0, 0.0, 1.0])
+}
+
+macro_rules! oct_refs {
+    ($bits:literal, $p:ident, $r:ident, $d:ident) => {
+        fn $p(n: [f64; 3]) -> u32 {
+            oct::exact::encode_precise(n, $bits)
+        }
+        fn $r(n: [f64; 3]) -> u32 {
+            oct::exact::encode_round(n, $bits)
+        }
+        fn $d(p: u32) -> [f64; 3] {
+            oct::exact::decode(p, $bits)
+        }
+    };
+}
+oct_refs!(8, oct16_ref_p, oct16_ref_r, oct16_ref_d);
+oct_refs!(12, oct24_ref_p, oct24_ref_r, oct24_ref_d);
+oct_refs!(16, oct32_ref_p, oct32_ref_r, oct32_ref_d);
+
+macro_rules! oct_codec {
+    ($name:literal, $bits:literal, $enc:ident, $dec:ident, $twin:path, $twin_dec:path, $r:ident, $d:ident, $t:expr) => {
+        Codec {
+            name: $name,
+            bits: 2 * $bits,
+            source: NORMAL_OCT,
+            encode: stringify!($enc),
+            decode: stringify!($dec),
+            twin_encode: $twin,
+            twin_decode: $twin_dec,
+            reference_encode: $r,
+            reference_decode: $d,
+            target: Some($t),
+        }
+    };
+}
+
+/// Every encoding: xyz8, xy FP16, octahedral 16/24/32 precise and fast, then hemi-octahedral 24
+/// precise and fast (errors of the hemisphere-only codes are measured over `z ≥ 0`).
+pub const CODECS: [Codec; 10] = [
+    Codec {
+        name: "xyz8",
+        bits: 24,
+        source: NORMAL_XYZ8,
+        encode: "encode_normal_xyz8",
+        decode: "decode_normal_xyz8",
+        twin_encode: xyz8::encode_normal_xyz8,
+        twin_decode: xyz8::decode_normal_xyz8,
+        reference_encode: xyz8::exact::encode,
+        reference_decode: xyz8::exact::decode,
+        target: Some((0.170, 0.390)),
+    },
+    Codec {
+        name: "xy fp16",
+        bits: 32,
+        source: NORMAL_XY_FP16,
+        encode: "encode_normal_xy_fp16",
+        decode: "decode_normal_xy_fp16",
+        twin_encode: xy_fp16::encode_normal_xy_fp16,
+        twin_decode: xy_fp16::decode_normal_xy_fp16,
+        reference_encode: xyfp16_ref_encode,
+        reference_decode: xyfp16_ref_decode,
+        target: None,
+    },
+    oct_codec!(
+        "oct16",
+        8,
+        encode_normal_oct16,
+        decode_normal_oct16,
+        oct::encode_normal_oct16,
+        oct::decode_normal_oct16,
+        oct16_ref_p,
+        oct16_ref_d,
+        (0.315, 0.636)
+    ),
+    oct_codec!(
+        "oct16 fast",
+        8,
+        encode_normal_oct16_fast,
+        decode_normal_oct16,
+        oct::encode_normal_oct16_fast,
+        oct::decode_normal_oct16,
+        oct16_ref_r,
+        oct16_ref_d,
+        (0.337, 0.951)
+    ),
+    oct_codec!(
+        "oct24",
+        12,
+        encode_normal_oct24,
+        decode_normal_oct24,
+        oct::encode_normal_oct24,
+        oct::decode_normal_oct24,
+        oct24_ref_p,
+        oct24_ref_d,
+        (0.0195, 0.0395)
+    ),
+    oct_codec!(
+        "oct24 fast",
+        12,
+        encode_normal_oct24_fast,
+        decode_normal_oct24,
+        oct::encode_normal_oct24_fast,
+        oct::decode_normal_oct24,
+        oct24_ref_r,
+        oct24_ref_d,
+        (0.0209, 0.0591)
+    ),
+    oct_codec!(
+        "oct32",
+        16,
+        encode_normal_oct32,
+        decode_normal_oct32,
+        oct::encode_normal_oct32,
+        oct::decode_normal_oct32,
+        oct32_ref_p,
+        oct32_ref_d,
+        (0.00122, 0.00246)
+    ),
+    oct_codec!(
+        "oct32 fast",
+        16,
+        encode_normal_oct32_fast,
+        decode_normal_oct32,
+        oct::encode_normal_oct32_fast,
+        oct::decode_normal_oct32,
+        oct32_ref_r,
+        oct32_ref_d,
+        (0.00131, 0.00369)
+    ),
+    Codec {
+        name: "hemioct24",
+        bits: 24,
+        source: NORMAL_HEMIOCT,
+        encode: "encode_normal_hemioct24",
+        decode: "decode_normal_hemioct24",
+        twin_encode: hemioct::encode_normal_hemioct24,
+        twin_decode: hemioct::decode_normal_hemioct24,
+        reference_encode: hemioct::exact::encode_precise,
+        reference_decode: hemioct::exact::decode,
+        target: None,
+    },
+    Codec {
+        name: "hemioct24 fast",
+        bits: 24,
+        source: NORMAL_HEMIOCT,
+        encode: "encode_normal_hemioct24_fast",
+        decode: "decode_normal_hemioct24",
+        twin_encode: hemioct::encode_normal_hemioct24_fast,
+        twin_decode: hemioct::decode_normal_hemioct24,
+        reference_encode: hemioct::exact::encode_round,
+        reference_decode: hemioct::exact::decode,
+        target: None,
+    },
+];
+
+/// The codec named `name` in [`CODECS`].
+pub fn codec(name: &str) -> &'static Codec {
+    CODECS
+        .iter()
+        .find(|c| c.name == name)
+        .unwrap_or_else(|| panic!("no codec {name}"))
+}

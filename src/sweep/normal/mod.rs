@@ -1,0 +1,24 @@
+//! Sweeps for the normal encodings (`wgsl/normal_*.wgsl`): round-trip angular error over a
+//! direction set, exhaustive and stratified decoder checks, the precise encoder's optimality,
+//! a streaming sweep of all 2^32 oct32 codes, and the Killzone xy-FP16 "myth" numbers.
+//! The tests assert on these; `errplot` and `examples/normal_tables.rs` tabulate them.
+//!
+//! One concern a file: [`CODECS`] (the encodings), the input generators, the worker pool, and
+//! one file per sweep; everything public is re-exported here.
+
+mod codecs;
+mod decoder;
+mod inputs;
+mod myth;
+mod optimality;
+mod pool;
+mod round_trip;
+mod unorm;
+
+pub use codecs::{CODECS, Codec, codec};
+pub use decoder::{DecoderCheck, decode_all_32, decode_codes, decode_range};
+pub use inputs::{adversarial_directions, bad_inputs, fibonacci_directions, stratified_codes32};
+pub use myth::{Myth, killzone_myth};
+pub use optimality::{Optimality, optimality_tolerance_deg, precise_optimality};
+pub use round_trip::{RoundTrip, UNIT_TOLERANCE, reference_error, round_trip};
+pub use unorm::{UnormForms, unorm_forms};

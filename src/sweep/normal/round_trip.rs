@@ -1,0 +1,120 @@
+//! Round trips through an encoding on the adapter, measured against the inputs and the Rust
+//! twins, and the f64 reproduction of the same algorithm.
+
+use super::codecs::Codec;
+use super::pool::par_fold;
+use crate::harness::{Arg, Gpu, HarnessError};
+use crate::precision::metrics::{ErrorStats, Mismatches, angle_degrees, widen3};
+use glam::Vec3;
+
+/// What one encoding did to a set of directions, encoded and decoded on the adapter.
+#[derive(Clone, Debug)]
+pub struct RoundTrip {
+    /// Angle in degrees between each input (widened to f64) and its decoded vector.
+    pub error: ErrorStats,
+    /// The same restricted to inputs with `z ≥ 0` (the hemisphere xy FP16 can represent).
+    pub error_upper: ErrorStats,
+    /// Codes where the Rust encoder differs from the adapter's.
+    pub twin_encode: Mismatches<u32>,
+    /// Decoded vectors (bits) where the Rust decoder differs from the adapter's.
+    pub twin_decode: Mismatches<u32>,
+    /// Decoded vectors whose length is off 1 by more than [`UNIT_TOLERANCE`] or not finite.
+    pub not_unit: u64,
+    /// The adapter's codes, in input order.
+    pub codes: Vec<u32>,
+    /// The adapter's decoded vectors, in input order.
+    pub decoded: Vec<[f32; 3]>,
+}
+
+/// How far a decoded vector's length may be from 1: WGSL's `normalize` is `v·inverseSqrt(v·v)`
+/// with `inverseSqrt` 2 ULP, the dot product's 3 roundings (≤ 1.5 ULP relative to `v·v`, so
+/// ≤ 0.75 ULP on the length), and the final multiply 0.5 ULP per component: ≤ 3.25·2^-23,
+/// rounded up to 4·2^-23 (lavapipe's measured worst is listed in the README).
+pub const UNIT_TOLERANCE: f64 = 4.0 / 8_388_608.0;
+
+pub(super) fn is_unit(v: [f32; 3]) -> bool {
+    let l = widen3(v).iter().map(|x| x * x).sum::<f64>().sqrt();
+    l.is_finite() && (l - 1.0).abs() <= UNIT_TOLERANCE
+}
+
+/// Encode every input with `codec`'s WGSL encoder, decode with its WGSL decoder, and measure
+/// against the input and against the Rust twins.
+pub fn round_trip(
+    gpu: &Gpu,
+    codec: &Codec,
+    inputs: &[[f32; 3]],
+) -> Result<RoundTrip, HarnessError> {
+    let n = inputs.len() as u64;
+    let codes = gpu
+        .kernel(codec.source, codec.encode)?
+        .run(&[Arg::column(inputs)], n)?
+        .into_words();
+    let decoded = gpu
+        .kernel(codec.source, codec.decode)?
+        .run(&[Arg::column(&codes)], n)?
+        .as_vec3()
+        .to_vec();
+    let parts = par_fold(inputs.len(), |r| {
+        let base = r.start as u64;
+        let mut e = ErrorStats::default();
+        let mut up = ErrorStats::default();
+        let mut not_unit = 0;
+        for i in r.clone() {
+            let a = angle_degrees(widen3(inputs[i]), widen3(decoded[i]));
+            e.add(i as u64, a);
+            if inputs[i][2] >= 0.0 {
+                up.add(i as u64, a);
+            }
+            not_unit += u64::from(!is_unit(decoded[i]));
+        }
+        let enc = Mismatches::count(&codes[r.clone()], |k| {
+            (codec.twin_encode)(Vec3::from(inputs[r.start + k]))
+        });
+        let dec_bits: Vec<u32> = decoded[r.clone()]
+            .iter()
+            .flatten()
+            .map(|x| x.to_bits())
+            .collect();
+        let dec = Mismatches::count(&dec_bits, |k| {
+            (codec.twin_decode)(codes[r.start + k / 3]).to_array()[k % 3].to_bits()
+        });
+        (base, e, up, not_unit, enc, dec)
+    });
+    let mut rt = RoundTrip {
+        error: ErrorStats::default(),
+        error_upper: ErrorStats::default(),
+        twin_encode: Mismatches::default(),
+        twin_decode: Mismatches::default(),
+        not_unit: 0,
+        codes,
+        decoded,
+    };
+    for (base, e, up, nu, enc, dec) in parts {
+        rt.error.merge(&e);
+        rt.error_upper.merge(&up);
+        rt.not_unit += nu;
+        rt.twin_encode.merge(enc, base);
+        rt.twin_decode.merge(dec, base * 3);
+    }
+    Ok(rt)
+}
+
+/// The f64 reproduction of `codec`'s algorithm on the same inputs: reference encoder, exact
+/// decode, angle to the input. The row the targets come from.
+pub fn reference_error(codec: &Codec, inputs: &[[f32; 3]]) -> ErrorStats {
+    let parts = par_fold(inputs.len(), |r| {
+        let mut e = ErrorStats::default();
+        for i in r {
+            let n = widen3(inputs[i]);
+            e.add(
+                i as u64,
+                angle_degrees(n, (codec.reference_decode)((codec.reference_encode)(n))),
+            );
+        }
+        e
+    });
+    parts.iter().fold(ErrorStats::default(), |mut a, p| {
+        a.merge(p);
+        a
+    })
+}

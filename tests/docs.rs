@@ -1,0 +1,189 @@
+//! The published figures: the README's generated tables and `docs/figures.md`, computed here on
+//! the adapter and, under the conforming-adapter emulation, on the worst conforming adapter.
+//!
+//! `bash .ci/docs` writes them (`PREPASS_WRITE_DOCS=1`); otherwise every test here recomputes its
+//! block and FAILS when the committed text differs, naming that command. Nothing in those blocks
+//! is typed by hand. The figures are lavapipe's (CI's adapter): on another adapter the
+//! last digits may differ, and the failure says so.
+
+mod common;
+
+use common::gpu;
+use prepass::conforming::{Emulation, Policy};
+use std::fmt::Write as _;
+use std::sync::Mutex;
+
+static FILES: Mutex<()> = Mutex::new(());
+
+/// Replace (with `PREPASS_WRITE_DOCS=1`) or check the text between
+/// `<!-- generated:NAME:begin -->` and `<!-- generated:NAME:end -->` in `path`.
+fn publish(path: &str, name: &str, body: &str) {
+    let _g = FILES.lock().unwrap_or_else(|e| e.into_inner());
+    let full = format!("{}/{path}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&full).unwrap_or_default();
+    let (b, e) = (
+        format!("<!-- generated:{name}:begin -->"),
+        format!("<!-- generated:{name}:end -->"),
+    );
+    let block = format!("{b}\n{body}{e}");
+    let found = text.find(&b).zip(text.find(&e));
+    if std::env::var_os("PREPASS_WRITE_DOCS").is_some() {
+        let new = match found {
+            Some((i, j)) => format!("{}{block}{}", &text[..i], &text[j + e.len()..]),
+            None => format!("{text}\n{block}\n"),
+        };
+        std::fs::write(&full, new).unwrap();
+        return;
+    }
+    let current = found.map(|(i, j)| &text[i..j + e.len()]);
+    assert_eq!(
+        current,
+        Some(block.as_str()),
+        "{path}, block `{name}`, differs from what this test measures on {}: run `bash .ci/docs` \
+         to regenerate (on an adapter other than lavapipe the last digits may differ)",
+        gpu().describe()
+    );
+}
+
+fn adapter_line() -> String {
+    let i = gpu().adapter_info();
+    format!("Measured on {} ({}).\n", i.name, i.driver_info)
+}
+
+#[test]
+fn normal_encodings() {
+    use prepass::sweep::conforming::normal_figures;
+    use prepass::sweep::normal::{adversarial_directions, fibonacci_directions};
+    // One sample for the adapter and the emulation, so the columns compare.
+    let mut inputs = fibonacci_directions(1 << 18);
+    inputs.extend(adversarial_directions());
+    let rows = normal_figures(
+        gpu(),
+        &inputs,
+        &[Policy::Upper, Policy::Lower, Policy::Seeded(1)],
+    )
+    .unwrap();
+    let mut readme = String::from(
+        "| encoding | bits | target format | max° | mean° | max° on the worst conforming adapter | SPIR-V encode / decode |\n|---|---|---|---|---|---|---|\n",
+    );
+    let mut full = adapter_line();
+    let _ = writeln!(
+        full,
+        "\n| encoding | bits | max° | mean° | emulated max° (upper / lower / seeded) | emulated mean° | codes ≠ Rust twin (emulated, of {}) | max \\|len − 1\\| of emulated decodes |\n|---|---|---|---|---|---|---|---|",
+        inputs.len()
+    );
+    for r in &rows {
+        let worst = r.emulated_max.iter().copied().fold(0.0, f64::max);
+        let _ = writeln!(
+            readme,
+            "| {} | {} | {} | {:.4} | {:.4} | {worst:.4} | {} / {} |",
+            r.name,
+            r.bits,
+            r.target,
+            r.adapter.max,
+            r.adapter.mean(),
+            r.spirv.0,
+            r.spirv.1
+        );
+        let _ = writeln!(
+            full,
+            "| {} | {} | {:.6} | {:.6} | {:.6} / {:.6} / {:.6} | {:.6} | {} | {:.3e} |",
+            r.name,
+            r.bits,
+            r.adapter.max,
+            r.adapter.mean(),
+            r.emulated_max[0],
+            r.emulated_max[1],
+            r.emulated_max[2],
+            r.emulated_mean,
+            r.twin_changed,
+            r.max_len_error
+        );
+    }
+    publish("README.md", "normal-encodings", &readme);
+    publish("docs/figures.md", "normal-encodings", &full);
+}
+
+#[test]
+fn linear_depth() {
+    let mut table = String::from(
+        "| function | max ULP (this adapter) | max ULP (worst emulated) | bound, correctly rounded | bound, every conforming adapter |\n|---|---|---|---|---|\n",
+    );
+    for r in prepass::sweep::conforming::linear_depth_figures(gpu(), &Policy::WORST).unwrap() {
+        let _ = writeln!(
+            table,
+            "| `{}` | {:.2} | {:.2} | {:.2} | {:.2} |",
+            r.function, r.adapter, r.emulated, r.bound_correctly_rounded, r.bound_conforming
+        );
+    }
+    publish("README.md", "linear-depth", &table);
+    publish(
+        "docs/figures.md",
+        "linear-depth",
+        &format!("{}\n{table}", adapter_line()),
+    );
+}
+
+#[test]
+fn depth24() {
+    use prepass::conforming::emulate;
+    use prepass::sweep::depth24::{RECOVERY_CASES, hyperbolic_all, recover_all};
+    let mut s = adapter_line();
+    s.push_str("\n| channels | `depth24_from_rgb8`: wrong codes of 2^24 | the unrounded baseline: wrong codes |\n|---|---|---|\n");
+    let baselines = include_str!("baselines/depth24.wgsl");
+    let both = format!("{}\n{baselines}", prepass::wgsl::DEPTH24);
+    for (error, flip) in RECOVERY_CASES {
+        let ours = recover_all(
+            gpu(),
+            prepass::wgsl::DEPTH24,
+            "depth24_from_rgb8",
+            error,
+            flip,
+        )
+        .unwrap();
+        let base = recover_all(
+            gpu(),
+            &both,
+            "baseline_depth24_from_rgb8_unrounded",
+            error,
+            flip,
+        )
+        .unwrap();
+        let _ = writeln!(
+            s,
+            "| {error}{} | {} | {} |",
+            if flip { " (signs flipped)" } else { "" },
+            ours.mismatches.count,
+            base.mismatches.count
+        );
+    }
+    s.push_str("\n| hyperbolic depth `d / (2^24 − 1)` | adapter | max ULP | codes not returned by the exact inverse |\n|---|---|---|---|\n");
+    for (name, src, f) in [
+        (
+            "`hyperbolic_depth_from_depth24`",
+            prepass::wgsl::DEPTH24,
+            "hyperbolic_depth_from_depth24",
+        ),
+        (
+            "baseline `f32(d) / 16777215.0`",
+            baselines,
+            "baseline_hyperbolic_divide",
+        ),
+    ] {
+        let h = hyperbolic_all(gpu(), src, f).unwrap();
+        let _ = writeln!(
+            s,
+            "| {name} | this adapter | {:.3} | {} |",
+            h.ulps.max, h.exact_roundtrip_failures
+        );
+        let (mut max, mut fails) = (0.0f64, 0u64);
+        for policy in Policy::WORST {
+            let e = emulate(src, &Emulation::new(policy)).unwrap();
+            let h = hyperbolic_all(gpu(), &e.source, e.function_name(f).unwrap()).unwrap();
+            max = max.max(h.ulps.max);
+            fails = fails.max(h.exact_roundtrip_failures);
+        }
+        let _ = writeln!(s, "| {name} | worst emulated | {max:.3} | {fails} |");
+    }
+    publish("docs/figures.md", "depth24", &s);
+}
