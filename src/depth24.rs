@@ -1,5 +1,7 @@
 //! 24-bit depth codes stored in RGBA8 texels — the Rust twins of `wgsl/depth24.wgsl`.
 //!
+//! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
+//!
 //! Resistance 2 aliased an ARGB8 texture onto its D24 depth buffer and rebuilt the code as
 //! `r·65536 + g·256 + b` (Mark Lee, "Pre-lighting in Resistance 2", Insomniac Games, GDC 2009:
 //! the slides "Recovering hyperbolic depth"). A sampler returns each channel as a float in

@@ -1,5 +1,7 @@
 //! View distance from stored depth — the Rust twins of `wgsl/linear_depth.wgsl`.
 //!
+//! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
+//!
 //! The talk's inverse `vz = 1/(z·a + b)` (`a = (f−n)/(−f·n)`, `b = 1/n`; seed `000`,
 //! "Recovering linear depth") cancels near the far plane and loses precision like
 //! `(f/n)·2^-24` — about 8 % at `f/n = 10^6`. Rearranged so that every term is non-negative:

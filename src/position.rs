@@ -1,5 +1,7 @@
 //! View- and world-space position rebuild — the Rust twins of `wgsl/position.wgsl`.
 //!
+//! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
+//!
 //! A full-screen lighting pass rebuilds each pixel's position as `ray · vz`, where `ray` is the
 //! view ray through the pixel scaled to a unit view-axis component and `vz` the view distance
 //! from [`crate::linear_depth`]. Rays are linear in NDC, so interpolating the corner rays of a

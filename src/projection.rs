@@ -1,4 +1,6 @@
 //! `Projection`: near/far planes and depth convention, validated, with the constants the WGSL
+//!
+//! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
 //! per-pixel functions take (computed in f64, rounded once) and the exact forward maps
 //! (view distance → window depth / 24-bit code) used as references.
 //!

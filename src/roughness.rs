@@ -1,5 +1,7 @@
 //! Log-range specular exponent ("roughness") in 8 bits — the Rust twins of `wgsl/roughness.wgsl`.
 //!
+//! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
+//!
 //! Killzone 2 stores the specular exponent "in log range to keep higher precision for low
 //! exponents" (Michal Valient, "Deferred Rendering in Killzone 2", Guerrilla Games, Develop
 //! Conference 2007); Resistance 2 keeps the spec power in the alpha of the normal buffer (Mark Lee,

@@ -1,7 +1,8 @@
-//! The bad-input contract (README, "Bad input"): every row of `bad_input/` (one file per module,
+//! The bad-input contract (`docs/bad_input.md`): every row of `bad_input/` (one file per module,
 //! listed in `bad_input/rows.rs`) runs through the WGSL on the adapter and through the Rust twin,
 //! and both must return the documented answer.
-//! The README's table is generated from the same rows and must match them exactly.
+//! `docs/bad_input.md`'s table is generated from the same rows (`bash .ci/docs`) and must match
+//! them exactly.
 
 mod common;
 
@@ -279,24 +280,14 @@ fn table_line(r: &Row) -> String {
     )
 }
 
-const BEGIN: &str = "<!-- bad-input-table:begin -->";
-const END: &str = "<!-- bad-input-table:end -->";
-
 #[test]
-fn readme_table_is_exactly_the_rows() {
-    let readme = include_str!("../README.md");
+fn docs_table_is_exactly_the_rows() {
     let want: Vec<String> = rows().map(table_line).collect();
     let header = "| function | Rust twin | bad input | arguments | WGSL and Rust return | checked | why |\n\
                   |---|---|---|---|---|---|---|";
-    let expected = format!("{BEGIN}\n{header}\n{}\n{END}", want.join("\n"));
-    let found = readme
-        .find(BEGIN)
-        .zip(readme.find(END))
-        .map(|(a, b)| &readme[a..b + END.len()]);
-    assert_eq!(
-        found,
-        Some(expected.as_str()),
-        "README.md's bad-input table differs from the rows in tests/bad_input/; replace the block \
-         between the markers with:\n\n{expected}\n"
+    common::publish(
+        "docs/bad_input.md",
+        "bad-input",
+        &format!("{header}\n{}\n", want.join("\n")),
     );
 }

@@ -8,42 +8,9 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, publish};
 use prepass::conforming::{Emulation, Policy};
 use std::fmt::Write as _;
-use std::sync::Mutex;
-
-static FILES: Mutex<()> = Mutex::new(());
-
-/// Replace (with `PREPASS_WRITE_DOCS=1`) or check the text between
-/// `<!-- generated:NAME:begin -->` and `<!-- generated:NAME:end -->` in `path`.
-fn publish(path: &str, name: &str, body: &str) {
-    let _g = FILES.lock().unwrap_or_else(|e| e.into_inner());
-    let full = format!("{}/{path}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&full).unwrap_or_default();
-    let (b, e) = (
-        format!("<!-- generated:{name}:begin -->"),
-        format!("<!-- generated:{name}:end -->"),
-    );
-    let block = format!("{b}\n{body}{e}");
-    let found = text.find(&b).zip(text.find(&e));
-    if std::env::var_os("PREPASS_WRITE_DOCS").is_some() {
-        let new = match found {
-            Some((i, j)) => format!("{}{block}{}", &text[..i], &text[j + e.len()..]),
-            None => format!("{text}\n{block}\n"),
-        };
-        std::fs::write(&full, new).unwrap();
-        return;
-    }
-    let current = found.map(|(i, j)| &text[i..j + e.len()]);
-    assert_eq!(
-        current,
-        Some(block.as_str()),
-        "{path}, block `{name}`, differs from what this test measures on {}: run `bash .ci/docs` \
-         to regenerate (on an adapter other than lavapipe the last digits may differ)",
-        gpu().describe()
-    );
-}
 
 fn adapter_line() -> String {
     let i = gpu().adapter_info();

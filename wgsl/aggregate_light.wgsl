@@ -3,6 +3,7 @@
 // 2011): per vertex, many lights are folded into one aggregate light whose position is
 // interpolated per pixel.
 // Rust twin: src/lighting/aggregate_light.rs. Tests: tests/aggregate_light.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // Per vertex V, for each light i with position P_i and weight W_i (its intensity at V):
 //   acc.xyz = Σ W_i·L_i with L_i = (P_i − V)/|P_i − V|,   acc.w = Σ W_i/|P_i − V|

@@ -1,5 +1,6 @@
 // prepass — 24-bit depth codes stored in RGBA8 texels.
 // Rust twin: src/depth24.rs. Tests: tests/depth24.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // Byte 0 (r, the low byte of a packed u32) holds the code's most significant byte, byte 2 (b)
 // the least; byte 3 (alpha) is not part of the code.

@@ -2,9 +2,11 @@
 // in Resistance 2", Insomniac Games, GDC 2009; Michal Valient, "Deferred Rendering in Killzone
 // 2", Guerrilla Games, Develop Conference 2007).
 // Rust twin: src/lighting/light_volume.rs. Tests: tests/light_volume.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
-// View space: the camera at the origin looking down +z, so a point's view depth vz is its z
-// (Lee's w); near and far are positive view depths, far may be +Inf.
+// A point's view depth is its view distance vz = -z (positive in front; Lee's w), near and far
+// positive view depths, far may be +Inf. The volume tests use only distances and absolute
+// components, so either handedness gives the same answer.
 //
 // Depth-pass stenciling (front faces increment, back faces decrement where the depth test
 // passes) breaks when the near plane clips the volume's front faces: the camera is inside the

@@ -1,5 +1,6 @@
 // prepass — view distance from stored depth, stable on stiff projections.
 // Rust twin: src/linear_depth.rs (constants from src/projection.rs). Tests: tests/linear_depth.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // View distance vz is the positive distance along the view axis (right-handed view space has
 // z = -vz). Window depth: standard z = f(vz - n) / ((f - n) vz), reversed z = n(f - vz) / ((f - n) vz);

@@ -4,6 +4,7 @@
 // written up as "Designing a Renderer for Multiple Lights: The Light Pre-Pass Renderer",
 // ShaderX7, 2009).
 // Rust twin: src/lighting/lpp.rs. Tests: tests/lpp.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // P runs once per light in the light pass and its results are summed by additive blending:
 //   one RGBA buffer (Engel): rgb = N·L·att·colour, a = N·L·att·lum(colour)·(N·H)^n

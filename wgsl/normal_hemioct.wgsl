@@ -2,6 +2,7 @@
 // of the octahedron, rotated 45 degrees so it fills the whole square (Cigolle et al. 2014, the
 // survey's "hemi-oct"). Offered beside oct24 for comparison: same bits, half the sphere.
 // Rust twin: src/normal/hemioct.rs. Tests: tests/normal_hemioct.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // Code k on an axis stands for (2k - M)/M, M = 4095; the decoded vector before normalising is
 // the exact integer vector D = ((a + b)/2, (a - b)/2, M - max(|a|, |b|)) with a = 2u - M,

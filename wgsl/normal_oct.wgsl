@@ -1,6 +1,7 @@
 // prepass — octahedral unit-vector codes (Cigolle et al., "A Survey of Efficient Representations
 // for Independent Unit Vectors", JCGT 2014), 2x8, 2x12 and 2x16 bits.
 // Rust twin: src/normal/oct.rs. Tests: tests/normal_oct.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // Layout: u (from x) in the low N bits of the u32, v (from y) in the next N bits; the bits above
 // 2N are left zero by the encoders and ignored by the decoders. Code k on an axis stands for the

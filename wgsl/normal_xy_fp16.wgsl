@@ -2,6 +2,7 @@
 // as +sqrt(1 - x^2 - y^2) (Killzone 2 G-buffer: "2xFP16 compressed to RGBA8 on write"; Michal
 // Valient, "Deferred Rendering in Killzone 2", Guerrilla Games, Develop Conference 2007).
 // Rust twin: src/normal/xy_fp16.rs. Tests: tests/normal_xy_fp16.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // Only normals with z >= 0 survive: the sign of z is not stored, and under perspective a visible
 // surface's view-space normal can have z < 0 (the "viewspace normal myth" of Mark Lee,

@@ -2,6 +2,7 @@
 // viewspace as 3 8-bit components", spec power in alpha; Mark Lee, "Pre-lighting in
 // Resistance 2", Insomniac Games, GDC 2009).
 // Rust twin: src/normal/xyz8.rs. Tests: tests/normal_xyz8.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // Byte k (k = 0, 1, 2 for x, y, z; byte 0 is the low byte of the u32) holds
 // round(255 (c/2 + 1/2)) of the normalised vector; byte 3 is left zero for the material.

@@ -1,5 +1,6 @@
 // prepass — view- and world-space position rebuild from view distance and frustum rays.
 // Rust twin: src/position.rs. Tests: tests/position.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // A full-screen pass interpolates, per pixel, the ray through that pixel scaled so its view
 // axis component is 1; position = ray * view distance (from wgsl/linear_depth.wgsl). Rays are

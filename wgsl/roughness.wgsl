@@ -3,6 +3,7 @@
 // 2007), packed with an xyz8 normal into one RGBA8 texel as Resistance 2 keeps spec power in the
 // normal buffer's alpha (Mark Lee, "Pre-lighting in Resistance 2", Insomniac Games, GDC 2009).
 // Rust twin: src/roughness.rs. Tests: tests/roughness.rs.
+// Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // code k in [0, 255] stands for the power max_power^(k/255): a power p encodes to the code
 // nearest to 255·log2(p)/log2(max_power) (ties upwards). Equal steps in log2 keep the relative

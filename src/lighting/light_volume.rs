@@ -3,8 +3,9 @@
 //! and the switch to depth-fail; Michal Valient, "Deferred Rendering in Killzone 2" (Guerrilla
 //! Games, Develop Conference 2007) for the depth-bounds test.
 //!
-//! View space: the camera at the origin looking down `+z`; a point's view depth `vz` is its
-//! `z`; `near`, `far` are positive view depths, `far` may be `+∞`.
+//! Conventions: README, "Conventions". A point's view depth is its view distance `vz = −z`
+//! (positive in front); `near`, `far` are positive view depths, `far` may be `+∞`. The volume
+//! tests use only distances and absolute components, so either handedness gives the same answer.
 //!
 //! **Depth-pass or depth-fail.** Depth-pass stenciling breaks when the near plane clips the
 //! volume's front faces. Every point of the near-plane rectangle lies within

@@ -1,5 +1,7 @@
 //! Lighting maths of the light pre-pass renderers, one concern per file:
 //!
+//! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
+//!
 //! | module | WGSL | what |
 //! |---|---|---|
 //! | [`lpp`] | `wgsl/lpp.wgsl` | P per light (point, spot; Blinn-Phong, Phong), light-buffer layouts, C, Engel's specular reconstruction |

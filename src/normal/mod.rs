@@ -1,5 +1,7 @@
 //! Unit-normal encodings for G-buffers — the Rust twins of `wgsl/normal_*.wgsl`.
 //!
+//! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
+//!
 //! | encoding | bits | WGSL | twin |
 //! |---|---|---|---|
 //! | x, y, z as unorm8 (Resistance 2) | 24 (+8 free) | `wgsl/normal_xyz8.wgsl` | [`xyz8`] |

@@ -7,7 +7,17 @@
 //! so a few thousand cases cover both. Values shrink towards the simple end of each arm.
 //!
 //! Adding a module's inputs: add a function returning `impl Strategy<Value = …>` here, built the
-//! same way (broad arm + adversarial arms), and list it in the README's precision section.
+//! same way (broad arm + adversarial arms), and list it in the table below.
+//!
+//! | strategy | values | adversarial cases weighted in |
+//! |---|---|---|
+//! | `unit_vector()` | unit `Vec3`, a third uniform on the sphere | poles and axes with signed zeros, equator and the octahedron fold `abs(x) + abs(y) ≈ 1` (`abs(z)` down to 2^-149), lower-hemisphere seams `x = ±0`/`y = ±0`, near-pole `abs(z) = 1 − ε`, diagonals |
+//! | `direction()` | any-length `Vec3` | lengths 10^-42 (subnormal lanes) … 3·10^38 |
+//! | `bad_f32()`, `any_f32_bits()` | `f32` | NaN (quiet, signalling, negative), ±Inf, ±0, subnormals, ±MIN_POSITIVE, ±MAX |
+//! | `depth24_code()`, `depth24_code_any()` | `u32` codes | 0, 1, 2, 2^24 − 3 … 2^24 − 1, byte roll-overs, powers of two ± 1; `_any` adds 2^24, u32::MAX, … |
+//! | `near_far()`, `stiff_near_far()`, `near_plane()`, `far_near_ratio()` | `(near, far)` | near 10^-4 … 10, far/near 10 … 10^9 and +Inf; stiff: far/near ≥ 10^6 |
+//! | `spec_power()`, `spec_power_in(lo, hi)` | `f32` exponents, log-uniform | both ends and their f32 neighbours |
+//! | `light()`, `light_set(max)` | `Light { position, color }` around a shaded point at the origin | a light at the vertex (distance 0), 10^-6 … 10^4 distances, black lights, mirrored pairs that cancel |
 
 use crate::depth24::DEPTH24_MAX;
 use glam::Vec3;

@@ -146,3 +146,37 @@ pub fn assert_decoder(name: &str, d: &prepass::sweep::normal::DecoderCheck) {
         d.twin.first
     );
 }
+
+/// Replace (with `PREPASS_WRITE_DOCS=1`, as `bash .ci/docs` runs) or check the text between
+/// `<!-- generated:NAME:begin -->` and `<!-- generated:NAME:end -->` in `path` (relative to the
+/// repository). Checking FAILS when the committed block differs, naming the command that
+/// regenerates it: published figures are never typed by hand.
+#[allow(dead_code)]
+pub fn publish(path: &str, name: &str, body: &str) {
+    static FILES: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _g = FILES.lock().unwrap_or_else(|e| e.into_inner());
+    let full = format!("{}/{path}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&full).unwrap_or_default();
+    let (b, e) = (
+        format!("<!-- generated:{name}:begin -->"),
+        format!("<!-- generated:{name}:end -->"),
+    );
+    let block = format!("{b}\n{body}{e}");
+    let found = text.find(&b).zip(text.find(&e));
+    if std::env::var_os("PREPASS_WRITE_DOCS").is_some() {
+        let new = match found {
+            Some((i, j)) => format!("{}{block}{}", &text[..i], &text[j + e.len()..]),
+            None => format!("{text}\n{block}\n"),
+        };
+        std::fs::write(&full, new).unwrap();
+        return;
+    }
+    let current = found.map(|(i, j)| &text[i..j + e.len()]);
+    assert_eq!(
+        current,
+        Some(block.as_str()),
+        "{path}, block `{name}`, differs from what the tests compute: run `bash .ci/docs` to \
+         regenerate it (figures measured on an adapter other than lavapipe may differ in their \
+         last digits)"
+    );
+}
