@@ -98,3 +98,19 @@ mod tests {
         assert_eq!(ndc_from_uv(Vec2::new(1.0, 1.0)), Vec2::new(1.0, -1.0));
     }
 }
+
+/// Error bounds of `view_position(frustum_ray(ndc, tan), vz)`, relative, beyond view z's own
+/// error, kept once: `tests/position.rs` asserts them on the adapter and under emulation.
+/// x and y are two products (`ndc·tan`, then `·vz`); z is `1·vz`, exact.
+pub mod bounds {
+    const U: f64 = 1.0 / 16_777_216.0;
+
+    /// Where `×` rounds correctly (lavapipe, the Rust twin): two roundings, `2u`, plus `2^-44`
+    /// for the second-order term.
+    pub const XY_CORRECTLY_ROUNDED: f64 = 2.0 * U + 1.0 / 17_592_186_044_416.0;
+
+    /// On every conforming adapter, each product rounded to either neighbour (`2u`): `4u`, plus
+    /// `2^-42` for the second-order term.
+    pub const XY_CONFORMING: f64 = 4.0 * U + 1.0 / 4_398_046_511_104.0;
+}
+

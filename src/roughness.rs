@@ -283,6 +283,38 @@ pub fn quantisation_limit(max_power: f64) -> f64 {
     (max_power.log2() / 510.0).exp2() - 1.0
 }
 
+/// Error bounds of the general-range (not power-of-two `max_power`) round trip, relative, kept
+/// once: `tests/roughness.rs` asserts them on the adapter and under the worst-case emulation.
+/// (Power-of-two ranges are exact on every conforming adapter: integer encoder, table decoder.)
+///
+/// With `u = 2^-24` and one ULP ≤ `2u` relative, on any conforming adapter (WGSL accuracy
+/// rules), `L = log2(max_power)`:
+/// - **encode** `t = 255·log2(p)/L`: each `log2` within 3 ULP (`6u`), the product rounded to
+///   either neighbour (`2u`), the division 2.5 ULP (`5u`), plus `6u` for `L`'s own `log2`: `t` is
+///   off by `≤ 19u·t ≤ 19u·255` codes; a power that close to a code boundary may take the other
+///   code, costing at most `19u·255·(L/255)·ln 2 = 19u·L·ln 2` more relative error;
+/// - **decode** `x = k·L/255`: off by `≤ (6 + 2 + 5)u·x`, adding `13u·x·ln 2` relative; `exp2`
+///   adds `(3 + 2x)` ULP `≤ (3 + 2x)·2u`; with `x ≤ L`.
+pub mod bounds {
+    const U: f64 = 1.0 / 16_777_216.0;
+
+    /// The decode part: `13u·L·ln 2 + (3 + 2L)·2u`.
+    pub fn general_range_decode(max_power: f32) -> f64 {
+        let l = f64::from(max_power).log2();
+        13.0 * U * l * std::f64::consts::LN_2 + (3.0 + 2.0 * l) * 2.0 * U
+    }
+
+    /// The whole round trip: the quantisation limit, the encode part `19u·L·ln 2`, the decode
+    /// part, and `u` for the comparison in f64.
+    pub fn general_range(max_power: f32) -> f64 {
+        let l = f64::from(max_power).log2();
+        super::quantisation_limit(f64::from(max_power))
+            + 19.0 * U * l * std::f64::consts::LN_2
+            + general_range_decode(max_power)
+            + U
+    }
+}
+
 /// Exact references (f64) for this module.
 pub mod exact {
     /// `max_power^(code/255)` in f64 (relative error ~1e-16). Codes above 255 count as 255,
