@@ -2,7 +2,7 @@
 //! downstream suites measure their own shaders the way this crate measures its own.
 //!
 //! - [`metrics`], [`inputs`]: always available.
-//! - [`assert`]: tolerance asserts that print the measured value, the bound, the margin and
+//! - [`assert`](mod@assert): tolerance asserts that print the measured value, the bound, the margin and
 //!   where the bound comes from — [`assert_within!`](crate::assert_within),
 //!   [`assert_within_abs!`](crate::assert_within_abs), [`assert_at_least!`](crate::assert_at_least)
 //!   (always available; exported at the crate root).
