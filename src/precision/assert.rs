@@ -34,6 +34,27 @@ use core::fmt;
 pub trait ToF64: Copy {
     /// The value as an `f64`.
     fn to_f64(self) -> f64;
+
+    /// The value for the comparison and the message (an `f32` is printed as one).
+    #[doc(hidden)]
+    #[inline]
+    fn value(self) -> Value {
+        Value {
+            value: self.to_f64(),
+            f32: false,
+        }
+    }
+}
+
+/// A compared value: as an `f64`, and whether it was an `f32` (printed in `f32`'s shortest
+/// form, so `0.1_f32` reads `0.1`, not `0.10000000149011612`).
+#[doc(hidden)]
+#[derive(Clone, Copy, Debug)]
+pub struct Value {
+    /// The value.
+    pub value: f64,
+    /// Whether it came from an `f32`.
+    pub f32: bool,
 }
 
 macro_rules! to_f64_lossless {
@@ -46,7 +67,22 @@ macro_rules! to_f64_lossless {
         }
     )*};
 }
-to_f64_lossless!(f32 f64 i8 i16 i32 u8 u16 u32);
+to_f64_lossless!(f64 i8 i16 i32 u8 u16 u32);
+
+impl ToF64 for f32 {
+    #[inline]
+    fn to_f64(self) -> f64 {
+        f64::from(self)
+    }
+
+    #[inline]
+    fn value(self) -> Value {
+        Value {
+            value: f64::from(self),
+            f32: true,
+        }
+    }
+}
 
 macro_rules! to_f64_rounding {
     ($($t:ty)*) => {$(
@@ -65,6 +101,11 @@ impl<T: ToF64> ToF64 for &T {
     fn to_f64(self) -> f64 {
         (*self).to_f64()
     }
+
+    #[inline]
+    fn value(self) -> Value {
+        (*self).value()
+    }
 }
 
 /// A float whose absolute difference [`assert_within_abs!`](crate::assert_within_abs) takes:
@@ -73,6 +114,10 @@ impl<T: ToF64> ToF64 for &T {
 pub trait AbsDiff: ToF64 {
     /// `|self − other|`, computed in `Self`, as an `f64`.
     fn abs_diff_f64(self, other: Self) -> f64;
+
+    /// `|self − other|` for the comparison and the message.
+    #[doc(hidden)]
+    fn abs_diff_value(self, other: Self) -> Value;
 }
 
 impl AbsDiff for f32 {
@@ -80,12 +125,22 @@ impl AbsDiff for f32 {
     fn abs_diff_f64(self, other: Self) -> f64 {
         f64::from((self - other).abs())
     }
+
+    #[inline]
+    fn abs_diff_value(self, other: Self) -> Value {
+        (self - other).abs().value()
+    }
 }
 
 impl AbsDiff for f64 {
     #[inline]
     fn abs_diff_f64(self, other: Self) -> f64 {
         (self - other).abs()
+    }
+
+    #[inline]
+    fn abs_diff_value(self, other: Self) -> Value {
+        (self - other).abs().value()
     }
 }
 
@@ -126,17 +181,20 @@ impl Cmp {
     }
 }
 
-/// A number for the message: shortest round-trip form, in exponent notation when very small or
-/// very large.
-struct Num(f64);
+/// A number for the message: the shortest form that reads back as the same value (of its own
+/// type, `f32` or `f64`), in exponent notation when very small or very large.
+struct Num(Value);
 
 impl fmt::Display for Num {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let a = self.0.abs();
-        if a == 0.0 || !a.is_finite() || (1e-4..1e7).contains(&a) {
-            write!(f, "{}", self.0)
-        } else {
-            write!(f, "{:e}", self.0)
+        let v = self.0.value;
+        let a = v.abs();
+        let plain = a == 0.0 || !a.is_finite() || (1e-4..1e7).contains(&a);
+        match (self.0.f32, plain) {
+            (true, true) => write!(f, "{}", v as f32),
+            (true, false) => write!(f, "{:e}", v as f32),
+            (false, true) => write!(f, "{v}"),
+            (false, false) => write!(f, "{v:e}"),
         }
     }
 }
@@ -144,7 +202,10 @@ impl fmt::Display for Num {
 /// The margin for the message, to 6 significant digits (a difference of two values carries
 /// their roundings, which would only add noise digits).
 fn margin(v: f64) -> Num {
-    Num(format!("{v:.5e}").parse().unwrap_or(v))
+    Num(Value {
+        value: format!("{v:.5e}").parse().unwrap_or(v),
+        f32: false,
+    })
 }
 
 /// The context line, its value aligned after `pad` spaces.
@@ -171,10 +232,11 @@ fn nan_note(v: f64) -> &'static str {
 pub fn fail(
     cmp: Cmp,
     exprs: (&str, &str),
-    (measured, bound): (f64, f64),
+    (m, b): (Value, Value),
     from: &dyn fmt::Display,
     context: Option<fmt::Arguments<'_>>,
 ) -> ! {
+    let (measured, bound) = (m.value, b.value);
     let (name, kind, margin_value, margin_is) = match cmp {
         Cmp::AtMost | Cmp::Below => (
             "assert_within!",
@@ -194,9 +256,9 @@ pub fn fail(
         exprs.0,
         cmp.symbol(),
         exprs.1,
-        Num(measured),
+        Num(m),
         nan_note(measured),
-        Num(bound),
+        Num(b),
         nan_note(bound),
         margin(margin_value),
         context_line(context, "  "),
@@ -211,7 +273,7 @@ pub fn fail(
 pub fn fail_abs(
     strict: bool,
     exprs: (&str, &str, &str),
-    (actual, expected, diff, tolerance): (f64, f64, f64, f64),
+    (actual, expected, diff, tolerance): (Value, Value, Value, Value),
     from: &dyn fmt::Display,
     context: Option<fmt::Arguments<'_>>,
 ) -> ! {
@@ -224,10 +286,10 @@ pub fn fail_abs(
         Num(actual),
         Num(expected),
         Num(diff),
-        nan_note(diff),
+        nan_note(diff.value),
         Num(tolerance),
-        nan_note(tolerance),
-        margin(tolerance - diff),
+        nan_note(tolerance.value),
+        margin(tolerance.value - diff.value),
         context_line(context, "   "),
     )
 }
@@ -354,10 +416,10 @@ macro_rules! assert_within_abs {
 #[macro_export]
 macro_rules! __tolerance_check {
     ($cmp:ident, $measured:expr, $bound:expr, $from:expr, $context:expr) => {{
-        let measured: f64 = $crate::precision::assert::ToF64::to_f64($measured);
-        let bound: f64 = $crate::precision::assert::ToF64::to_f64($bound);
+        let measured = $crate::precision::assert::ToF64::value($measured);
+        let bound = $crate::precision::assert::ToF64::value($bound);
         let cmp = $crate::precision::assert::Cmp::$cmp;
-        if !cmp.holds(measured, bound) {
+        if !cmp.holds(measured.value, bound.value) {
             $crate::precision::assert::fail(
                 cmp,
                 (stringify!($measured), stringify!($bound)),
@@ -375,14 +437,14 @@ macro_rules! __tolerance_check {
 macro_rules! __tolerance_check_abs {
     ($strict:expr, $actual:expr, $expected:expr, $tolerance:expr, $from:expr, $context:expr) => {{
         let (actual, expected) = ($actual, $expected);
-        let diff: f64 = $crate::precision::assert::AbsDiff::abs_diff_f64(actual, expected);
-        let tolerance: f64 = $crate::precision::assert::ToF64::to_f64($tolerance);
+        let diff = $crate::precision::assert::AbsDiff::abs_diff_value(actual, expected);
+        let tolerance = $crate::precision::assert::ToF64::value($tolerance);
         let cmp = if $strict {
             $crate::precision::assert::Cmp::Below
         } else {
             $crate::precision::assert::Cmp::AtMost
         };
-        if !cmp.holds(diff, tolerance) {
+        if !cmp.holds(diff.value, tolerance.value) {
             $crate::precision::assert::fail_abs(
                 $strict,
                 (
@@ -391,8 +453,8 @@ macro_rules! __tolerance_check_abs {
                     stringify!($tolerance),
                 ),
                 (
-                    $crate::precision::assert::ToF64::to_f64(actual),
-                    $crate::precision::assert::ToF64::to_f64(expected),
+                    $crate::precision::assert::ToF64::value(actual),
+                    $crate::precision::assert::ToF64::value(expected),
                     diff,
                     tolerance,
                 ),
@@ -465,6 +527,21 @@ mod tests {
             m.contains("margin:   -9e-10") && !m.contains("context"),
             "{m}"
         );
+    }
+
+    #[test]
+    fn f32_values_print_as_f32() {
+        let (err, step) = (0.1_f32, 0.05_f32);
+        let m = message(|| crate::assert_within!(err, step, "f32")).unwrap();
+        assert!(m.contains("measured: 0.1\n  bound:    0.05\n"), "{m}");
+        let m = message(|| crate::assert_within!(1.1920929e-7_f32, 0.0, "tiny f32")).unwrap();
+        assert!(m.contains("measured: 1.1920929e-7\n"), "{m}");
+        let m = message(|| crate::assert_within_abs!(1.1_f32, 1.0, 0.01, "abs f32")).unwrap();
+        assert!(
+            m.contains("actual:    1.1\n  expected:  1\n  |diff|:    0.100000024\n"),
+            "{m}"
+        );
+        assert!(m.contains("tolerance: 0.01\n"), "{m}");
     }
 
     #[test]
