@@ -254,7 +254,13 @@ mod tests {
     #[test]
     fn planes_map_to_near_and_far() {
         assert_eq!(view_z_from_depth24(0, 0.1, 100.0), 0.1);
-        assert!((view_z_from_depth24(DEPTH24_MAX, 0.1, 100.0) - 100.0).abs() <= 100.0 * 2e-7);
+        crate::assert_within_abs!(
+            view_z_from_depth24(DEPTH24_MAX, 0.1, 100.0),
+            100.0,
+            100.0_f32 * 2e-7,
+            "literal: 2e-7 relative, ≈ 2.6 ULP at 100 (a spot check)",
+            "the far plane's code"
+        );
         assert_eq!(
             view_z_from_depth24(DEPTH24_MAX, 0.1, f32::INFINITY),
             f32::INFINITY
@@ -266,7 +272,13 @@ mod tests {
             view_z_from_reversed_depth(0.0, 0.5, f32::INFINITY),
             f32::INFINITY
         );
-        assert!((view_z_from_reversed_depth(0.0, 0.5, 10.0) - 10.0).abs() <= 10.0 * 2e-7);
+        crate::assert_within_abs!(
+            view_z_from_reversed_depth(0.0, 0.5, 10.0),
+            10.0,
+            10.0_f32 * 2e-7,
+            "literal: 2e-7 relative, ≈ 2.1 ULP at 10 (a spot check)",
+            "the reversed far plane"
+        );
     }
 
     #[test]

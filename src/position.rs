@@ -89,7 +89,12 @@ mod tests {
         let p = Vec2::new(0.25, -0.5);
         let (b1, b2) = ((p.x + 1.0) / 4.0, (p.y + 1.0) / 4.0);
         let mixed = r[0] * (1.0 - b1 - b2) + r[1] * b1 + r[2] * b2;
-        assert!((mixed - frustum_ray(p, t)).abs().max_element() < 1e-6);
+        crate::assert_within!(
+            (mixed - frustum_ray(p, t)).abs().max_element(),
+            < 1e-6_f32,
+            "literal: 1e-6 ≈ 17u, a few f32 roundings of the mix",
+            "NDC {p}: barycentric mix {mixed}"
+        );
     }
 
     #[test]

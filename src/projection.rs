@@ -388,9 +388,12 @@ mod tests {
                     let z = clip.z / clip.w;
                     let want = p.depth_from_view_z(f64::from(vz));
                     // glam builds the matrix in f32: a few f32 ULPs of slack on values ≤ 1.
-                    assert!(
-                        (f64::from(z) - want).abs() < 1e-6,
-                        "{conv:?} {far} {vz}: {z} vs {want}"
+                    crate::assert_within_abs!(
+                        f64::from(z),
+                        want,
+                        < 1e-6,
+                        "comment above: glam's f32 matrix, a few f32 ULPs on values ≤ 1",
+                        "{conv:?} far {far} vz {vz}"
                     );
                 }
             }

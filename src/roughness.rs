@@ -347,7 +347,13 @@ mod tests {
             let x = (r as f64 / 255.0).exp2();
             let v = f64::from(f32::from_bits(bits));
             let ulp = 2f64.powi(-23);
-            assert!((x - v).abs() < 0.5 * ulp * (1.0 - 1e-9), "r={r}");
+            crate::assert_within_abs!(
+                x,
+                v,
+                < 0.5 * ulp * (1.0 - 1e-9),
+                "doc above: correctly rounded, and f64 (1e-16) far from the half-ULP decision point",
+                "EXP2_STEPS[{r}]"
+            );
         }
         for (r, &bits) in BOUNDARY_STEPS.iter().enumerate() {
             let x = (r as f64 / 510.0).exp2();
@@ -357,7 +363,9 @@ mod tests {
                 assert_eq!(v, 1.0);
                 continue;
             }
-            assert!(v > x * (1.0 + 1e-15) && prev < x * (1.0 - 1e-15), "r={r}");
+            let margin = "doc above: rounded up, and f64 (1e-16) far from the decision point";
+            crate::assert_at_least!(v, > x * (1.0 + 1e-15), margin, "BOUNDARY_STEPS[{r}]");
+            crate::assert_within!(prev, < x * (1.0 - 1e-15), margin, "BOUNDARY_STEPS[{r}] − 1 ULP");
         }
     }
 

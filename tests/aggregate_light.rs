@@ -10,6 +10,7 @@ use glam::{Vec3, Vec4};
 use prepass::harness::{Arg, Kernel};
 use prepass::lighting::aggregate_light;
 use prepass::wgsl::AGGREGATE_LIGHT;
+use prepass::{assert_within, assert_within_abs};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::TestRunner;
@@ -236,9 +237,11 @@ fn the_luminance_identity_holds_within_the_derived_budget() {
         let (want, s, r) = exact(set);
         let b = budget(set, s, r);
         let err = (f64::from(g) - want).abs();
-        assert!(
-            err <= b,
-            "{set:?}: aggregate {g} vs Σ l_i N·L_i {want} (error {err:e}, budget {b:e})"
+        assert_within!(
+            err,
+            b,
+            "budget(): (2K + 52)u·S + 4u·(|V| + 2|R|)/|R|·S",
+            "{set:?}: aggregate {g} vs Σ l_i N·L_i {want}"
         );
         // The Rust twin folds the same lights on the CPU: within the same budget.
         let lights: Vec<(Vec3, f32, Vec3)> = set
@@ -253,10 +256,12 @@ fn the_luminance_identity_holds_within_the_derived_budget() {
             pos,
             col,
         );
-        assert!(
-            (f64::from(twin.x) - want).abs() <= b,
-            "twin: {} vs {want}",
-            twin.x
+        assert_within_abs!(
+            f64::from(twin.x),
+            want,
+            b,
+            "budget(): the twin folds the same lights",
+            "twin of {set:?}"
         );
         worst = worst.max(err / b);
         worst_rel_s = worst_rel_s.max(err / s);
@@ -319,9 +324,12 @@ fn a_light_at_the_vertex_is_skipped_and_cancelling_lights_stay_finite() {
         // the budget is large; the first-order terms alone bound the error by (2K + 52)u·S plus
         // the direction-to-P_agg term, which is at most l_agg·2 ≤ 2|X| (a unit vector's dot).
         let x_len = 1e6 * 2.0 * (1e-4f64).atan();
-        assert!(
-            (f64::from(g) - want).abs() <= (2.0 * SLOTS as f64 + 52.0) * U * s + 2.0 * x_len,
-            "{g} vs {want}"
+        assert_within_abs!(
+            f64::from(g),
+            want,
+            (2.0 * SLOTS as f64 + 52.0) * U * s + 2.0 * x_len,
+            "comment above: first-order (2K + 52)u·S + direction term ≤ 2|X|",
+            "{set:?}"
         );
     }
     eprintln!(
@@ -386,9 +394,11 @@ fn bad_input_is_skipped_identically_on_both_sides() {
         let skipped = Vec4::from(acc[i]);
         // Skipped on one side ⇔ skipped on the other (same bit tests); otherwise equal to ~8u.
         assert_eq!(Vec4::from(*got) == skipped, twin == skipped, "row {i}");
-        assert!(
-            (Vec4::from(*got) - twin).abs().max_element()
-                <= 1e-6 * twin.abs().max_element().max(1.0)
+        assert_within!(
+            (Vec4::from(*got) - twin).abs().max_element(),
+            1e-6 * twin.abs().max_element().max(1.0),
+            "comment above: equal to ~8u; 1e-6 of max(|twin|, 1)",
+            "row {i}: {got:?} vs twin {twin}"
         );
         if w[i] < 0.0 {
             assert_eq!(Vec4::from(*got), skipped, "negative weight adds nothing");

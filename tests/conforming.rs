@@ -9,6 +9,12 @@ mod common;
 use common::gpu;
 use prepass::conforming::{EmulatedKernel, Emulation, Freedoms, HostAccuracy, Policy, allowance};
 use prepass::harness::{Arg, Signature};
+use prepass::{assert_at_least, assert_within, assert_within_abs};
+
+/// Where the reach floor of the pushed policies comes from: the host within 0.5 ULP, the push
+/// 2 ULP of the spacing below it (at least half the exact result's ULP), so each end is reached
+/// to within the host's error.
+const PUSH: &str = "allowance::DIVISION_ULP 2.5 less the host's 0.5: a 2 ULP push (PUSH)";
 
 const ALL_POLICIES: [Policy; 6] = [
     Policy::Identity,
@@ -199,8 +205,10 @@ fn division_stays_within_2_5_ulp_and_reaches_both_ends() {
             }
             if flags[i] {
                 // Only an overflowing quotient may be flagged in the domain.
-                assert!(
-                    exact[i].abs() > f64::from(f32::MAX) * 0.99,
+                assert_at_least!(
+                    exact[i].abs(),
+                    > f64::from(f32::MAX) * 0.99,
+                    "comment above: only an overflowing quotient may be flagged",
                     "{policy}: {} / {} flagged",
                     a[i],
                     b[i]
@@ -234,26 +242,34 @@ fn division_stays_within_2_5_ulp_and_reaches_both_ends() {
         // Host within 0.5 ULP, push 2 ULP of the spacing below it (at least half the exact
         // result's ULP): each end is reached to within the host's error.
         match policy {
-            Policy::Identity => assert!(
-                r.max_above <= 0.5 && r.max_below <= 0.5,
-                "the host's `/` is not correctly rounded: HostAccuracy::division_ulp = 0.5 is wrong for this adapter"
-            ),
-            Policy::Upper => assert!(
-                r.max_above >= 2.0 && r.max_below <= 0.0,
-                "upper: {:.3} above, {:.3} below",
-                r.max_above,
-                r.max_below
-            ),
-            Policy::Lower => assert!(
-                r.max_below >= 2.0 && r.max_above <= 0.0,
-                "lower: {:.3} above, {:.3} below",
-                r.max_above,
-                r.max_below
-            ),
-            Policy::Seeded(_) => assert!(
-                r.max_above >= 2.0 && r.max_below >= 2.0,
-                "seeded reaches one end only"
-            ),
+            Policy::Identity => {
+                let why = "HostAccuracy::division_ulp: the host's `/` correctly rounded";
+                let wrong = "0.5 is wrong for this adapter";
+                assert_within!(r.max_above, 0.5, why, "above the exact quotient; {wrong}");
+                assert_within!(r.max_below, 0.5, why, "below the exact quotient; {wrong}");
+            }
+            Policy::Upper => {
+                assert_at_least!(r.max_above, 2.0, PUSH, "upper: ULP above");
+                assert_within!(
+                    r.max_below,
+                    0.0,
+                    "upper never rounds down",
+                    "upper: ULP below"
+                );
+            }
+            Policy::Lower => {
+                assert_at_least!(r.max_below, 2.0, PUSH, "lower: ULP below");
+                assert_within!(
+                    r.max_above,
+                    0.0,
+                    "lower never rounds up",
+                    "lower: ULP above"
+                );
+            }
+            Policy::Seeded(_) => {
+                assert_at_least!(r.max_above, 2.0, PUSH, "seeded: ULP above");
+                assert_at_least!(r.max_below, 2.0, PUSH, "seeded: ULP below");
+            }
         }
     }
 }
@@ -373,9 +389,12 @@ fn fusion_and_reassociation_reach_their_alternatives() {
         f32::from_bits(ident[0]),
     );
     eprintln!("a·b + c: exact {exact:e}, identity {id:e}, upper {up:e}, lower {lo:e}");
-    assert!(
-        (f64::from(up) - exact).abs() <= ulp32(exact),
-        "fused a·b + c within one rounding of the exact value"
+    assert_within_abs!(
+        f64::from(up),
+        exact,
+        ulp32(exact),
+        "fused a·b + c: one rounding of the exact value",
+        "upper policy, fusion only"
     );
     assert_eq!(lo, id, "the lower policy keeps the smaller, unfused result");
     assert!(
@@ -436,8 +455,10 @@ fn inverse_sqrt_sqrt_and_length_stay_inside_their_intervals() {
             );
         }
         if policy == Policy::Upper {
-            assert!(
-                r.max_above >= 0.5,
+            assert_at_least!(
+                r.max_above,
+                0.5,
+                "the upper policy pushes inverseSqrt above the exact value",
                 "upper never reached above the exact value"
             );
         }
@@ -492,10 +513,11 @@ fn exp2_and_log2_stay_inside_their_intervals_and_the_host_is_as_assumed() {
         }
         if policy == Policy::Identity {
             eprintln!("host exp2: max {host_max:.3} ULP");
-            assert!(
-                host_max <= host.exp_ulp,
-                "the host's exp2 errs {host_max:.3} ULP > HostAccuracy::exp_ulp = {}",
-                host.exp_ulp
+            assert_within!(
+                host_max,
+                host.exp_ulp,
+                "HostAccuracy::exp_ulp (lavapipe's exp2)",
+                "the host's exp2, ULP"
             );
         }
     }
@@ -511,9 +533,12 @@ fn exp2_and_log2_stay_inside_their_intervals_and_the_host_is_as_assumed() {
             let e = f64::from(ys[i]).log2();
             let g = f64::from(f32::from_bits(got[i]));
             if (0.5..=2.0).contains(&ys[i]) {
-                assert!(
-                    (g - e).abs() <= allowance::LOG_ABS,
-                    "{policy}: log2({}) = {g} beyond 2^-21 of {e}",
+                assert_within_abs!(
+                    g,
+                    e,
+                    allowance::LOG_ABS,
+                    "conforming::allowance::LOG_ABS: WGSL's 2^-21 for log2 on [0.5, 2]",
+                    "{policy}: log2({})",
                     ys[i]
                 );
                 host_abs = host_abs.max((g - e).abs());
@@ -530,15 +555,17 @@ fn exp2_and_log2_stay_inside_their_intervals_and_the_host_is_as_assumed() {
             eprintln!(
                 "host log2: max {host_ulp:.3} ULP outside [0.5, 2], {host_abs:e} absolute inside"
             );
-            assert!(
-                host_ulp <= host.log_ulp,
-                "the host's log2 errs {host_ulp:.3} ULP > HostAccuracy::log_ulp = {}",
-                host.log_ulp
+            assert_within!(
+                host_ulp,
+                host.log_ulp,
+                "HostAccuracy::log_ulp (lavapipe's log2 outside [0.5, 2])",
+                "the host's log2, ULP"
             );
-            assert!(
-                host_abs <= host.log_abs,
-                "the host's log2 errs {host_abs:e} > HostAccuracy::log_abs = {:e}",
-                host.log_abs
+            assert_within!(
+                host_abs,
+                host.log_abs,
+                "HostAccuracy::log_abs (lavapipe's log2 on [0.5, 2])",
+                "the host's log2, absolute"
             );
         }
     }
@@ -577,7 +604,12 @@ fn unpack_is_within_3_ulp_and_pack_ties_take_either_byte() {
                 }
             }
             if policy == Policy::Upper {
-                assert!(above >= 2.0, "{f} upper reaches only {above:.3} ULP above");
+                assert_at_least!(
+                    above,
+                    2.0,
+                    "the upper policy pushes UNPACK_ULP less the host's 0.5 (≥ 2 ULP)",
+                    "{f} upper: ULP above"
+                );
             }
         }
     }
@@ -824,22 +856,24 @@ fn every_normal_encoding_under_emulation() {
                     o.worst_excess_deg,
                     optimality_tolerance_deg()
                 );
-                assert!(
-                    o.worst_excess_deg <= tol,
-                    "{} {policy}: the precise encoder's choice is {:e}° worse than the best neighbour, beyond the conforming tolerance {tol:e}° (sweep::conforming::optimality_tolerance_conforming_deg)",
-                    c.name,
-                    o.worst_excess_deg
+                assert_within!(
+                    o.worst_excess_deg,
+                    tol,
+                    "sweep::conforming::optimality_tolerance_conforming_deg",
+                    "{} {policy}: the precise encoder's choice, degrees worse than the best neighbour",
+                    c.name
                 );
             }
             eprintln!(
                 "{:14} {policy:10}: codes differing from the twin are at most {} code step(s) away",
                 c.name, e.max_code_step
             );
-            assert!(
-                e.max_code_step <= 1,
-                "{} {policy}: an emulated code is {} steps from the twin's (the twins promise: within one code on every conforming adapter)",
-                c.name,
-                e.max_code_step
+            assert_within!(
+                e.max_code_step,
+                1,
+                "the twins' promise: within one code on every conforming adapter",
+                "{} {policy}: emulated code steps from the twin's",
+                c.name
             );
         }
     }

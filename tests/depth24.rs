@@ -13,6 +13,7 @@ use prepass::sweep::depth24::{
     CODES, RECOVERY_CASES, hyperbolic_all, measure_hyperbolic, recover_all,
 };
 use prepass::wgsl::DEPTH24;
+use prepass::{assert_at_least, assert_within};
 
 const BASELINES: &str = include_str!("baselines/depth24.wgsl");
 
@@ -71,10 +72,11 @@ fn unrounded_baseline_reproduces_the_talks_problem() {
         if matches!(error, ChannelError::Offset(_)) {
             // ±0.45/255 on r alone moves the unrounded total by 0.45·65536 codes: nearly every
             // code must come back wrong. If this passes with few mismatches the sweep is broken.
-            assert!(
-                r.mismatches.count > CODES / 2,
-                "{error}: only {} mismatches",
-                r.mismatches.count
+            assert_at_least!(
+                r.mismatches.count,
+                > CODES / 2,
+                "comment above: ±0.45/255 on r moves 0.45·65536 codes, nearly all wrong",
+                "{error}: mismatches"
             );
         }
     }
@@ -136,10 +138,11 @@ fn hyperbolic_depth_is_correctly_rounded_for_every_code() {
     // Bound: correctly rounded (≤ 0.5 ULP). The integer construction has no rounding step, so
     // anything above 0.5 is a bug, not an accuracy allowance.
     assert_eq!(h.ulps.nan_count, 0);
-    assert!(
-        h.ulps.max <= 0.5,
-        "max {} ULP at code {}",
+    assert_within!(
         h.ulps.max,
+        0.5,
+        "correctly rounded: the integer construction has no rounding step (comment above)",
+        "at code {}",
         h.ulps.argmax
     );
     assert_eq!(h.exact_roundtrip_failures, 0);
@@ -171,7 +174,12 @@ fn hyperbolic_baselines_are_measured() {
         // WGSL allows `/` 2.5 ULP; the reciprocal form rounds twice (≤ 0.5 + 0.5·(1+2^-23) ULP
         // plus the constant's own 0.5 ULP relative error): both stay within 2.5 ULP, so a
         // conforming adapter cannot exceed this.
-        assert!(h.ulps.max <= 2.5, "{f}: {} ULP", h.ulps.max);
+        assert_within!(
+            h.ulps.max,
+            2.5,
+            "comment above: WGSL's 2.5 ULP `/`; the reciprocal's two roundings stay within it",
+            "{f}: ULP"
+        );
         eprintln!(
             "{f}: max {:.3} ULP, mean {:.4}; exact round trip failures {}, f32 round trip \
              failures {}, collisions {}",
@@ -274,10 +282,11 @@ fn emulation_breaks_the_division_baseline_but_not_the_integer_construction() {
             "emulated {policy}: hyperbolic_depth_from_depth24 max {:.3} ULP, {} exact / {} f32 round-trip failures, {} collisions",
             h.ulps.max, h.exact_roundtrip_failures, h.f32_roundtrip_failures, h.collisions
         );
-        assert!(
-            h.ulps.max <= 0.5,
-            "{policy}: {} ULP (bound: correctly rounded, 0.5 ULP)",
-            h.ulps.max
+        assert_within!(
+            h.ulps.max,
+            0.5,
+            "correctly rounded under every policy: built from integers (doc above)",
+            "{policy}: ULP"
         );
         assert_eq!(
             h.exact_roundtrip_failures + h.collisions,
@@ -291,9 +300,11 @@ fn emulation_breaks_the_division_baseline_but_not_the_integer_construction() {
             "emulated {policy}: baseline f32(d) / 16777215.0 max {:.3} ULP, {} exact / {} f32 round-trip failures, {} collisions",
             h.ulps.max, h.exact_roundtrip_failures, h.f32_roundtrip_failures, h.collisions
         );
-        assert!(
-            h.ulps.max <= prepass::conforming::allowance::DIVISION_ULP,
-            "{policy}: the emulated division left its 2.5 ULP"
+        assert_within!(
+            h.ulps.max,
+            prepass::conforming::allowance::DIVISION_ULP,
+            "conforming::allowance::DIVISION_ULP: WGSL's 2.5 ULP for `/`",
+            "{policy}: the emulated division, ULP"
         );
         assert!(
             h.exact_roundtrip_failures > 0,

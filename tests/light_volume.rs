@@ -6,6 +6,7 @@ mod common;
 
 use common::gpu;
 use glam::{Vec2, Vec3};
+use prepass::assert_within;
 use prepass::harness::Arg;
 use prepass::lighting::light_volume::{self, exact};
 use prepass::projection::DepthConvention;
@@ -150,17 +151,43 @@ fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
         );
         let (emin, emax) = (za.min(zb), za.max(zb));
         let (dl, dh) = (emin - f64::from(b[0]), f64::from(b[1]) - emax);
-        assert!(
-            dl <= 2.0 * eps + U && dh <= 2.0 * eps + U,
-            "case {i}: loose by {dl:e}/{dh:e}, eps {eps:e}"
+        let tight = "comment above: widening eps + evaluation error ≤ eps (light_volume docs), + U";
+        assert_within!(
+            dl,
+            2.0 * eps + U,
+            tight,
+            "case {i}: loose below, eps {eps:e}"
+        );
+        assert_within!(
+            dh,
+            2.0 * eps + U,
+            tight,
+            "case {i}: loose above, eps {eps:e}"
         );
         // Codes: one more code each side at most beyond the float range.
         let (cl, ch) = (emin * D24 - f64::from(c[0]), f64::from(c[1]) - emax * D24);
-        assert!(cl <= (2.0 * eps + U) * D24 + 1.0 && ch <= (2.0 * eps + U) * D24 + 1.0);
+        let codes = "comment above: the float range's 2·eps + U in codes, + 1 code";
+        assert_within!(
+            cl,
+            (2.0 * eps + U) * D24 + 1.0,
+            codes,
+            "case {i}: codes below"
+        );
+        assert_within!(
+            ch,
+            (2.0 * eps + U) * D24 + 1.0,
+            codes,
+            "case {i}: codes above"
+        );
         loose_u = loose_u.max(dl.max(dh) / U);
         loose_codes = loose_codes.max(cl.max(ch));
         // The twin: same formulas, within the evaluation error of each other.
-        assert!((twin - Vec2::from(*b)).abs().max_element() as f64 <= 2.0 * eps + U);
+        assert_within!(
+            (twin - Vec2::from(*b)).abs().max_element() as f64,
+            2.0 * eps + U,
+            "comment above: the same formulas, each within its evaluation error",
+            "case {i}: twin {twin} vs {b:?}"
+        );
     }
     eprintln!(
         "depth bounds: {} spheres ({empty} outside [near, far]), {points} surface points all \
@@ -321,9 +348,12 @@ fn cone_stencil_choice_is_conservative() {
         }
     }
     // The twin may differ only for cones within the rounding margin of the threshold.
-    assert!(
-        twin_diff * 1000 <= cases.len(),
-        "{twin_diff} twin differences"
+    assert_within!(
+        twin_diff * 1000,
+        cases.len(),
+        "comment above: only cones within the threshold's rounding margin, ≤ 1 in 1000",
+        "{twin_diff} twin differences (× 1000) of {} cases",
+        cases.len()
     );
     eprintln!(
         "cone volumes: {} cases, {needed} reach the near rectangle (all flagged), {flagged} \

@@ -18,6 +18,7 @@ use prepass::sweep::linear_depth::{
     Call, LinearStats, codes_sweep, float_depths, float_sweep, stiff_grid, textbook_consts,
 };
 use prepass::wgsl::LINEAR_DEPTH;
+use prepass::{assert_at_least, assert_within};
 
 const BASELINES: &str = include_str!("baselines/linear_depth.wgsl");
 
@@ -31,18 +32,19 @@ fn check(name: &str, near: f32, far: f32, s: &LinearStats) {
     );
     assert_eq!(s.ulps.nan_count, 0, "{name}: NaN results");
     let (bound, _, why) = prepass::linear_depth::bounds::of(name).expect("a bound per path");
-    assert!(
-        s.ulps.max <= bound,
-        "{name} near {near} far {far}: {} ULP at input #{} exceeds the correctly rounded bound {bound} ULP (margin {:.3}; from {why})",
+    assert_within!(
         s.ulps.max,
-        s.ulps.argmax,
-        bound - s.ulps.max
+        bound,
+        format_args!("linear_depth::bounds::of, correctly rounded: {why}"),
+        "{name} near {near} far {far}: at input #{}",
+        s.ulps.argmax
     );
     assert_eq!(s.non_monotonic, 0, "{name}: not monotonic");
-    assert!(
-        s.twin_max_ulps <= 1,
-        "{name}: twin {} ULP apart",
-        s.twin_max_ulps
+    assert_within!(
+        s.twin_max_ulps,
+        1,
+        "twins within 1 ULP: one fused a·b + c (header above)",
+        "{name}: twin vs adapter"
     );
 }
 
@@ -172,7 +174,12 @@ fn textbook_baseline_loses_precision_like_far_over_near() {
         // The talk's problem, reproduced: near the far plane zw·a + b cancels, so the error
         // grows like (f/n)·2^-24. At f/n ≥ 1e6 it must exceed 1% — if not, the sweep is broken.
         if case.ratio >= 1e6 {
-            assert!(rel > 0.01, "textbook form unexpectedly accurate: {rel}");
+            assert_at_least!(
+                rel,
+                > 0.01,
+                "comment above: zw·a + b cancels, (f/n)·2^-24 > 1% at f/n ≥ 1e6",
+                "textbook form unexpectedly accurate"
+            );
         }
     }
 }
@@ -226,7 +233,12 @@ fn bad_depths_give_the_documented_answers_on_both_sides() {
                 } else {
                     assert_eq!(twin, want, "{func}({z}) twin");
                     let err = prepass::precision::metrics::ulp_distance(got, want).unwrap();
-                    assert!(err <= 1, "{func}({z}, far {far}) = {got}, want {want}");
+                    assert_within!(
+                        err,
+                        1,
+                        "twins within 1 ULP (header above); the twin equals want",
+                        "{func}({z}, far {far}) = {got}, want {want}"
+                    );
                 }
             }
         }
@@ -251,8 +263,10 @@ fn bad_depths_give_the_documented_answers_on_both_sides() {
         let far_code = ld::view_z_from_depth24(0x00ff_ffff, n, far);
         for (&d, &got) in codes.iter().zip(out.as_f32()) {
             assert_eq!(ld::view_z_from_depth24(d, n, far), far_code);
-            assert!(
-                prepass::precision::metrics::ulp_distance(got, far_code).unwrap() <= 1,
+            assert_within!(
+                prepass::precision::metrics::ulp_distance(got, far_code).unwrap(),
+                1,
+                "twins within 1 ULP (header above)",
                 "code {d:#x}: {got} vs {far_code}"
             );
         }
@@ -292,13 +306,13 @@ fn every_path_holds_its_conforming_bound_under_emulation() {
             "emulated {:36} worst {:.3} ULP ({}) — conforming bound {bound} ULP",
             path.function, worst.0, worst.1
         );
-        assert!(
-            worst.0 <= bound,
-            "{} under emulation: {:.3} ULP ({}) exceeds the conforming bound {bound} ULP (margin {:.3}; bound from {why})",
-            path.function,
+        assert_within!(
             worst.0,
-            worst.1,
-            bound - worst.0
+            bound,
+            format_args!("linear_depth::bounds::of, conforming: {why}"),
+            "{} under emulation, worst at {}",
+            path.function,
+            worst.1
         );
     }
 }

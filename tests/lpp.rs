@@ -11,6 +11,7 @@ use prepass::lighting::lpp;
 use prepass::precision::metrics::ulp_distance;
 use prepass::sweep::{SplitMix, lpp::multi_light_reconstruction};
 use prepass::wgsl::LPP;
+use prepass::{assert_within, assert_within_abs};
 
 const U: f64 = 1.0 / 16_777_216.0; // 2^-24
 
@@ -101,10 +102,9 @@ fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
         let r = nh.powf(ln);
         if r < 2f64.powi(-120) {
             // The light's own (N·H)^n is at f32's underflow cutoff: both results are (near) 0.
-            assert!(
-                rec <= 2f64.powi(-100) && dir <= 2f64.powi(-100),
-                "input {i}"
-            );
+            let cutoff = "comment above: (N·H)^n at f32's underflow cutoff, both near 0 (2^-100)";
+            assert_within!(rec, 2f64.powi(-100), cutoff, "input {i}: reconstructed");
+            assert_within!(dir, 2f64.powi(-100), cutoff, "input {i}: direct");
             zeros += 1;
             continue;
         }
@@ -113,8 +113,10 @@ fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
         // Results below 2^-126 are flushed to 0 by lpp_pow_cosine's cutoff on either side.
         let floor = 2f64.powi(-120);
         let err = (rec - dir).abs();
-        assert!(
-            err <= budget * dir.abs() + floor,
+        assert_within!(
+            err,
+            budget * dir.abs() + floor,
+            "derivation above: m·(pow_bound + 13u) + pow_bound(r, m) + pow_bound(h, n·m) + 8u relative, + 2^-120",
             "input {i}: reconstructed {rec} vs direct {dir} (N·H {nh}, n {ln}, m {m}), budget {budget}"
         );
         if dir > floor {
@@ -140,10 +142,11 @@ fn many_lights_error_is_measured_and_never_non_finite() {
         // Derived: the reconstruction never exceeds lum(rgb) (ratio clamped to 1) and the
         // exact specular never exceeds the diffuse luminance ((N·H)^k ≤ 1), both non-negative:
         // the error is at most the diffuse luminance, up to f32 rounding of the sums (1e-5).
-        assert!(
-            r.absolute_vs_diffuse.max <= 1.0 + 1e-5,
-            "{lights} lights: {}",
-            r.absolute_vs_diffuse.max
+        assert_within!(
+            r.absolute_vs_diffuse.max,
+            1.0 + 1e-5,
+            "derived above: at most the diffuse luminance, + 1e-5 for f32 sums",
+            "{lights} lights: max |err| / diffuse luminance"
         );
         eprintln!(
             "| {lights} | {} | {:.3e} | {:.3e} | {:.3e} | {:.3e} | {} |",
@@ -259,10 +262,15 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
             }
             if twin == Vec4::ZERO {
                 // Zero exactly when a guard fires: the same guard on both sides.
-                assert!(
-                    v.iter().all(|&x| x == 0.0) || v.iter().all(|x| x.abs() < 1e-30),
-                    "{f} row {i}: {v:?} vs twin 0"
-                );
+                // (All lanes 0 or all below 1e-30: the same as every lane below 1e-30.)
+                for (k, x) in v.iter().enumerate() {
+                    assert_within!(
+                        x.abs(),
+                        < 1e-30f32,
+                        "comment above: the same guard gives 0 on both sides",
+                        "{f} row {i} lane {k}: {v:?} vs twin 0"
+                    );
+                }
             }
             // Same formulas, not bit-identical (inverseSqrt, division, log2/exp2 may differ).
             // Diffuse lanes: the directions and products differ by ≤ ~20u per side (64u).
@@ -284,9 +292,12 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
             for (k, (&g, t)) in v.iter().zip(twin.to_array()).enumerate() {
                 let rel = if k == 3 { spec_tol } else { 64.0 * U };
                 let tol = rel * f64::from(t.abs()) + 1e-30;
-                assert!(
-                    (f64::from(g) - f64::from(t)).abs() <= tol,
-                    "{f} row {i} lane {k}: {g} vs twin {t}"
+                assert_within_abs!(
+                    f64::from(g),
+                    f64::from(t),
+                    tol,
+                    "comment above: 64u diffuse, pow_bound + 64u specular, + 1e-30 absolute",
+                    "{f} row {i} lane {k}"
                 );
             }
         }
@@ -319,14 +330,19 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
         let lum = lpp::lpp_luminance(Vec3::new(t[0], t[1], t[2]).max(Vec3::ZERO));
         if lum.is_finite() {
             // Never above lum(rgb): the ratio is clamped before the exponent.
-            assert!(
-                f64::from(v) <= f64::from(lum) * (1.0 + 1e-6),
-                "{t:?}: {v} > {lum}"
+            assert_within!(
+                f64::from(v),
+                f64::from(lum) * (1.0 + 1e-6),
+                "comment above: the ratio is clamped to 1 before the exponent; 1e-6 rounding",
+                "{t:?}: specular vs lum(rgb) {lum}"
             );
         }
-        assert!(
-            (f64::from(v) - f64::from(twin)).abs() <= 1e-4 * f64::from(twin.abs()) + 1e-30,
-            "texel {t:?} m {}: {v} vs twin {twin}",
+        assert_within_abs!(
+            f64::from(v),
+            f64::from(twin),
+            1e-4 * f64::from(twin.abs()) + 1e-30,
+            "literal, no derivation given: 1e-4 of the twin + 1e-30 absolute",
+            "texel {t:?} m {}",
             mats[i]
         );
     }
@@ -368,7 +384,12 @@ fn two_buffer_layout_and_combination_agree_with_the_one_buffer_layout() {
         // With m = 1 the reconstruction is (a/lum)·lum = a up to the division and luminance
         // roundings (≈ 10u relative of the specular, itself ≤ the colour's length ≈ 2): the two
         // layouts agree within 1e-5 absolute.
-        assert!(f64::from(d) <= 1e-5, "layouts differ by {d}");
+        assert_within!(
+            f64::from(d),
+            1e-5,
+            "comment above: ≈ 10u of a specular ≤ 2, the division and luminance roundings",
+            "one-buffer vs two-buffer layouts, |difference|"
+        );
         worst = worst.max(f64::from(d));
     }
     eprintln!("one-buffer vs two-buffer C for one light: max |difference| {worst:.3e}");
@@ -463,8 +484,10 @@ fn point_and_spot_lights_match_their_twins_and_stay_finite() {
             // edges, so compare with a tolerance of 1e-4 of the colour scale (a few ULP of the
             // cosines through slopes ≤ 1/(cos_inner − cos_outer) ≤ 1e4·…) plus 1e-6 absolute.
             let d = (Vec4::from(got) - twin).abs().max_element();
-            assert!(
-                f64::from(d) <= 1e-4 * f64::from(twin.abs().max_element()) + 1e-4,
+            assert_within!(
+                f64::from(d),
+                1e-4 * f64::from(twin.abs().max_element()) + 1e-4,
+                "comment above: 1e-4 of the colour scale (cosine slopes at the spot's edges) + 1e-4",
                 "row {i}: {got:?} vs twin {twin}"
             );
             worst = worst.max(f64::from(d));

@@ -6,6 +6,7 @@
 mod common;
 
 use common::gpu;
+use prepass::assert_within;
 use prepass::harness::Arg;
 use prepass::normal::hemioct;
 use prepass::sweep::normal::{
@@ -41,9 +42,13 @@ fn round_trip_matches_the_f64_reproduction_and_is_optimal() {
             // coordinate (fast: 2^-24 relative of M, far below one code); decoding adds
             // √2·2^-24 rad. So the statistics agree within that tolerance.
             let tol = optimality_tolerance_deg();
-            assert!(
-                rt.error.max <= r.max + tol && rt.error.mean() <= r.mean() + tol,
-                "{name} {set}"
+            let why = "sweep::normal::optimality_tolerance_deg over the f64 reproduction (above)";
+            assert_within!(rt.error.max, r.max + tol, why, "{name} {set}: max, degrees");
+            assert_within!(
+                rt.error.mean(),
+                r.mean() + tol,
+                why,
+                "{name} {set}: mean, degrees"
             );
             if !name.ends_with("fast") {
                 let o = precise_optimality(c, inputs, &rt);
@@ -51,9 +56,11 @@ fn round_trip_matches_the_f64_reproduction_and_is_optimal() {
                     "  worst excess {:.3e}°, {} not the f64-best",
                     o.worst_excess_deg, o.not_best
                 );
-                assert!(
-                    o.worst_excess_deg <= tol,
-                    "{name} {set}: input {}",
+                assert_within!(
+                    o.worst_excess_deg,
+                    tol,
+                    "sweep::normal::optimality_tolerance_deg",
+                    "{name} {set}: worst excess over the best neighbour at input {}",
                     o.argworst
                 );
             }

@@ -7,6 +7,7 @@
 mod common;
 
 use common::gpu;
+use prepass::assert_within;
 use prepass::normal::oct;
 use prepass::sweep::normal::{
     Codec, adversarial_directions, bad_inputs, codec, decode_codes, decode_range,
@@ -41,19 +42,21 @@ fn check(c: &Codec) {
         assert_eq!(rt.error.nan_count, 0);
         // The adversarial set's max is held to the same target: its points sit on folds, poles
         // and cell edges, where the error is no larger than the cell's worst corner.
-        assert!(
-            rt.error.max <= max_t * 1.02,
-            "{} {set}: max {}° at input {}",
-            c.name,
+        assert_within!(
             rt.error.max,
+            max_t * 1.02,
+            "Codec::target: within 2% of the f64 reproduction (doc above)",
+            "{} {set}: max degrees at input {}",
+            c.name,
             rt.error.argmax
         );
         if set.starts_with("fibonacci") {
-            assert!(
-                rt.error.mean() <= mean_t * 1.02,
-                "{} {set}: mean {}°",
-                c.name,
-                rt.error.mean()
+            assert_within!(
+                rt.error.mean(),
+                mean_t * 1.02,
+                "Codec::target: within 2% of the f64 reproduction (doc above)",
+                "{} {set}: mean degrees",
+                c.name
             );
         }
         if !c.name.ends_with("fast") {
@@ -66,12 +69,13 @@ fn check(c: &Codec) {
                 inputs.len()
             );
             // Bound: optimality_tolerance_deg (f32 score error + decoder rounding, derived there).
-            assert!(
-                o.worst_excess_deg <= optimality_tolerance_deg(),
-                "{} {set}: input {} is {}° worse than its best neighbour",
+            assert_within!(
+                o.worst_excess_deg,
+                optimality_tolerance_deg(),
+                "sweep::normal::optimality_tolerance_deg: f32 score error + decoder rounding",
+                "{} {set}: input {}, degrees worse than its best neighbour",
                 c.name,
-                o.argworst,
-                o.worst_excess_deg
+                o.argworst
             );
         }
     }

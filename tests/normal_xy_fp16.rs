@@ -12,6 +12,7 @@ use prepass::sweep::normal::{
     UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, fibonacci_directions,
     killzone_myth, round_trip, stratified_codes32,
 };
+use prepass::{assert_at_least, assert_within, assert_within_abs};
 
 /// Worst case for z ≥ 0: the halves are within δ = 2^-12 of x, y (half an f16 ULP at [0.5, 1);
 /// less below), so `x'² + y'²` is within ε = 2δ(|x| + |y|) + 2δ² ≤ 2^-11·√2 + 2^-23 of `x² + y²`
@@ -41,10 +42,11 @@ fn round_trip_upper_hemisphere_and_the_mirror_below() {
         );
         common::assert_round_trip_matches_twins(set, &rt);
         // Bound: worst_case_upper_deg plus f32 slack (a few 2^-24 rad ≈ 1e-5°).
-        assert!(
-            rt.error_upper.max <= worst_case_upper_deg() + 1e-5,
-            "{set}: {} at {}",
+        assert_within!(
             rt.error_upper.max,
+            worst_case_upper_deg() + 1e-5,
+            "worst_case_upper_deg() + f32 slack, a few 2^-24 rad ≈ 1e-5°",
+            "{set}: z >= 0 max degrees at input {}",
             rt.error_upper.argmax
         );
         // Below z = 0 the decode is the mirror image: error 2·asin(|z|), checked per input
@@ -60,9 +62,12 @@ fn round_trip_upper_hemisphere_and_the_mirror_below() {
                 v.map(f64::from),
                 rt.decoded[i].map(f64::from),
             );
-            assert!(
-                (got - want).abs() <= worst_case_upper_deg() + 1e-5,
-                "{v:?}: {got} vs {want}"
+            assert_within_abs!(
+                got,
+                want,
+                worst_case_upper_deg() + 1e-5,
+                "comment above: the mirror's 2·asin(|z|), moved ≤ the upper bound + 1e-5°",
+                "{v:?}: degrees"
             );
         }
     }
@@ -83,14 +88,30 @@ fn perspective_myth_negative_z_is_visible_and_decodes_mirrored() {
         // within one point spacing s = √(4π/N) (N = sphere points) of a sample, so the fraction
         // is off by at most the boundary band's share, 2s·(2π)/(2π) = 2s.
         let s = (4.0 * std::f64::consts::PI / f64::from(2 * normals)).sqrt();
-        assert!((m.visible_fraction_negative_z - m.visible_fraction_analytic).abs() <= 2.0 * s);
+        assert_within_abs!(
+            m.visible_fraction_negative_z,
+            m.visible_fraction_analytic,
+            2.0 * s,
+            "comment above: the boundary band's share, 2s (s the Fibonacci spacing)",
+            "fov {fov}°: visible fraction with z < 0"
+        );
         // The worst sampled error approaches 2θ at the corner pixel (θ its angle off axis),
         // never exceeds the screen corner's 2θ by more than the f16 bound, and is at least the
         // corner pixel centre's 2θ less the sample spacing (twice: the mirror doubles it).
         let t = (fov / 2.0f64).to_radians().tan();
         let corner_px = (2f64.sqrt() * t * 15.0 / 16.0).atan().to_degrees();
-        assert!(m.worst_error_deg <= m.worst_error_analytic_deg + worst_case_upper_deg());
-        assert!(m.worst_error_deg >= 2.0 * corner_px - 2.0 * s.to_degrees());
+        assert_within!(
+            m.worst_error_deg,
+            m.worst_error_analytic_deg + worst_case_upper_deg(),
+            "comment above: the screen corner's 2θ + worst_case_upper_deg",
+            "fov {fov}°: worst sampled error, degrees"
+        );
+        assert_at_least!(
+            m.worst_error_deg,
+            2.0 * corner_px - 2.0 * s.to_degrees(),
+            "comment above: the corner pixel's 2θ less twice the sample spacing",
+            "fov {fov}°: worst sampled error, degrees"
+        );
     }
 }
 
@@ -117,10 +138,11 @@ fn stratified_codes_decode_to_unit_vectors() {
     assert_eq!(d.twin.count, 0, "{:?}", d.twin.first);
     // The f64 reference decode of the same half pair: the f32 path's rounding only (sqrt of a
     // value with ≤ 3 roundings, then normalise): ≤ 2^-11 rad is generous and far below an f16 step.
-    assert!(
-        d.max_angle_deg <= 2f64.powi(-11).to_degrees(),
-        "{}",
-        d.max_angle_deg
+    assert_within!(
+        d.max_angle_deg,
+        2f64.powi(-11).to_degrees(),
+        "comment above: ≤ 3 roundings, sqrt and normalise; 2^-11 rad is generous",
+        "xy fp16 stratified: max angle to the f64 decode, degrees"
     );
 }
 

@@ -6,6 +6,7 @@ mod common;
 
 use common::gpu;
 use glam::Vec3;
+use prepass::assert_within;
 use prepass::harness::Arg;
 use prepass::normal::xyz8;
 use prepass::sweep::normal::{
@@ -42,15 +43,18 @@ fn round_trip_meets_target_and_twin_is_bit_identical() {
             "byte 3 must stay zero"
         );
         // Bound: asin(√3/255) plus the f32 input/normalisation slack (a few 2^-24 rad ≈ 1e-5°).
-        assert!(
-            rt.error.max <= worst_case_deg() + 1e-5,
-            "{set}: max {}° at {}",
+        assert_within!(
             rt.error.max,
+            worst_case_deg() + 1e-5,
+            "worst_case_deg(), asin(√3/255), + f32 slack (a few 2^-24 rad ≈ 1e-5°)",
+            "{set}: max degrees at input {}",
             rt.error.argmax
         );
         if set.starts_with("fibonacci") {
             // The rule: no worse than its float64 reproduction by more than 2%.
-            assert!(rt.error.mean() <= mean_t * 1.02 && rt.error.max <= max_t * 1.02);
+            let rule = "Codec::target: within 2% of the f64 reproduction (comment above)";
+            assert_within!(rt.error.mean(), mean_t * 1.02, rule, "{set}: mean degrees");
+            assert_within!(rt.error.max, max_t * 1.02, rule, "{set}: max degrees");
         }
     }
 }

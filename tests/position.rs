@@ -6,6 +6,7 @@ mod common;
 
 use common::gpu;
 use glam::{Mat3, Vec2, Vec3};
+use prepass::assert_within;
 use prepass::harness::Arg;
 use prepass::linear_depth::exact;
 use prepass::position as pos;
@@ -92,9 +93,11 @@ fn view_position_within_view_z_error_plus_two_roundings_over_screen_and_fov() {
                 let got = p.as_vec3()[k][c];
                 let e = relative_error(f64::from(got), *exact_c);
                 let bound = e_vz + if c < 2 { 2.0 * U + 2f64.powi(-44) } else { 0.0 };
-                assert!(
-                    e <= bound,
-                    "fov {fov_deg}°, pixel {k}, component {c}: rel err {e:e} > {bound:e}"
+                assert_within!(
+                    e,
+                    bound,
+                    "derived above: vz's own error + two rounded products (2·2^-24) + 2^-44",
+                    "fov {fov_deg}°, pixel {k}, component {c}: relative error"
                 );
                 worst = worst.max(e - e_vz);
                 // Right-handed: the same x, y; z = −vz exactly.
@@ -207,13 +210,17 @@ fn world_rebuild_error_grows_with_camera_distance_and_camera_relative_does_not()
                 let world_bound = gamma(5.0) * b + U * (exact_w.abs() + gamma(5.0) * b);
                 let ew = (f64::from(world.as_vec3()[k][c]) - exact_w).abs();
                 let er = (f64::from(rel.as_vec3()[k][c]) - offset).abs();
-                assert!(
-                    ew <= world_bound,
-                    "world, cam {dist}, pixel {k}, c {c}: {ew:e} > {world_bound:e}"
+                assert_within!(
+                    ew,
+                    world_bound,
+                    "derived above: γ5·Σ|m r|·vz + the camera addition's rounding",
+                    "world, cam {dist}, pixel {k}, c {c}: absolute error"
                 );
-                assert!(
-                    er <= rel_bound,
-                    "relative, cam {dist}, pixel {k}, c {c}: {er:e} > {rel_bound:e}"
+                assert_within!(
+                    er,
+                    rel_bound,
+                    "derived above: γ4·Σ|m r|·vz (3-term dot product, then · vz)",
+                    "relative, cam {dist}, pixel {k}, c {c}: absolute error"
                 );
                 world_max = world_max.max(ew);
                 rel_max = rel_max.max(er);
@@ -403,7 +410,12 @@ fn rasteriser_interpolates_corner_rays_to_each_pixels_ray() {
             let want = pos::frustum_ray(ndc, tan);
             let err = (got - want).abs().max_element();
             worst = worst.max(err);
-            assert!(err <= step / 16.0, "pixel ({x}, {y}): {got} vs {want}");
+            assert_within!(
+                err,
+                step / 16.0,
+                "requirement above: 1/16 of the ray step, the ray picks out its own pixel",
+                "pixel ({x}, {y}): {got} vs {want}"
+            );
         }
     }
     eprintln!(
@@ -450,9 +462,11 @@ fn view_position_within_view_z_error_plus_two_roundings_under_emulation() {
                 for (c, exact_c) in exact_p.iter().enumerate() {
                     let e = relative_error(f64::from(p.as_vec3()[k][c]), *exact_c);
                     let bound = e_vz + if c < 2 { 4.0 * U + 2f64.powi(-42) } else { 0.0 };
-                    assert!(
-                        e <= bound,
-                        "{policy}, fov {fov_deg}°, pixel {k}, component {c}: rel err {e:e} > {bound:e} (view z's own {e_vz:e} + two either-neighbour products, 4·2^-24)"
+                    assert_within!(
+                        e,
+                        bound,
+                        "view z's own error + two either-neighbour products, 4·2^-24, + 2^-42",
+                        "{policy}, fov {fov_deg}°, pixel {k}, component {c}: relative error (vz's own {e_vz:e})"
                     );
                     worst = worst.max(e - e_vz);
                 }

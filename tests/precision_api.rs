@@ -13,6 +13,7 @@ use prepass::precision::check::{
 use prepass::precision::metrics::{relative_error, ulp_error};
 use prepass::precision::proptest::prelude::*;
 use prepass::precision::strategies::{depth24_code, near_far};
+use prepass::{assert_at_least, assert_within};
 
 /// Divides by 2^24 where `d/(2^24 − 1)` was meant: the off-by-one every depth decoder risks.
 const WRONG_DEPTH: &str = "fn depth_unit_wrong(d: u32) -> f32 { return f32(d) / 16777216.0; }";
@@ -66,11 +67,10 @@ fn off_by_one_depth_is_found_and_shrunk_to_the_smallest_failing_code() {
         .find(|&d| ulps(&sweep.as_f32()[d as usize], &exact_depth(&d)) > CORRECTLY_ROUNDED)
         .expect("the sweep finds a failing code");
 
-    assert!(fail.failing > 0 && fail.worst.error > CORRECTLY_ROUNDED);
-    assert!(
-        fail.shrunk.error > CORRECTLY_ROUNDED,
-        "shrunk input must still fail"
-    );
+    assert!(fail.failing > 0);
+    let wrong = "CORRECTLY_ROUNDED: the wrong function exceeds half an ULP (derivation above)";
+    assert_at_least!(fail.worst.error, > CORRECTLY_ROUNDED, wrong, "the worst input must fail");
+    assert_at_least!(fail.shrunk.error, > CORRECTLY_ROUNDED, wrong, "shrunk input must still fail");
     assert_eq!(
         fail.shrunk.input, smallest,
         "shrunk to {} (worst was {})",
@@ -144,7 +144,13 @@ fn a_correct_function_passes_with_its_documented_bound() {
         .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(passed.cases, u64::from(CheckConfig::default().cases));
     assert_eq!(passed.stats.nan_count, 0);
-    assert!(passed.stats.max <= CORRECTLY_ROUNDED);
+    assert_within!(
+        passed.stats.max,
+        CORRECTLY_ROUNDED,
+        "CORRECTLY_ROUNDED: hyperbolic_depth_from_depth24 is correctly rounded (depth24 docs)",
+        "ULP over {} cases",
+        passed.cases
+    );
 }
 
 #[test]
@@ -189,5 +195,11 @@ fn a_user_input_struct_runs_over_stiff_and_infinite_planes() {
         .run(&planes, exact, rel, bound)
         .unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(passed.stats.nan_count, 0);
-    assert!(passed.stats.max <= bound);
+    assert_within!(
+        passed.stats.max,
+        bound,
+        "derived above: WGSL's 2.5 ULP `/`, ≤ 2.5·2^-23 relative",
+        "far / near, relative error over {} cases",
+        passed.cases
+    );
 }

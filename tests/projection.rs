@@ -10,6 +10,7 @@ use prepass::harness::Arg;
 use prepass::linear_depth::{self as ld, exact};
 use prepass::precision::metrics::{ulp_distance, ulp_error};
 use prepass::projection::{DepthConvention, Projection};
+use prepass::{assert_within, assert_within_abs};
 use proptest::prelude::*;
 
 /// Stiff projections: near log-uniform in [1e-4, 10], far/near log-uniform in [10, 1e9] or ∞.
@@ -98,7 +99,8 @@ proptest! {
         let here = exact_of(code);
         let width = (here - lo).abs().max((hi - here).abs());
         let slack = 4.0 * 2f64.powi(-23) * got.abs();
-        prop_assert!((got - vz).abs() <= width + slack,
+        assert_within_abs!(got, vz, width + slack,
+            "comment above: one code's width + the twin's 4·2^-23 relative",
             "vz {} → code {} → {} (width {})", vz, code, got, width);
     }
 
@@ -117,11 +119,11 @@ proptest! {
         for (k, &got) in out.as_f32().iter().enumerate() {
             let twin = ld::view_z_from_depth24(code[k], near[k], far[k]);
             // Within 1 ULP of the twin (the bound; only fusion could separate them)…
-            prop_assert!(ulp_distance(got, twin).unwrap() <= 1, "{} vs twin {}", got, twin);
+            assert_within!(ulp_distance(got, twin).unwrap(), 1, "twins within 1 ULP: only fusion separates them", "{} vs twin {}", got, twin);
             // …and within 4 ULP of the exact distance, as over the grid.
             let e = exact::view_z_from_depth24(code[k], near[k], far[k]);
             if e.is_finite() {
-                prop_assert!(ulp_error(got, e) <= 4.0, "code {} near {} far {}: {}", code[k], near[k], far[k], ulp_error(got, e));
+                assert_within!(ulp_error(got, e), 4.0, "comment above: 4 ULP of the exact distance, as over the grid", "code {} near {} far {}", code[k], near[k], far[k]);
             } else {
                 prop_assert_eq!(got, f32::INFINITY);
             }

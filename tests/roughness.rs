@@ -11,6 +11,7 @@ use prepass::sweep::roughness::{
     roundtrip_all_powers,
 };
 use prepass::wgsl::ROUGHNESS;
+use prepass::{assert_at_least, assert_within, assert_within_abs};
 
 const BASELINES: &str = include_str!("baselines/roughness.wgsl");
 const U: f64 = 1.0 / 16_777_216.0; // 2^-24, unit roundoff of f32
@@ -29,11 +30,20 @@ fn every_power_up_to_8192_round_trips_at_the_quantisation_limit() {
     // so the sweep attains at least limit − 2^-23·(1 + limit) − 2^-24·(1 + limit). Both sides
     // are within 2e-7 of the limit, well inside the issue's 1e-6.
     let excess = r.relative.max - limit;
-    assert!(
-        excess.abs() <= 3.0 * U * (1.0 + limit) && excess.abs() <= 1e-6,
-        "max relative error {} vs limit {limit} (at power {})",
+    let at = f32::from_bits(ONE_BITS + r.relative.argmax as u32);
+    assert_within_abs!(
         r.relative.max,
-        f32::from_bits(ONE_BITS + r.relative.argmax as u32)
+        limit,
+        3.0 * U * (1.0 + limit),
+        "derivation above: 2^-23 + 2^-24 of (1 + limit) below, 2^-24·(1 + limit) above",
+        "max relative error vs quantisation_limit (at power {at})"
+    );
+    assert_within_abs!(
+        r.relative.max,
+        limit,
+        1e-6,
+        "the issue's 1e-6 (derivation above: both sides within 2e-7)",
+        "max relative error vs quantisation_limit (at power {at})"
     );
     assert_eq!(r.relative.nan_count, 0);
     // Constant relative precision: no bin exceeds the limit, and every bin that holds a code
@@ -43,11 +53,18 @@ fn every_power_up_to_8192_round_trips_at_the_quantisation_limit() {
     for (b, &(max, _)) in r.profile.iter().enumerate() {
         let (lo, hi) = (profile_bin_start(b), profile_bin_start(b + 1));
         let t = |p: f64| 255.0 * p.log2() / 13.0 - 0.5;
-        assert!(max <= limit + 3.0 * U, "bin {b} (from p = {lo}): max {max}");
+        assert_within!(
+            max,
+            limit + 3.0 * U,
+            "no bin exceeds the limit (+ 3u, derivation above)",
+            "bin {b} (from p = {lo})"
+        );
         if t(hi).floor() > t(lo).floor() && t(hi).fract() > 1e-3 {
-            assert!(
-                max >= limit - 2e-7 - 3.0 * U,
-                "bin {b} (from p = {lo}): max {max}"
+            assert_at_least!(
+                max,
+                limit - 2e-7 - 3.0 * U,
+                "a bin with a code boundary reaches the limit (within 2e-7 + 3u, derivation above)",
+                "bin {b} (from p = {lo})"
             );
             with_boundary += 1;
         }
@@ -79,10 +96,11 @@ fn every_code_decodes_correctly_rounded_for_power_of_two_ranges() {
         let d = decode_all_codes(gpu(), max).unwrap();
         // Bound: ≤ 0.5 ULP. The table entry is correctly rounded and the exponent add is exact;
         // the f64 reference is within ~1e-15 relative (≤ 1e-7 ULP), hence the 1e-6 slack.
-        assert!(
-            d.ulps.max <= 0.5 + 1e-6,
-            "max {max}: {} ULP at code {}",
+        assert_within!(
             d.ulps.max,
+            0.5 + 1e-6,
+            "comment above: correctly rounded table entry, exact exponent add; 1e-6 f64 slack",
+            "max {max}: ULP at code {}",
             d.ulps.argmax
         );
         assert_eq!(d.ulps.nan_count, 0);
@@ -125,7 +143,13 @@ fn linear_8bit_baselines_are_measured_beside_it() {
             // relative error of ≈ 16.06/17.06 = 0.9414.
             let half = 8191.0 / 510.0;
             let want = half / (1.0 + half);
-            assert!((r.relative.max - want).abs() < 1e-3, "{}", r.relative.max);
+            assert_within_abs!(
+                r.relative.max,
+                want,
+                < 1e-3,
+                "comment above: half a step (8191/510) lost just below 17.06",
+                "{enc}: max relative error"
+            );
         }
     }
 }
@@ -191,7 +215,12 @@ fn general_ranges_stay_within_their_derived_bound() {
                 value_diff += 1;
             }
         }
-        assert!(worst <= bound, "max {max}: {worst} > {bound}");
+        assert_within!(
+            worst,
+            bound,
+            "general_range_bound() (derivation in its doc)",
+            "max {max}: relative error"
+        );
         // Every code's decoded value against the exact max^(k/255): within the decode part of
         // the bound above.
         let d = decode_all_codes(gpu(), max).unwrap();
@@ -204,10 +233,11 @@ fn general_ranges_stay_within_their_derived_bound() {
                 (f64::from(v) - e).abs() / e
             })
             .fold(0.0, f64::max);
-        assert!(
-            dec_rel <= dec + U,
-            "max {max}: decode {dec_rel} > {}",
-            dec + U
+        assert_within!(
+            dec_rel,
+            dec + U,
+            "general_range_decode_bound() + u (derivation in its doc)",
+            "max {max}: decode relative error"
         );
         eprintln!(
             "general range {max}: decode of every code max {:.2} ULP ({dec_rel:.2e} relative, \
@@ -215,9 +245,11 @@ fn general_ranges_stay_within_their_derived_bound() {
             d.ulps.max,
             dec + U
         );
-        assert!(
-            worst >= limit * 0.99,
-            "max {max}: sweep too sparse ({worst})"
+        assert_at_least!(
+            worst,
+            limit * 0.99,
+            "a dense enough sweep reaches the quantisation limit (within 1%)",
+            "max {max}: sweep too sparse"
         );
         eprintln!(
             "general range {max}: {} sampled powers, max rel {worst:.7} (limit {limit:.7}, bound \
@@ -299,7 +331,13 @@ fn bad_input_gives_the_documented_answers_on_both_sides() {
         let twin = roughness::decode_log_roughness(k, m);
         if matches!(roughness::range(m), roughness::Range::General(_)) {
             // Transcendentals: the twin may differ by the exp2/log2 allowance only.
-            assert!((f64::from(v) / f64::from(twin) - 1.0).abs() < 1e-5);
+            assert_within_abs!(
+                f64::from(v) / f64::from(twin),
+                1.0,
+                < 1e-5,
+                "comment above: the exp2/log2 allowance",
+                "code {k} max {m}: adapter / twin"
+            );
         } else {
             assert_eq!(v.to_bits(), twin.to_bits(), "code {k} max {m}");
         }
@@ -384,10 +422,11 @@ fn every_range_keeps_its_promise_under_emulation() {
                 );
             } else {
                 let bound = general_range_bound(max);
-                assert!(
-                    worst <= bound,
-                    "{policy} max {max}: {worst} beyond the derived bound {bound} (margin {:e}; general_range_bound)",
-                    bound - worst
+                assert_within!(
+                    worst,
+                    bound,
+                    "general_range_bound() (derivation in its doc)",
+                    "{policy} max {max}: relative error"
                 );
             }
         }

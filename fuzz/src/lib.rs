@@ -19,6 +19,7 @@ use prepass::depth24::{self, DEPTH24_MAX};
 use prepass::linear_depth as ld;
 use prepass::precision::metrics::ulp_error;
 use prepass::projection::{DepthConvention, Projection};
+use prepass::{assert_within, assert_within_abs};
 
 /// The bytes of one fuzz input, read front to back; reads past the end give zeros, so every
 /// input is valid for every entry.
@@ -80,12 +81,20 @@ pub fn dispatch(table: &[Entry], data: &[u8]) {
 /// otherwise a byte nearest `255·clamp(c, 0, 1)`. The function rounds the f32 product, which is
 /// within half an f32 ULP below 256 (2^-17) of the exact one, so a product just above a half
 /// may round to a tie and go to the even byte (found by this target: 0.99803925 → 254).
-fn channel_ok(c: f32, byte: u32) -> bool {
+#[track_caller]
+fn assert_channel(c: f32, byte: u32, context: std::fmt::Arguments<'_>) {
     if c.is_nan() {
-        return byte == 0;
+        assert_eq!(byte, 0, "{context}: a NaN channel gives byte 0");
+        return;
     }
     let x = f64::from(c.clamp(0.0, 1.0)) * 255.0;
-    (f64::from(byte) - x).abs() <= 0.5 + 2f64.powi(-17)
+    assert_within_abs!(
+        f64::from(byte),
+        x,
+        0.5 + 2f64.powi(-17),
+        "assert_channel: half a byte + the f32 product's half ULP below 256 (2^-17)",
+        "{context}"
+    );
 }
 
 /// Decoders: any bytes in, a valid result out.
@@ -98,9 +107,10 @@ pub const DECODERS: &[Entry] = &[
             assert!(d <= DEPTH24_MAX, "{rgb:?} → {d:#x}");
             let bytes = [d >> 16, (d >> 8) & 0xff, d & 0xff];
             for (c, b) in rgb.to_array().into_iter().zip(bytes) {
-                assert!(
-                    channel_ok(c, b),
-                    "{rgb:?} → {d:#x}: channel {c:?} gave byte {b}"
+                assert_channel(
+                    c,
+                    b,
+                    format_args!("{rgb:?} → {d:#x}: channel {c:?} gave byte {b}"),
                 );
             }
         },
@@ -171,7 +181,13 @@ pub const ENCODERS: &[Entry] = &[
                     );
                     // x·(2^24 − 1) is exact in f64 (24 × 24 significand bits).
                     let t = f64::from(x) * f64::from(DEPTH24_MAX);
-                    assert!((f64::from(c) - t).abs() <= 0.5, "{x:?} → {c:#x}");
+                    assert_within_abs!(
+                        f64::from(c),
+                        t,
+                        0.5,
+                        "the nearest code: half a code of the exact x·(2^24 − 1)",
+                        "{x:?} → {c:#x}"
+                    );
                 }
             }
         },
@@ -187,12 +203,15 @@ pub const ENCODERS: &[Entry] = &[
 ];
 
 /// The documented error of a linear-depth twin against its exact f64 distance: within `bound`
-/// ULP, or `+Inf` exactly where the exact distance is beyond f32's range.
-fn distance_ok(got: f32, exact: f64, bound: f64) -> bool {
+/// ULP (`from` names the bound), or `+Inf` exactly where the exact distance is beyond f32's
+/// range.
+#[track_caller]
+fn assert_distance(got: f32, exact: f64, bound: f64, from: &str, context: std::fmt::Arguments<'_>) {
     if (exact as f32).is_infinite() {
-        return got == f32::INFINITY;
+        assert_eq!(got, f32::INFINITY, "{context}: beyond f32's range");
+        return;
     }
-    ulp_error(got, exact) <= bound
+    assert_within!(ulp_error(got, exact), bound, from, "{context}");
 }
 
 /// Rust twins against their exact references, within the documented bound.
@@ -203,8 +222,12 @@ pub const DIFFERENTIAL: &[Entry] = &[
             let d = i.u32();
             let got = depth24::hyperbolic_depth_from_depth24(d);
             let err = ulp_error(got, depth24::exact::hyperbolic_depth(d));
-            // Documented: correctly rounded, ≤ 0.5 ULP.
-            assert!(err <= 0.5, "{d:#x} → {got:?}: {err} ULP");
+            assert_within!(
+                err,
+                0.5,
+                "documented: correctly rounded, ≤ 0.5 ULP",
+                "{d:#x} → {got:?}"
+            );
         },
     },
     Entry {
@@ -229,9 +252,12 @@ pub const DIFFERENTIAL: &[Entry] = &[
             let Ok(p) = projection(i) else { return };
             let got = ld::view_z_from_depth24(d, p.near(), p.far());
             let e = ld::exact::view_z_from_depth24(d, p.near(), p.far());
-            assert!(
-                distance_ok(got, e, ld::bounds::DEPTH24_CORRECTLY_ROUNDED),
-                "{d:#x} {p:?}: {got} vs {e}"
+            assert_distance(
+                got,
+                e,
+                ld::bounds::DEPTH24_CORRECTLY_ROUNDED,
+                "linear_depth::bounds::DEPTH24_CORRECTLY_ROUNDED",
+                format_args!("{d:#x} {p:?}: {got} vs {e}"),
             );
         },
     },
@@ -254,9 +280,12 @@ pub const DIFFERENTIAL: &[Entry] = &[
                     ld::exact::view_z_from_reversed_depth(z, n, f),
                 ),
             };
-            assert!(
-                distance_ok(got, e, ld::bounds::FLOAT_CORRECTLY_ROUNDED),
-                "{z:?} {p:?}: {got} vs {e}"
+            assert_distance(
+                got,
+                e,
+                ld::bounds::FLOAT_CORRECTLY_ROUNDED,
+                "linear_depth::bounds::FLOAT_CORRECTLY_ROUNDED",
+                format_args!("{z:?} {p:?}: {got} vs {e}"),
             );
         },
     },

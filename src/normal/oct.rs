@@ -252,7 +252,12 @@ mod tests {
         // Poles and axes come back through the fast encoder exactly up to the code grid.
         for v in [Vec3::X, Vec3::NEG_X, Vec3::Y, Vec3::NEG_Z] {
             let got = decode_normal_oct32(encode_normal_oct32(v));
-            assert!(got.angle_between(v) < 1e-4, "{v} -> {got}");
+            crate::assert_within!(
+                got.angle_between(v),
+                < 1e-4_f32,
+                "comment above: poles and axes exact up to the code grid (literal 1e-4 rad)",
+                "{v} -> {got}"
+            );
         }
     }
 

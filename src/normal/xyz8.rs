@@ -95,6 +95,12 @@ mod tests {
             encode_normal_xyz8(Vec3::NEG_Y)
         );
         assert_eq!(decode_normal_xyz8(0xab00_0000 | z), decode_normal_xyz8(z));
-        assert!((decode_normal_xyz8(z).length() - 1.0).abs() < 1e-6);
+        crate::assert_within_abs!(
+            decode_normal_xyz8(z).length(),
+            1.0,
+            < 1e-6_f32,
+            "literal: 1e-6 ≈ 17u, a few f32 roundings of the normalise",
+            "code {z:#x}"
+        );
     }
 }

@@ -98,6 +98,12 @@ mod tests {
             Some(3)
         );
         let o = unorm8_channel(128, ChannelError::Offset(0.45), true);
-        assert!((f64::from(o) * 255.0 - 127.55).abs() < 1e-4);
+        crate::assert_within_abs!(
+            f64::from(o) * 255.0,
+            127.55,
+            < 1e-4,
+            "literal: the f32 channel's rounding is 2^-24·0.5·255 ≈ 8e-6 codes",
+            "128 − 0.45 in codes"
+        );
     }
 }

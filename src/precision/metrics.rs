@@ -301,9 +301,21 @@ mod tests {
     fn angles_are_accurate_at_both_ends() {
         let tiny = 1e-9f64;
         let a = angle_degrees([1.0, 0.0, 0.0], [1.0, tiny, 0.0]);
-        assert!((a - tiny.atan().to_degrees()).abs() < 1e-22);
+        crate::assert_within_abs!(
+            a,
+            tiny.atan().to_degrees(),
+            < 1e-22,
+            "literal: ≈ 15 f64 ULPs of 5.7e-8°, no cancellation at small angles",
+            "angle of 1e-9"
+        );
         let b = angle_degrees([1.0, 0.0, 0.0], [-1.0, tiny, 0.0]);
-        assert!((b - (180.0 - tiny.atan().to_degrees())).abs() < 1e-12);
+        crate::assert_within_abs!(
+            b,
+            180.0 - tiny.atan().to_degrees(),
+            < 1e-12,
+            "literal: ≈ 35 f64 ULPs of 180°, no cancellation near 180°",
+            "angle of 180° less 1e-9"
+        );
         assert!(angle_degrees([0.0; 3], [1.0, 0.0, 0.0]).is_nan());
         // Lengths whose squares leave f64's range are still directions.
         assert_eq!(angle_degrees([1e-320, 0.0, 0.0], [0.0, 1e300, 0.0]), 90.0);
@@ -318,7 +330,13 @@ mod tests {
         s.add(2, f64::NAN);
         assert_eq!((s.max, s.argmax, s.count, s.nan_count), (3.0, 1, 2, 1));
         assert_eq!(s.mean(), 2.0);
-        assert!((s.rms() - 5f64.sqrt()).abs() < 1e-15);
+        crate::assert_within_abs!(
+            s.rms(),
+            5f64.sqrt(),
+            < 1e-15,
+            "literal: ≈ 2 f64 ULPs of √5 (the mean square and its sqrt round)",
+            "rms of 1 and 3"
+        );
         let mut t = ErrorStats::default();
         t.add(7, 4.0);
         s.merge(&t);

@@ -344,9 +344,12 @@ mod tests {
         for v in &vs {
             // Each lane correctly rounded from the exact unit vector: |len − 1| ≤ 3·2^-24.
             let len = v.as_dvec3().length();
-            assert!(
-                (len - 1.0).abs() <= 3.0 * 2f64.powi(-24),
-                "{v} has length {len}"
+            crate::assert_within_abs!(
+                len,
+                1.0,
+                3.0 * 2f64.powi(-24),
+                "comment above: each lane correctly rounded, |len − 1| ≤ 3·2^-24",
+                "{v}"
             );
         }
         assert!(

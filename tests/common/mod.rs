@@ -136,9 +136,11 @@ pub fn assert_decoder(name: &str, d: &prepass::sweep::normal::DecoderCheck) {
     );
     // Bound: only the per-component rounding of the final divide turns the direction:
     // ≤ √2·2^-24 rad (plus the f64 angle's own 1e-15).
-    assert!(
-        d.max_angle_deg <= (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12,
-        "{name}"
+    prepass::assert_within!(
+        d.max_angle_deg,
+        (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12,
+        "comment above: the final divide's rounding, √2·2^-24 rad, + 1e-12 for the f64 angle",
+        "{name}: max angle to the exact direction, degrees"
     );
     assert_eq!(
         d.twin.count, 0,
