@@ -118,4 +118,3 @@ pub mod bounds {
     /// `2^-42` for the second-order term.
     pub const XY_CONFORMING: f64 = 4.0 * U + 1.0 / 4_398_046_511_104.0;
 }
-

@@ -92,7 +92,12 @@ fn view_position_within_view_z_error_plus_two_roundings_over_screen_and_fov() {
             for (c, exact_c) in exact_p.iter().enumerate() {
                 let got = p.as_vec3()[k][c];
                 let e = relative_error(f64::from(got), *exact_c);
-                let bound = e_vz + if c < 2 { 2.0 * U + 2f64.powi(-44) } else { 0.0 };
+                let bound = e_vz
+                    + if c < 2 {
+                        pos::bounds::XY_CORRECTLY_ROUNDED
+                    } else {
+                        0.0
+                    };
                 assert_within!(
                     e,
                     bound,
@@ -461,7 +466,12 @@ fn view_position_within_view_z_error_plus_two_roundings_under_emulation() {
                 let exact_p = exact_position(ndc[k], tan, vz_exact);
                 for (c, exact_c) in exact_p.iter().enumerate() {
                     let e = relative_error(f64::from(p.as_vec3()[k][c]), *exact_c);
-                    let bound = e_vz + if c < 2 { 4.0 * U + 2f64.powi(-42) } else { 0.0 };
+                    let bound = e_vz
+                        + if c < 2 {
+                            pos::bounds::XY_CONFORMING
+                        } else {
+                            0.0
+                        };
                     assert_within!(
                         e,
                         bound,

@@ -155,28 +155,6 @@ fn linear_8bit_baselines_are_measured_beside_it() {
 }
 
 /// Powers spread over `[1, max]` for the non-power-of-two ranges: every 61st f32 pattern.
-/// The decode part of [`general_range_bound`], relative.
-/// decode: x = k·log2(max)/255 off by ≤ (6 + 2 + 5)u·x (log2 3 ULP, × either neighbour, / 2.5
-/// ULP; u = 2^-24, one ULP ≤ 2u relative), adding 13u·x·ln 2 relative; exp2 adds (3 + 2x) ULP
-/// ≤ (3 + 2x)·2u. With x ≤ L = log2(max).
-fn general_range_decode_bound(max: f32) -> f64 {
-    let l = f64::from(max).log2();
-    13.0 * U * l * std::f64::consts::LN_2 + (3.0 + 2.0 * l) * 2.0 * U
-}
-
-/// The relative round-trip bound of a general (not power-of-two) range on every conforming
-/// adapter (WGSL accuracy rules): the quantisation limit, plus
-/// encode: t = 255·log2(p)/log2(max); each log2 within 3 ULP (6u relative), × either neighbour
-/// (2u), / 2.5 ULP (5u): t off by ≤ (6 + 6 + 2 + 5)u·t ≤ 19u·255 codes; a power within that of
-/// a boundary may take the other code, which costs at most 19u·255·(L/255)·ln 2 more; plus the
-/// decode part and u for the final comparison in f64.
-fn general_range_bound(max: f32) -> f64 {
-    let l = f64::from(max).log2();
-    let limit = quantisation_limit(f64::from(max));
-    let enc = 19.0 * U * l * std::f64::consts::LN_2;
-    limit + enc + general_range_decode_bound(max) + U
-}
-
 fn sampled_powers(max: f32) -> Vec<f32> {
     (ONE_BITS..=max.to_bits())
         .step_by(61)
@@ -189,8 +167,8 @@ fn sampled_powers(max: f32) -> Vec<f32> {
 fn general_ranges_stay_within_their_derived_bound() {
     for max in [1000.0f32, 100.5, 3.0e6] {
         let limit = quantisation_limit(f64::from(max));
-        let dec = general_range_decode_bound(max);
-        let bound = general_range_bound(max);
+        let dec = roughness::bounds::general_range_decode(max);
+        let bound = roughness::bounds::general_range(max);
         let ps = sampled_powers(max);
         let out = gpu()
             .kernel(
@@ -218,7 +196,7 @@ fn general_ranges_stay_within_their_derived_bound() {
         assert_within!(
             worst,
             bound,
-            "general_range_bound() (derivation in its doc)",
+            "roughness::bounds::general_range (derivation in its rustdoc)",
             "max {max}: relative error"
         );
         // Every code's decoded value against the exact max^(k/255): within the decode part of
@@ -236,7 +214,7 @@ fn general_ranges_stay_within_their_derived_bound() {
         assert_within!(
             dec_rel,
             dec + U,
-            "general_range_decode_bound() + u (derivation in its doc)",
+            "roughness::bounds::general_range_decode + u (derivation in its rustdoc)",
             "max {max}: decode relative error"
         );
         eprintln!(
@@ -421,11 +399,11 @@ fn every_range_keeps_its_promise_under_emulation() {
                     "{policy} max {max}: the table decoder differs from the twin under emulation"
                 );
             } else {
-                let bound = general_range_bound(max);
+                let bound = roughness::bounds::general_range(max);
                 assert_within!(
                     worst,
                     bound,
-                    "general_range_bound() (derivation in its doc)",
+                    "roughness::bounds::general_range (derivation in its rustdoc)",
                     "{policy} max {max}: relative error"
                 );
             }
