@@ -85,8 +85,14 @@ struct Run<'g> {
 
 impl Run<'_> {
     fn new() -> Self {
+        Self::on(AGGREGATE_LIGHT, &|f| f.to_string())
+    }
+
+    /// The kernels of `source`, each function looked up through `name` (an emulated module
+    /// respells some names).
+    fn on(source: &str, name: &dyn Fn(&str) -> String) -> Self {
         let g = gpu();
-        let k = |f| g.kernel(AGGREGATE_LIGHT, f).unwrap();
+        let k = |f: &str| g.kernel(source, &name(f)).unwrap();
         Run {
             acc: k("aggregate_light_accumulate"),
             dir: k("aggregate_light_direction"),
@@ -472,4 +478,42 @@ fn interpolated_aggregate_light_is_measured_between_vertices() {
         rel.mean(),
         rel.rms()
     );
+}
+
+/// The God of War III identity on the emulated worst conforming adapter (every policy): the
+/// same light sets, within twice the derived budget. Every term of `budget` is either a rounding
+/// of `+ − ×` (`u` where correctly rounded, at most `2u` on any conforming adapter) or already a
+/// full WGSL allowance (`/` 2.5 ULP, `inverseSqrt` 2 ULP), so doubling it bounds the conforming
+/// error.
+#[test]
+fn the_luminance_identity_holds_on_every_conforming_adapter() {
+    use prepass::conforming::{Emulation, Policy, emulate};
+    let mut runner = TestRunner::deterministic();
+    let strategy = set_strategy();
+    let sets: Vec<Set> = (0..512)
+        .map(|_| strategy.new_tree(&mut runner).unwrap().current())
+        .filter(|s| !s.lights.is_empty())
+        .collect();
+    for policy in Policy::WORST {
+        let e = emulate(AGGREGATE_LIGHT, &Emulation::new(policy)).unwrap();
+        let run = Run::on(&e.source, &|f| e.function_name(f).unwrap().to_string());
+        let got = run.at_vertex(&sets);
+        let mut worst = 0.0f64;
+        for (set, &g) in sets.iter().zip(&got) {
+            let (want, s, r) = exact(set);
+            let b = 2.0 * budget(set, s, r);
+            let err = (f64::from(g) - want).abs();
+            assert_within!(
+                err,
+                b,
+                "2 × budget(): every rounding term doubles on a conforming adapter",
+                "{policy}, {set:?}: {g} vs {want}"
+            );
+            worst = worst.max(err / b);
+        }
+        eprintln!(
+            "emulated {policy}: identity within {worst:.3} of the conforming budget over {} sets",
+            sets.len()
+        );
+    }
 }

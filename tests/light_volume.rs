@@ -434,3 +434,110 @@ fn bad_input_answers_depth_fail_and_the_full_range() {
         3.4e38
     );
 }
+
+/// The safety properties on the emulated worst conforming adapter (every policy): the sphere's
+/// depth bounds (float and 24-bit) contain the window depth of every visible point of its
+/// surface, and a sphere that touches the near-plane rectangle (or holds the eye) is always
+/// sent to depth-fail. A looser range or an extra depth-fail only costs time; these two would
+/// drop light.
+#[test]
+fn bounds_and_stencil_choice_stay_safe_on_every_conforming_adapter() {
+    use prepass::conforming::{EmulatedKernel, Emulation, Policy};
+    let cases = draw(&bounds_case(), 1024);
+    let col =
+        |f: fn(&(f32, f32, f32, f32, u32)) -> f32| -> Vec<f32> { cases.iter().map(f).collect() };
+    let (cz, r, n, f) = (col(|c| c.0), col(|c| c.1), col(|c| c.2), col(|c| c.3));
+    let rev: Vec<u32> = cases.iter().map(|c| c.4).collect();
+    let args = [
+        Arg::column(&cz),
+        Arg::column(&r),
+        Arg::column(&n),
+        Arg::column(&f),
+        Arg::column(&rev),
+    ];
+    let spheres = draw(&sphere_case(), 4096);
+    let centers: Vec<[f32; 3]> = spheres.iter().map(|c| c.0).collect();
+    let radii: Vec<f32> = spheres.iter().map(|c| c.1).collect();
+    let rho: Vec<f32> = spheres
+        .iter()
+        .map(|c| light_volume::light_volume_near_corner_distance(c.2, c.3, c.4))
+        .collect();
+    let mut rng = prepass::sweep::SplitMix(11);
+    for policy in Policy::WORST {
+        let emu = Emulation::new(policy);
+        let kernel = |name: &str| EmulatedKernel::new(gpu(), LIGHT_VOLUME, name, &emu).unwrap();
+        let (bounds, _) = kernel("light_volume_sphere_depth_bounds")
+            .run(&args, cases.len() as u64)
+            .unwrap();
+        let (codes, _) = kernel("light_volume_sphere_depth_bounds24")
+            .run(&args, cases.len() as u64)
+            .unwrap();
+        let mut points = 0u64;
+        for (i, (b, c)) in bounds
+            .as_vec2()
+            .iter()
+            .zip(codes.words().chunks_exact(2))
+            .enumerate()
+        {
+            let (czi, ri, ni, fi) = (
+                f64::from(cz[i]),
+                f64::from(r[i]),
+                f64::from(n[i]),
+                f64::from(f[i]),
+            );
+            // The two poles along the view axis (the range's ends), then random points.
+            for j in 0..34 {
+                let dz = match j {
+                    0 => 1.0,
+                    1 => -1.0,
+                    _ => f64::from(rng.range(-1.0, 1.0)),
+                };
+                let vz = czi + ri * dz;
+                if vz < ni || vz > fi {
+                    continue;
+                }
+                let z = exact::light_volume_window_depth(vz, ni, fi, convention(rev[i]));
+                assert!(
+                    f64::from(b[0]) <= z && z <= f64::from(b[1]),
+                    "{policy}, case {i} {:?}: depth {z} of vz {vz} outside {b:?}",
+                    cases[i]
+                );
+                let code = (z * D24).round() as u32;
+                assert!(
+                    c[0] <= code && code <= c[1],
+                    "{policy}, case {i}: code {code} outside {c:?}"
+                );
+                points += 1;
+            }
+        }
+        let (fail, _) = kernel("light_volume_sphere_needs_depth_fail")
+            .run(
+                &[
+                    Arg::column(&centers),
+                    Arg::column(&radii),
+                    Arg::column(&rho),
+                ],
+                spheres.len() as u64,
+            )
+            .unwrap();
+        let mut touching = 0;
+        for (i, &got) in fail.as_u32().iter().enumerate() {
+            let (c, r, n, tx, ty) = spheres[i];
+            let c64 = c.map(f64::from);
+            let len = (c64[0].powi(2) + c64[1].powi(2) + c64[2].powi(2)).sqrt();
+            if dist_to_near_rect(c64, f64::from(n), f64::from(tx), f64::from(ty)) <= f64::from(r)
+                || len <= f64::from(r)
+            {
+                assert_eq!(
+                    got, 1,
+                    "{policy}, case {i}: {:?} touches the near rectangle but is sent to depth-pass",
+                    spheres[i]
+                );
+                touching += 1;
+            }
+        }
+        eprintln!(
+            "emulated {policy}: {points} surface points inside their bounds; {touching} touching spheres all sent to depth-fail"
+        );
+    }
+}
