@@ -213,19 +213,11 @@ fn exact(set: &Set) -> (f64, f64, f64) {
     (sum, s, dot(x, x).sqrt() / w)
 }
 
-/// Derivation of the absolute budget (u = 2^-24, S = Σ l_i, K = 16 slots):
-/// each L_i from the rounded difference P_i − V (u per component) and the scaled normalisation
-/// (division 2.5 ULP, inverseSqrt 2 ULP, products): |ΔL_i| ≤ 14u; times l_i (u) and summed over
-/// K terms: |ΔX| ≤ (15 + K)u·S. The direction of X is then off by ≤ |ΔX|/|X| + 14u, which moves
-/// (N·L_agg)·|X| by ≤ |ΔX| + 14u·|X| ≤ (29 + K)u·S; the colour sum l_agg = Σ l_i (L_i·L_agg)
-/// adds (K + 20)u·S (dots 3u, L_i and L_agg errors, K sums), and the final products 3u·S.
-/// Per pixel the aggregate position is V + R rounded (u·(|V| + |R|) per component) and
-/// P_agg − V rounds again (u·|R|): the direction to it is off by ≤ 2√3·u·(|V| + 2|R|)/|R|,
-/// times l_agg ≤ S. Total: (2K + 52)u·S + 4u·(|V| + 2|R|)/|R|·S.
+/// `aggregate_light::bounds::identity_absolute` for this set (derivation there).
 fn budget(set: &Set, s: f64, r: f64) -> f64 {
     let v = set.vertex.map(f64::from);
     let vn = dot(v, v).sqrt();
-    (2.0 * SLOTS as f64 + 52.0) * U * s + 4.0 * U * (vn + 2.0 * r) / r * s
+    aggregate_light::bounds::identity_absolute(SLOTS, vn, s, r)
 }
 
 #[test]
@@ -501,12 +493,12 @@ fn the_luminance_identity_holds_on_every_conforming_adapter() {
         let mut worst = 0.0f64;
         for (set, &g) in sets.iter().zip(&got) {
             let (want, s, r) = exact(set);
-            let b = 2.0 * budget(set, s, r);
+            let b = aggregate_light::bounds::CONFORMING_FACTOR * budget(set, s, r);
             let err = (f64::from(g) - want).abs();
             assert_within!(
                 err,
                 b,
-                "2 × budget(): every rounding term doubles on a conforming adapter",
+                "aggregate_light::bounds::identity_absolute × CONFORMING_FACTOR",
                 "{policy}, {set:?}: {g} vs {want}"
             );
             worst = worst.max(err / b);

@@ -15,21 +15,7 @@ use prepass::{assert_within, assert_within_abs};
 
 const U: f64 = 1.0 / 16_777_216.0; // 2^-24
 
-/// Relative error bound of WGSL's `pow(x, y) = exp2(y·log2 x)` as `lpp_pow_cosine` computes it
-/// (x in (0, 1), y ≥ 0), first order, from the spec's allowances: log2 within 2^-21 absolute
-/// on [0.5, 2] and 3 ULP (≤ 6u relative) elsewhere; the product rounds (u); an absolute error
-/// Δt in t = y·log2 x becomes ln2·Δt relative after exp2, which itself adds (3 + 2|t|) ULP
-/// (≤ (3 + 2|t|)·2u relative).
-fn pow_bound(x: f64, y: f64) -> f64 {
-    let l = x.log2();
-    let dlog = if (0.5..=2.0).contains(&x) {
-        2f64.powi(-21)
-    } else {
-        6.0 * U * l.abs()
-    };
-    let t = (y * l).abs();
-    std::f64::consts::LN_2 * (y * dlog + t * U) + (3.0 + 2.0 * t) * 2.0 * U
-}
+use prepass::lighting::lpp::bounds::pow_relative as pow_bound;
 
 #[test]
 fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
@@ -50,7 +36,11 @@ fn one_white_light_reconstructs_blinn_phong_on_every_conforming_adapter() {
 /// One white light: Engel's reconstruction against the direct Blinn-Phong value, on the adapter
 /// or (with `emulation`) on the emulated worst conforming adapter.
 fn single_white_light(emulation: Option<prepass::conforming::Emulation>) {
-    let scale = if emulation.is_some() { 2.0 } else { 1.0 };
+    let scale = if emulation.is_some() {
+        lpp::bounds::CONFORMING_FACTOR
+    } else {
+        1.0
+    };
     let src = format!(
         "{LPP}\nfn single(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, p: vec3<f32>) -> vec2<f32> {{\n\
          let light = lpp_blinn_phong_light(normal, to_eye, to_light, vec3<f32>(1.0), p.x, p.y);\n\
@@ -146,7 +136,7 @@ fn single_white_light(emulation: Option<prepass::conforming::Emulation>) {
         assert_within!(
             err,
             budget * dir.abs() + floor,
-            "derivation above: m·(pow_bound + 13u) + pow_bound(r, m) + pow_bound(h, n·m) + 8u relative (×2 on a conforming adapter), + 2^-120",
+            "lighting::lpp::bounds::single_light_relative (× CONFORMING_FACTOR under emulation), + 2^-120",
             "input {i}: reconstructed {rec} vs direct {dir} (N·H {nh}, n {ln}, m {m}), budget {budget}"
         );
         if dir > floor {

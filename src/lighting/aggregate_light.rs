@@ -143,3 +143,31 @@ pub fn aggregate(vertex: Vec3, lights: &[(Vec3, f32, Vec3)]) -> (Vec3, Vec3) {
     });
     (aggregate_light_position(acc, vertex), colour)
 }
+
+/// Error bound of the God of War III luminance identity, kept once: `tests/aggregate_light.rs`
+/// asserts it on the adapter and, multiplied by [`bounds::CONFORMING_FACTOR`], under the
+/// worst-case emulation.
+pub mod bounds {
+    const U: f64 = 1.0 / 16_777_216.0;
+
+    /// Every term of [`identity_absolute`] is a rounding of `+ − ×` (`u` where correctly rounded,
+    /// at most `2u` on any conforming adapter) or a full WGSL allowance (`/` 2.5 ULP,
+    /// `inverseSqrt` 2 ULP): doubling it bounds the conforming error.
+    pub const CONFORMING_FACTOR: f64 = 2.0;
+
+    /// Absolute bound of `|aggregate diffuse − Σ l_i N·L_i|` at the vertex, where `+ − ×` round
+    /// correctly (`u = 2^-24`, `S = Σ l_i`, `K` slots, `|V|` the vertex's distance from the
+    /// origin, `|R|` the aggregate light's distance from the vertex): each `L_i` from the rounded
+    /// difference `P_i − V` (`u` per component) and the scaled normalisation (division 2.5 ULP,
+    /// `inverseSqrt` 2 ULP, products): `|ΔL_i| ≤ 14u`; times `l_i` (`u`) and summed over `K`
+    /// terms: `|ΔX| ≤ (15 + K)u·S`. The direction of `X` is then off by `≤ |ΔX|/|X| + 14u`, which
+    /// moves `(N·L_agg)·|X|` by `≤ |ΔX| + 14u·|X| ≤ (29 + K)u·S`; the colour sum
+    /// `l_agg = Σ l_i (L_i·L_agg)` adds `(K + 20)u·S` (dots `3u`, `L_i` and `L_agg` errors, `K`
+    /// sums), and the final products `3u·S`. Per pixel the aggregate position is `V + R` rounded
+    /// (`u·(|V| + |R|)` per component) and `P_agg − V` rounds again (`u·|R|`): the direction to it
+    /// is off by `≤ 2√3·u·(|V| + 2|R|)/|R|`, times `l_agg ≤ S`. Total:
+    /// `(2K + 52)u·S + 4u·(|V| + 2|R|)/|R|·S`.
+    pub fn identity_absolute(slots: usize, vertex_norm: f64, sum: f64, r: f64) -> f64 {
+        (2.0 * slots as f64 + 52.0) * U * sum + 4.0 * U * (vertex_norm + 2.0 * r) / r * sum
+    }
+}

@@ -274,6 +274,50 @@ pub fn lpp_combine_two_buffers(albedo: Vec3, gloss: Vec3, diffuse: Vec3, specula
         + lpp_clamp_colour(gloss) * lpp_clamp_colour(specular)
 }
 
+/// Error bounds of the light pre-pass maths, kept once: `tests/lpp.rs` asserts them on the
+/// adapter and, multiplied by [`bounds::CONFORMING_FACTOR`], under the worst-case emulation.
+pub mod bounds {
+    const U: f64 = 1.0 / 16_777_216.0;
+
+    /// Every term of the budgets below is either a rounding of `+ − ×` (`u` where correctly
+    /// rounded, at most `2u` on any conforming adapter, which may round to either neighbour) or
+    /// already a full WGSL allowance (`/`, `log2`, `exp2`): doubling a budget bounds the
+    /// conforming error.
+    pub const CONFORMING_FACTOR: f64 = 2.0;
+
+    /// Relative error of WGSL's `pow(x, y) = exp2(y·log2 x)` as `lpp_pow_cosine` computes it
+    /// (`x` in (0, 1), `y ≥ 0`), first order, from the spec's allowances: `log2` within 2^-21
+    /// absolute on [0.5, 2] and 3 ULP (≤ `6u` relative) elsewhere; the product rounds (`u`); an
+    /// absolute error `Δt` in `t = y·log2 x` becomes `ln 2·Δt` relative after `exp2`, which itself
+    /// adds `(3 + 2|t|)` ULP (≤ `(3 + 2|t|)·2u` relative).
+    pub fn pow_relative(x: f64, y: f64) -> f64 {
+        let l = x.log2();
+        let dlog = if (0.5..=2.0).contains(&x) {
+            2f64.powi(-21)
+        } else {
+            6.0 * U * l.abs()
+        };
+        let t = (y * l).abs();
+        std::f64::consts::LN_2 * (y * dlog + t * U) + (3.0 + 2.0 * t) * 2.0 * U
+    }
+
+    /// Relative error of Engel's reconstruction for one white light against the direct
+    /// Blinn-Phong value, where `+ − ×` round correctly (`u = 2^-24`; `N·H` and `N·L·att` are the
+    /// same f32 in both paths): P is `a = d·lum(1,1,1)·(N·H)^n`, the light's `pow` within
+    /// `pow_relative(h, n)`, two products `u` each; C: `lum(rgb)` of `(d, d, d)` within `4u` of
+    /// `d·Σw` (three products, two sums), `lum(c)` in P within `2u` of `Σw`, the division 2.5 ULP
+    /// (`5u`): the ratio is `(N·H)^n·(1 + δ)`, `|δ| ≤ 13u + pow_relative(h, n)`. The material
+    /// exponent `m` multiplies `δ` by `m` and adds its own `pow_relative((N·H)^n, m)`; the final
+    /// product and `lum` add `5u`. The direct value carries `pow_relative(h, n·m)` and `3u`.
+    pub fn single_light_relative(n_dot_h: f64, light_power: f64, material_power: f64) -> f64 {
+        let r = n_dot_h.powf(light_power);
+        material_power * (pow_relative(n_dot_h, light_power) + 13.0 * U)
+            + pow_relative(r, material_power)
+            + pow_relative(n_dot_h, light_power * material_power)
+            + 8.0 * U
+    }
+}
+
 /// Exact references in f64.
 pub mod exact {
     /// Unit vector in f64 (zero for a zero vector; NaN propagates to every component).
