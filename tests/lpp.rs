@@ -125,11 +125,7 @@ fn single_white_light(emulation: Option<prepass::conforming::Emulation>) {
             zeros += 1;
             continue;
         }
-        let budget = scale
-            * (m * (pow_bound(nh, ln) + 13.0 * U)
-                + pow_bound(r, m)
-                + pow_bound(nh, ln * m)
-                + 8.0 * U);
+        let budget = scale * lpp::bounds::single_light_relative(nh, ln, m);
         // Results below 2^-126 are flushed to 0 by lpp_pow_cosine's cutoff on either side.
         let floor = 2f64.powi(-120);
         let err = (rec - dir).abs();
