@@ -1,4 +1,5 @@
-//! The published figures: the README's generated tables and `docs/figures.md`, computed here on
+//! The published figures: the README's generated tables and `docs/figures.md` (the linear-depth
+//! table is published by `tests/linear_depth.rs`, which measures it), computed here on
 //! the adapter and, under the conforming-adapter emulation, on the worst conforming adapter.
 //!
 //! `bash .ci/docs` writes them (`PREPASS_WRITE_DOCS=1`); otherwise every test here recomputes its
@@ -8,14 +9,9 @@
 
 mod common;
 
-use common::{gpu, publish};
+use common::{adapter_line, gpu, publish};
 use prepass::conforming::{Emulation, Policy};
 use std::fmt::Write as _;
-
-fn adapter_line() -> String {
-    let i = gpu().adapter_info();
-    format!("Measured on {} ({}).\n", i.name, i.driver_info)
-}
 
 #[test]
 fn normal_encodings() {
@@ -69,26 +65,6 @@ fn normal_encodings() {
     }
     publish("README.md", "normal-encodings", &readme);
     publish("docs/figures.md", "normal-encodings", &full);
-}
-
-#[test]
-fn linear_depth() {
-    let mut table = String::from(
-        "| function | max ULP (this adapter) | max ULP (worst emulated) | bound, correctly rounded | bound, every conforming adapter |\n|---|---|---|---|---|\n",
-    );
-    for r in prepass::sweep::conforming::linear_depth_figures(gpu(), &Policy::WORST).unwrap() {
-        let _ = writeln!(
-            table,
-            "| `{}` | {:.2} | {:.2} | {:.2} | {:.2} |",
-            r.function, r.adapter, r.emulated, r.bound_correctly_rounded, r.bound_conforming
-        );
-    }
-    publish("README.md", "linear-depth", &table);
-    publish(
-        "docs/figures.md",
-        "linear-depth",
-        &format!("{}\n{table}", adapter_line()),
-    );
 }
 
 #[test]

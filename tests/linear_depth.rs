@@ -283,36 +283,50 @@ fn twin_of_clamped(conv: prepass::projection::DepthConvention, z: f32, n: f32, f
 /// Every path under every worst-case policy of the conforming-adapter emulation, on the whole
 /// stiff grid, sampled to fit CI (`sweep::linear_depth::sampled_worst`: codes 0–255, every
 /// 257th code and the top 256; 2^16 float depths spread in ULP space). Asserted against the
-/// conforming bound of `linear_depth::bounds`; the worst figure per path is printed.
+/// conforming bound of `linear_depth::bounds`, and publishes the README's and docs/figures.md's
+/// linear-depth tables (`bash .ci/docs` rewrites them).
 #[test]
 fn every_path_holds_its_conforming_bound_under_emulation() {
-    use prepass::conforming::{EmulatedKernel, Emulation, Policy};
-    use prepass::linear_depth::bounds;
-    use prepass::sweep::linear_depth::{PATHS, sampled_worst};
-    for path in &PATHS {
-        let (_, bound, why) = bounds::of(path.function).expect("every path has a bound");
-        let mut worst = (0.0f64, String::new());
-        for policy in Policy::WORST {
-            let k =
-                EmulatedKernel::new(gpu(), LINEAR_DEPTH, path.function, &Emulation::new(policy))
-                    .unwrap();
-            let run = |args: &[Arg<'_>], n: u64| Ok(k.run(args, n)?.0.as_f32().to_vec());
-            let (e, at) = sampled_worst(path, &run).unwrap();
-            if e > worst.0 {
-                worst = (e, format!("{policy}, {at}"));
-            }
-        }
+    use prepass::conforming::Policy;
+    use prepass::sweep::conforming::linear_depth_figures;
+    use std::fmt::Write as _;
+    let mut table = String::from(
+        "| function | max ULP (this adapter) | max ULP (worst emulated) | bound, correctly rounded | bound, every conforming adapter |\n|---|---|---|---|---|\n",
+    );
+    for r in linear_depth_figures(gpu(), &Policy::WORST).unwrap() {
+        let (_, _, why) = ld::bounds::of(r.function).expect("every path has a bound");
         eprintln!(
-            "emulated {:36} worst {:.3} ULP ({}) — conforming bound {bound} ULP",
-            path.function, worst.0, worst.1
+            "emulated {:36} worst {:.3} ULP ({}) — conforming bound {} ULP",
+            r.function, r.emulated, r.emulated_at, r.bound_conforming
         );
         assert_within!(
-            worst.0,
-            bound,
+            r.emulated,
+            r.bound_conforming,
             format_args!("linear_depth::bounds::of, conforming: {why}"),
             "{} under emulation, worst at {}",
-            path.function,
-            worst.1
+            r.function,
+            r.emulated_at
+        );
+        assert_within!(
+            r.adapter,
+            r.bound_correctly_rounded,
+            format_args!("linear_depth::bounds::of, correctly rounded (lavapipe): {why}"),
+            "{} on the adapter",
+            r.function
+        );
+        let _ = writeln!(
+            table,
+            "| `{}` | {:.2} | {:.2} | {:.2} | {:.2} |",
+            r.function, r.adapter, r.emulated, r.bound_correctly_rounded, r.bound_conforming
         );
     }
+    // The published figures are these (tests/docs.rs writes the others).
+    common::publish("README.md", "linear-depth", &table);
+    let i = gpu().adapter_info();
+    let line = format!("Measured on {} ({}).\n", i.name, i.driver_info);
+    common::publish(
+        "docs/figures.md",
+        "linear-depth",
+        &format!("{line}\n{table}"),
+    );
 }

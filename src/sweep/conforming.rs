@@ -264,6 +264,8 @@ pub struct LinearFigures {
     pub adapter: f64,
     /// Worst ULP error under any of the policies.
     pub emulated: f64,
+    /// Where that worst error is: the policy and the input.
+    pub emulated_at: String,
     /// The bound where `+ − × /` are correctly rounded (`linear_depth::bounds`).
     pub bound_correctly_rounded: f64,
     /// The bound on every conforming adapter.
@@ -283,7 +285,7 @@ pub fn linear_depth_figures(
             crate::linear_depth::bounds::of(path.function).expect("every shipped path has a bound");
         let k = gpu.kernel(crate::wgsl::LINEAR_DEPTH, path.function)?;
         let adapter = sampled_worst(path, &|a, n| Ok(k.run(a, n)?.as_f32().to_vec()))?.0;
-        let mut emulated = 0.0f64;
+        let (mut emulated, mut emulated_at) = (0.0f64, String::new());
         for &policy in policies {
             let k = EmulatedKernel::new(
                 gpu,
@@ -292,12 +294,16 @@ pub fn linear_depth_figures(
                 &Emulation::new(policy),
             )?;
             let run = |a: &[crate::harness::Arg<'_>], n: u64| Ok(k.run(a, n)?.0.as_f32().to_vec());
-            emulated = emulated.max(sampled_worst(path, &run)?.0);
+            let (e, at) = sampled_worst(path, &run)?;
+            if e > emulated {
+                (emulated, emulated_at) = (e, format!("{policy}, {at}"));
+            }
         }
         rows.push(LinearFigures {
             function: path.function,
             adapter,
             emulated,
+            emulated_at,
             bound_correctly_rounded: cr,
             bound_conforming: conf,
         });

@@ -182,3 +182,10 @@ pub fn publish(path: &str, name: &str, body: &str) {
          last digits)"
     );
 }
+
+/// The line naming the adapter that every published table starts with.
+#[allow(dead_code)]
+pub fn adapter_line() -> String {
+    let i = gpu().adapter_info();
+    format!("Measured on {} ({}).\n", i.name, i.driver_info)
+}
