@@ -6,55 +6,11 @@ use glam::Vec3;
 use prepass::lighting::aggregate_light as agg;
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "lighting::aggregate_light::aggregate_light_accumulate",
-        wgsl: Some((prepass::wgsl::AGGREGATE_LIGHT, "aggregate_light_accumulate")),
-        twin: |a| {
-            V::Vec4(
-                agg::aggregate_light_accumulate(a[0].vec4(), a[1].vec3(), a[2].vec3(), a[3].f32())
-                    .to_array(),
-            )
-        },
-    },
-    Func {
-        rust: "lighting::aggregate_light::aggregate_light_direction",
-        wgsl: Some((prepass::wgsl::AGGREGATE_LIGHT, "aggregate_light_direction")),
-        twin: |a| V::Vec3(agg::aggregate_light_direction(a[0].vec4()).to_array()),
-    },
-    Func {
-        rust: "lighting::aggregate_light::aggregate_light_position",
-        wgsl: Some((prepass::wgsl::AGGREGATE_LIGHT, "aggregate_light_position")),
-        twin: |a| V::Vec3(agg::aggregate_light_position(a[0].vec4(), a[1].vec3()).to_array()),
-    },
-    Func {
-        rust: "lighting::aggregate_light::aggregate_light_accumulate_colour",
-        wgsl: Some((
-            prepass::wgsl::AGGREGATE_LIGHT,
-            "aggregate_light_accumulate_colour",
-        )),
-        twin: |a| {
-            V::Vec3(
-                agg::aggregate_light_accumulate_colour(
-                    a[0].vec3(),
-                    a[1].vec3(),
-                    a[2].vec3(),
-                    a[3].vec3(),
-                    a[4].vec3(),
-                )
-                .to_array(),
-            )
-        },
-    },
-    Func {
-        rust: "lighting::aggregate_light::aggregate_light_diffuse",
-        wgsl: Some((prepass::wgsl::AGGREGATE_LIGHT, "aggregate_light_diffuse")),
-        twin: |a| {
-            V::Vec3(
-                agg::aggregate_light_diffuse(a[0].vec3(), a[1].vec3(), a[2].vec3(), a[3].vec3())
-                    .to_array(),
-            )
-        },
-    },
+    func!(prepass::wgsl::AGGREGATE_LIGHT; lighting::aggregate_light; aggregate_light_accumulate(vec4, vec3, vec3, f32) -> Vec4),
+    func!(prepass::wgsl::AGGREGATE_LIGHT; lighting::aggregate_light; aggregate_light_direction(vec4) -> Vec3),
+    func!(prepass::wgsl::AGGREGATE_LIGHT; lighting::aggregate_light; aggregate_light_position(vec4, vec3) -> Vec3),
+    func!(prepass::wgsl::AGGREGATE_LIGHT; lighting::aggregate_light; aggregate_light_accumulate_colour(vec3, vec3, vec3, vec3, vec3) -> Vec3),
+    func!(prepass::wgsl::AGGREGATE_LIGHT; lighting::aggregate_light; aggregate_light_diffuse(vec3, vec3, vec3, vec3) -> Vec3),
     Func {
         rust: "lighting::aggregate_light::aggregate",
         wgsl: None,

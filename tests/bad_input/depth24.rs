@@ -9,26 +9,10 @@ const UNPACK_WGSL: &str =
     "fn bad_input_unpack4x8unorm(p: u32) -> vec4<f32> { return unpack4x8unorm(p); }";
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "depth24::depth24_from_rgb8",
-        wgsl: Some((prepass::wgsl::DEPTH24, "depth24_from_rgb8")),
-        twin: |a| V::U32(depth24::depth24_from_rgb8(a[0].vec3())),
-    },
-    Func {
-        rust: "depth24::depth24_from_packed",
-        wgsl: Some((prepass::wgsl::DEPTH24, "depth24_from_packed")),
-        twin: |a| V::U32(depth24::depth24_from_packed(a[0].u32())),
-    },
-    Func {
-        rust: "depth24::pack_depth24",
-        wgsl: Some((prepass::wgsl::DEPTH24, "pack_depth24")),
-        twin: |a| V::U32(depth24::pack_depth24(a[0].u32())),
-    },
-    Func {
-        rust: "depth24::hyperbolic_depth_from_depth24",
-        wgsl: Some((prepass::wgsl::DEPTH24, "hyperbolic_depth_from_depth24")),
-        twin: |a| V::F32(depth24::hyperbolic_depth_from_depth24(a[0].u32())),
-    },
+    func!(prepass::wgsl::DEPTH24; depth24; depth24_from_rgb8(vec3) -> U32),
+    func!(prepass::wgsl::DEPTH24; depth24; depth24_from_packed(u32) -> U32),
+    func!(prepass::wgsl::DEPTH24; depth24; pack_depth24(u32) -> U32),
+    func!(prepass::wgsl::DEPTH24; depth24; hyperbolic_depth_from_depth24(u32) -> F32),
     Func {
         rust: "depth24::unpack4x8unorm",
         wgsl: Some((UNPACK_WGSL, "bad_input_unpack4x8unorm")),

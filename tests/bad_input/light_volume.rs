@@ -14,49 +14,9 @@ fn convention(code: u32) -> DepthConvention {
 }
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "lighting::light_volume::light_volume_near_corner_distance",
-        wgsl: Some((
-            prepass::wgsl::LIGHT_VOLUME,
-            "light_volume_near_corner_distance",
-        )),
-        twin: |a| {
-            V::F32(vol::light_volume_near_corner_distance(
-                a[0].f32(),
-                a[1].f32(),
-                a[2].f32(),
-            ))
-        },
-    },
-    Func {
-        rust: "lighting::light_volume::light_volume_sphere_needs_depth_fail",
-        wgsl: Some((
-            prepass::wgsl::LIGHT_VOLUME,
-            "light_volume_sphere_needs_depth_fail",
-        )),
-        twin: |a| {
-            V::U32(vol::light_volume_sphere_needs_depth_fail(
-                a[0].vec3(),
-                a[1].f32(),
-                a[2].f32(),
-            ))
-        },
-    },
-    Func {
-        rust: "lighting::light_volume::light_volume_cone_needs_depth_fail",
-        wgsl: Some((
-            prepass::wgsl::LIGHT_VOLUME,
-            "light_volume_cone_needs_depth_fail",
-        )),
-        twin: |a| {
-            V::U32(vol::light_volume_cone_needs_depth_fail(
-                a[0].vec3(),
-                a[1].vec3(),
-                a[2].vec2(),
-                a[3].f32(),
-            ))
-        },
-    },
+    func!(prepass::wgsl::LIGHT_VOLUME; lighting::light_volume; light_volume_near_corner_distance(f32, f32, f32) -> F32),
+    func!(prepass::wgsl::LIGHT_VOLUME; lighting::light_volume; light_volume_sphere_needs_depth_fail(vec3, f32, f32) -> U32),
+    func!(prepass::wgsl::LIGHT_VOLUME; lighting::light_volume; light_volume_cone_needs_depth_fail(vec3, vec3, vec2, f32) -> U32),
     Func {
         rust: "lighting::light_volume::light_volume_window_depth",
         wgsl: Some((prepass::wgsl::LIGHT_VOLUME, "light_volume_window_depth")),

@@ -6,11 +6,7 @@ use prepass::linear_depth as ld;
 use prepass::projection::{Depth24Consts, DepthConsts, ReversedDepthConsts};
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "linear_depth::view_z_from_depth24",
-        wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth24")),
-        twin: |a| V::F32(ld::view_z_from_depth24(a[0].u32(), a[1].f32(), a[2].f32())),
-    },
+    func!(prepass::wgsl::LINEAR_DEPTH; linear_depth; view_z_from_depth24(u32, f32, f32) -> F32),
     Func {
         rust: "linear_depth::view_z_from_depth24_consts",
         wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth24_consts")),
@@ -21,11 +17,7 @@ pub const FUNCS: &[Func] = &[
             ))
         },
     },
-    Func {
-        rust: "linear_depth::view_z_from_depth",
-        wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth")),
-        twin: |a| V::F32(ld::view_z_from_depth(a[0].f32(), a[1].f32(), a[2].f32())),
-    },
+    func!(prepass::wgsl::LINEAR_DEPTH; linear_depth; view_z_from_depth(f32, f32, f32) -> F32),
     Func {
         rust: "linear_depth::view_z_from_depth_consts",
         wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth_consts")),
@@ -36,17 +28,7 @@ pub const FUNCS: &[Func] = &[
             ))
         },
     },
-    Func {
-        rust: "linear_depth::view_z_from_reversed_depth",
-        wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_reversed_depth")),
-        twin: |a| {
-            V::F32(ld::view_z_from_reversed_depth(
-                a[0].f32(),
-                a[1].f32(),
-                a[2].f32(),
-            ))
-        },
-    },
+    func!(prepass::wgsl::LINEAR_DEPTH; linear_depth; view_z_from_reversed_depth(f32, f32, f32) -> F32),
     Func {
         rust: "linear_depth::view_z_from_reversed_depth_consts",
         wgsl: Some((

@@ -12,37 +12,11 @@ const LPP_COSINES_WGSL: &str = concat!(
 );
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "lighting::lpp::lpp_direction",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_direction")),
-        twin: |a| V::Vec3(lpp::lpp_direction(a[0].vec3()).to_array()),
-    },
-    Func {
-        rust: "lighting::lpp::lpp_luminance",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_luminance")),
-        twin: |a| V::F32(lpp::lpp_luminance(a[0].vec3())),
-    },
-    Func {
-        rust: "lighting::lpp::lpp_pow_cosine",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_pow_cosine")),
-        twin: |a| V::F32(lpp::lpp_pow_cosine(a[0].f32(), a[1].f32())),
-    },
-    Func {
-        rust: "lighting::lpp::lpp_point_attenuation",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_point_attenuation")),
-        twin: |a| V::F32(lpp::lpp_point_attenuation(a[0].f32(), a[1].f32())),
-    },
-    Func {
-        rust: "lighting::lpp::lpp_spot_attenuation",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_spot_attenuation")),
-        twin: |a| {
-            V::F32(lpp::lpp_spot_attenuation(
-                a[0].f32(),
-                a[1].f32(),
-                a[2].f32(),
-            ))
-        },
-    },
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_direction(vec3) -> Vec3),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_luminance(vec3) -> F32),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_pow_cosine(f32, f32) -> F32),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_point_attenuation(f32, f32) -> F32),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_spot_attenuation(f32, f32, f32) -> F32),
     Func {
         rust: "lighting::lpp::lpp_cosines",
         wgsl: Some((LPP_COSINES_WGSL, "bad_input_lpp_cosines")),
@@ -51,118 +25,15 @@ pub const FUNCS: &[Func] = &[
             V::Vec2([d, s])
         },
     },
-    Func {
-        rust: "lighting::lpp::lpp_blinn_phong_light",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_blinn_phong_light")),
-        twin: |a| {
-            V::Vec4(
-                lpp::lpp_blinn_phong_light(
-                    a[0].vec3(),
-                    a[1].vec3(),
-                    a[2].vec3(),
-                    a[3].vec3(),
-                    a[4].f32(),
-                    a[5].f32(),
-                )
-                .to_array(),
-            )
-        },
-    },
-    Func {
-        rust: "lighting::lpp::lpp_phong_light",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_phong_light")),
-        twin: |a| {
-            V::Vec4(
-                lpp::lpp_phong_light(
-                    a[0].vec3(),
-                    a[1].vec3(),
-                    a[2].vec3(),
-                    a[3].vec3(),
-                    a[4].f32(),
-                    a[5].f32(),
-                )
-                .to_array(),
-            )
-        },
-    },
-    Func {
-        rust: "lighting::lpp::lpp_point_light",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_point_light")),
-        twin: |a| {
-            V::Vec4(
-                lpp::lpp_point_light(
-                    a[0].vec3(),
-                    a[1].vec3(),
-                    a[2].vec3(),
-                    a[3].vec4(),
-                    a[4].f32(),
-                )
-                .to_array(),
-            )
-        },
-    },
-    Func {
-        rust: "lighting::lpp::lpp_spot_light",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_spot_light")),
-        twin: |a| {
-            V::Vec4(
-                lpp::lpp_spot_light(
-                    a[0].vec3(),
-                    a[1].vec3(),
-                    a[2].vec3(),
-                    a[3].vec4(),
-                    a[4].vec4(),
-                    a[5].f32(),
-                    a[6].f32(),
-                )
-                .to_array(),
-            )
-        },
-    },
-    Func {
-        rust: "lighting::lpp::lpp_blinn_phong_specular_rgb",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_blinn_phong_specular_rgb")),
-        twin: |a| {
-            V::Vec3(
-                lpp::lpp_blinn_phong_specular_rgb(
-                    a[0].vec3(),
-                    a[1].vec3(),
-                    a[2].vec3(),
-                    a[3].vec3(),
-                    a[4].f32(),
-                    a[5].f32(),
-                )
-                .to_array(),
-            )
-        },
-    },
-    Func {
-        rust: "lighting::lpp::lpp_reconstruct_specular",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_reconstruct_specular")),
-        twin: |a| V::F32(lpp::lpp_reconstruct_specular(a[0].vec4(), a[1].f32())),
-    },
-    Func {
-        rust: "lighting::lpp::lpp_combine",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_combine")),
-        twin: |a| {
-            V::Vec3(lpp::lpp_combine(a[0].vec3(), a[1].vec3(), a[2].vec4(), a[3].f32()).to_array())
-        },
-    },
-    Func {
-        rust: "lighting::lpp::lpp_combine_two_buffers",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_combine_two_buffers")),
-        twin: |a| {
-            V::Vec3(
-                lpp::lpp_combine_two_buffers(a[0].vec3(), a[1].vec3(), a[2].vec3(), a[3].vec3())
-                    .to_array(),
-            )
-        },
-    },
-    Func {
-        rust: "lighting::lpp::lpp_clamp_colour",
-        wgsl: Some((prepass::wgsl::LPP, "lpp_clamp_colour")),
-        twin: |a| V::Vec3(lpp::lpp_clamp_colour(a[0].vec3()).to_array()),
-    },
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_blinn_phong_light(vec3, vec3, vec3, vec3, f32, f32) -> Vec4),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_phong_light(vec3, vec3, vec3, vec3, f32, f32) -> Vec4),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_point_light(vec3, vec3, vec3, vec4, f32) -> Vec4),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_spot_light(vec3, vec3, vec3, vec4, vec4, f32, f32) -> Vec4),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_blinn_phong_specular_rgb(vec3, vec3, vec3, vec3, f32, f32) -> Vec3),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_reconstruct_specular(vec4, f32) -> F32),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_combine(vec3, vec3, vec4, f32) -> Vec3),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_combine_two_buffers(vec3, vec3, vec3, vec3) -> Vec3),
+    func!(prepass::wgsl::LPP; lighting::lpp; lpp_clamp_colour(vec3) -> Vec3),
     Func {
         rust: "lighting::lpp::exact::unit",
         wgsl: None,

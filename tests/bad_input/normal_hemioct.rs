@@ -6,32 +6,10 @@ use super::{Func, INF, NAN, NEG_NAN, Row, SNAN, SUB_MAX, SUB_MIN, V};
 use prepass::normal::hemioct;
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "normal::hemioct::encode_normal_hemioct24",
-        wgsl: Some((prepass::wgsl::NORMAL_HEMIOCT, "encode_normal_hemioct24")),
-        twin: |a| V::U32(hemioct::encode_normal_hemioct24(a[0].vec3())),
-    },
-    Func {
-        rust: "normal::hemioct::encode_normal_hemioct24_fast",
-        wgsl: Some((
-            prepass::wgsl::NORMAL_HEMIOCT,
-            "encode_normal_hemioct24_fast",
-        )),
-        twin: |a| V::U32(hemioct::encode_normal_hemioct24_fast(a[0].vec3())),
-    },
-    Func {
-        rust: "normal::hemioct::decode_normal_hemioct24",
-        wgsl: Some((prepass::wgsl::NORMAL_HEMIOCT, "decode_normal_hemioct24")),
-        twin: |a| V::Vec3(hemioct::decode_normal_hemioct24(a[0].u32()).to_array()),
-    },
-    Func {
-        rust: "normal::hemioct::encode_normal_hemioct24_unorm",
-        wgsl: Some((
-            prepass::wgsl::NORMAL_HEMIOCT,
-            "encode_normal_hemioct24_unorm",
-        )),
-        twin: |a| V::Vec4(hemioct::encode_normal_hemioct24_unorm(a[0].vec3())),
-    },
+    func!(prepass::wgsl::NORMAL_HEMIOCT; normal::hemioct; encode_normal_hemioct24(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_HEMIOCT; normal::hemioct; encode_normal_hemioct24_fast(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_HEMIOCT; normal::hemioct; decode_normal_hemioct24(u32) -> Vec3),
+    func!(prepass::wgsl::NORMAL_HEMIOCT; normal::hemioct; encode_normal_hemioct24_unorm(vec3) -> Vec4),
     Func {
         rust: "normal::hemioct::decode_normal_hemioct24_unorm",
         wgsl: Some((

@@ -14,21 +14,9 @@ fn normal_or_panic(f: impl FnOnce() -> V) -> V {
 }
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "normal::oct::encode_normal_oct16",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct16")),
-        twin: |a| V::U32(oct::encode_normal_oct16(a[0].vec3())),
-    },
-    Func {
-        rust: "normal::oct::encode_normal_oct16_fast",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct16_fast")),
-        twin: |a| V::U32(oct::encode_normal_oct16_fast(a[0].vec3())),
-    },
-    Func {
-        rust: "normal::oct::decode_normal_oct16",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct16")),
-        twin: |a| V::Vec3(oct::decode_normal_oct16(a[0].u32()).to_array()),
-    },
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct16(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct16_fast(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct16(u32) -> Vec3),
     // The WGSL render-target form of oct16 is rg8unorm (vec2); the twin takes [c0, c1, 0, 0].
     Func {
         rust: "normal::oct::encode_normal_oct16_unorm",
@@ -46,51 +34,19 @@ pub const FUNCS: &[Func] = &[
             V::Vec3(oct::decode_normal_oct16_unorm([c.x, c.y, 0.0, 0.0]).to_array())
         },
     },
-    Func {
-        rust: "normal::oct::encode_normal_oct24",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct24")),
-        twin: |a| V::U32(oct::encode_normal_oct24(a[0].vec3())),
-    },
-    Func {
-        rust: "normal::oct::encode_normal_oct24_fast",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct24_fast")),
-        twin: |a| V::U32(oct::encode_normal_oct24_fast(a[0].vec3())),
-    },
-    Func {
-        rust: "normal::oct::decode_normal_oct24",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct24")),
-        twin: |a| V::Vec3(oct::decode_normal_oct24(a[0].u32()).to_array()),
-    },
-    Func {
-        rust: "normal::oct::encode_normal_oct24_unorm",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct24_unorm")),
-        twin: |a| V::Vec4(oct::encode_normal_oct24_unorm(a[0].vec3())),
-    },
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24_fast(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct24(u32) -> Vec3),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24_unorm(vec3) -> Vec4),
     Func {
         rust: "normal::oct::decode_normal_oct24_unorm",
         wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct24_unorm")),
         twin: |a| V::Vec3(oct::decode_normal_oct24_unorm(normal_vec4(a[0])).to_array()),
     },
-    Func {
-        rust: "normal::oct::encode_normal_oct32",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct32")),
-        twin: |a| V::U32(oct::encode_normal_oct32(a[0].vec3())),
-    },
-    Func {
-        rust: "normal::oct::encode_normal_oct32_fast",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct32_fast")),
-        twin: |a| V::U32(oct::encode_normal_oct32_fast(a[0].vec3())),
-    },
-    Func {
-        rust: "normal::oct::decode_normal_oct32",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct32")),
-        twin: |a| V::Vec3(oct::decode_normal_oct32(a[0].u32()).to_array()),
-    },
-    Func {
-        rust: "normal::oct::encode_normal_oct32_unorm",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "encode_normal_oct32_unorm")),
-        twin: |a| V::Vec4(oct::encode_normal_oct32_unorm(a[0].vec3())),
-    },
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct32(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct32_fast(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct32(u32) -> Vec3),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct32_unorm(vec3) -> Vec4),
     Func {
         rust: "normal::oct::decode_normal_oct32_unorm",
         wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct32_unorm")),

@@ -11,31 +11,15 @@ const UNPACK2X16_WGSL: &str =
     "fn bad_input_unpack2x16float(p: u32) -> vec2<f32> { return unpack2x16float(p); }";
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "normal::xy_fp16::encode_normal_xy_fp16",
-        wgsl: Some((prepass::wgsl::NORMAL_XY_FP16, "encode_normal_xy_fp16")),
-        twin: |a| V::U32(xy_fp16::encode_normal_xy_fp16(a[0].vec3())),
-    },
-    Func {
-        rust: "normal::xy_fp16::decode_normal_xy_fp16",
-        wgsl: Some((prepass::wgsl::NORMAL_XY_FP16, "decode_normal_xy_fp16")),
-        twin: |a| V::Vec3(xy_fp16::decode_normal_xy_fp16(a[0].u32()).to_array()),
-    },
-    Func {
-        rust: "normal::xy_fp16::encode_normal_xy_fp16_unorm",
-        wgsl: Some((prepass::wgsl::NORMAL_XY_FP16, "encode_normal_xy_fp16_unorm")),
-        twin: |a| V::Vec4(xy_fp16::encode_normal_xy_fp16_unorm(a[0].vec3())),
-    },
+    func!(prepass::wgsl::NORMAL_XY_FP16; normal::xy_fp16; encode_normal_xy_fp16(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_XY_FP16; normal::xy_fp16; decode_normal_xy_fp16(u32) -> Vec3),
+    func!(prepass::wgsl::NORMAL_XY_FP16; normal::xy_fp16; encode_normal_xy_fp16_unorm(vec3) -> Vec4),
     Func {
         rust: "normal::xy_fp16::decode_normal_xy_fp16_unorm",
         wgsl: Some((prepass::wgsl::NORMAL_XY_FP16, "decode_normal_xy_fp16_unorm")),
         twin: |a| V::Vec3(xy_fp16::decode_normal_xy_fp16_unorm(normal_vec4(a[0])).to_array()),
     },
-    Func {
-        rust: "normal::xy_fp16::pack2x16float",
-        wgsl: None,
-        twin: |a| V::U32(xy_fp16::pack2x16float(a[0].vec2())),
-    },
+    func!(None; normal::xy_fp16; pack2x16float(vec2) -> U32),
     Func {
         rust: "normal::xy_fp16::unpack2x16float",
         wgsl: Some((UNPACK2X16_WGSL, "bad_input_unpack2x16float")),

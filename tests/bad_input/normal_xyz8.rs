@@ -5,21 +5,9 @@ use super::{Func, INF, NAN, NEG_NAN, Row, SNAN, SUB_MAX, SUB_MIN, V};
 use prepass::normal::xyz8;
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "normal::xyz8::encode_normal_xyz8",
-        wgsl: Some((prepass::wgsl::NORMAL_XYZ8, "encode_normal_xyz8")),
-        twin: |a| V::U32(xyz8::encode_normal_xyz8(a[0].vec3())),
-    },
-    Func {
-        rust: "normal::xyz8::decode_normal_xyz8",
-        wgsl: Some((prepass::wgsl::NORMAL_XYZ8, "decode_normal_xyz8")),
-        twin: |a| V::Vec3(xyz8::decode_normal_xyz8(a[0].u32()).to_array()),
-    },
-    Func {
-        rust: "normal::xyz8::encode_normal_xyz8_unorm",
-        wgsl: Some((prepass::wgsl::NORMAL_XYZ8, "encode_normal_xyz8_unorm")),
-        twin: |a| V::Vec4(xyz8::encode_normal_xyz8_unorm(a[0].vec3())),
-    },
+    func!(prepass::wgsl::NORMAL_XYZ8; normal::xyz8; encode_normal_xyz8(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_XYZ8; normal::xyz8; decode_normal_xyz8(u32) -> Vec3),
+    func!(prepass::wgsl::NORMAL_XYZ8; normal::xyz8; encode_normal_xyz8_unorm(vec3) -> Vec4),
     Func {
         rust: "normal::xyz8::decode_normal_xyz8_unorm",
         wgsl: Some((prepass::wgsl::NORMAL_XYZ8, "decode_normal_xyz8_unorm")),

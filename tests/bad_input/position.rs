@@ -11,41 +11,13 @@ const WORLD_RAY_WGSL: &str = concat!(
 );
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "position::frustum_ray",
-        wgsl: Some((prepass::wgsl::POSITION, "frustum_ray")),
-        twin: |a| V::Vec3(pos::frustum_ray(a[0].vec2(), a[1].vec2()).to_array()),
-    },
-    Func {
-        rust: "position::frustum_ray_rh",
-        wgsl: Some((prepass::wgsl::POSITION, "frustum_ray_rh")),
-        twin: |a| V::Vec3(pos::frustum_ray_rh(a[0].vec2(), a[1].vec2()).to_array()),
-    },
-    Func {
-        rust: "position::view_position",
-        wgsl: Some((prepass::wgsl::POSITION, "view_position")),
-        twin: |a| V::Vec3(pos::view_position(a[0].vec3(), a[1].f32()).to_array()),
-    },
-    Func {
-        rust: "position::fullscreen_triangle_ndc",
-        wgsl: Some((prepass::wgsl::POSITION, "fullscreen_triangle_ndc")),
-        twin: |a| V::Vec2(pos::fullscreen_triangle_ndc(a[0].u32()).to_array()),
-    },
-    Func {
-        rust: "position::fullscreen_triangle_ray",
-        wgsl: Some((prepass::wgsl::POSITION, "fullscreen_triangle_ray")),
-        twin: |a| V::Vec3(pos::fullscreen_triangle_ray(a[0].u32(), a[1].vec2()).to_array()),
-    },
-    Func {
-        rust: "position::fullscreen_triangle_ray_rh",
-        wgsl: Some((prepass::wgsl::POSITION, "fullscreen_triangle_ray_rh")),
-        twin: |a| V::Vec3(pos::fullscreen_triangle_ray_rh(a[0].u32(), a[1].vec2()).to_array()),
-    },
-    Func {
-        rust: "position::ndc_from_uv",
-        wgsl: Some((prepass::wgsl::POSITION, "ndc_from_uv")),
-        twin: |a| V::Vec2(pos::ndc_from_uv(a[0].vec2()).to_array()),
-    },
+    func!(prepass::wgsl::POSITION; position; frustum_ray(vec2, vec2) -> Vec3),
+    func!(prepass::wgsl::POSITION; position; frustum_ray_rh(vec2, vec2) -> Vec3),
+    func!(prepass::wgsl::POSITION; position; view_position(vec3, f32) -> Vec3),
+    func!(prepass::wgsl::POSITION; position; fullscreen_triangle_ndc(u32) -> Vec2),
+    func!(prepass::wgsl::POSITION; position; fullscreen_triangle_ray(u32, vec2) -> Vec3),
+    func!(prepass::wgsl::POSITION; position; fullscreen_triangle_ray_rh(u32, vec2) -> Vec3),
+    func!(prepass::wgsl::POSITION; position; ndc_from_uv(vec2) -> Vec2),
     Func {
         rust: "position::world_ray",
         wgsl: Some((WORLD_RAY_WGSL, "bad_input_world_ray")),
@@ -54,16 +26,8 @@ pub const FUNCS: &[Func] = &[
             V::Vec3(pos::world_ray(a[0].vec3(), m).to_array())
         },
     },
-    Func {
-        rust: "position::camera_relative_position",
-        wgsl: Some((prepass::wgsl::POSITION, "camera_relative_position")),
-        twin: |a| V::Vec3(pos::camera_relative_position(a[0].vec3(), a[1].f32()).to_array()),
-    },
-    Func {
-        rust: "position::world_position",
-        wgsl: Some((prepass::wgsl::POSITION, "world_position")),
-        twin: |a| V::Vec3(pos::world_position(a[0].vec3(), a[1].f32(), a[2].vec3()).to_array()),
-    },
+    func!(prepass::wgsl::POSITION; position; camera_relative_position(vec3, f32) -> Vec3),
+    func!(prepass::wgsl::POSITION; position; world_position(vec3, f32, vec3) -> Vec3),
 ];
 
 pub const WGSL_HELPERS: &[(&str, &str)] = &[];

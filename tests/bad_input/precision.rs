@@ -1,72 +1,24 @@
 //! `precision` (Rust only): the error metrics and the test-input builders.
 
 use super::{Func, INF, NAN, Row, SUB_MIN, V};
-use prepass::precision::inputs::{self, ChannelError};
+use prepass::precision::inputs::ChannelError;
 use prepass::precision::metrics;
 
 pub const FUNCS: &[Func] = &[
-    Func {
-        rust: "precision::metrics::ordinal",
-        wgsl: None,
-        twin: |a| V::OptI64(metrics::ordinal(a[0].f32())),
-    },
-    Func {
-        rust: "precision::metrics::ulp_distance",
-        wgsl: None,
-        twin: |a| V::OptU64(metrics::ulp_distance(a[0].f32(), a[1].f32())),
-    },
-    Func {
-        rust: "precision::metrics::step_ulps",
-        wgsl: None,
-        twin: |a| V::F32(metrics::step_ulps(a[0].f32(), a[1].i64())),
-    },
-    Func {
-        rust: "precision::metrics::f32_ulp_at",
-        wgsl: None,
-        twin: |a| V::F64(metrics::f32_ulp_at(a[0].f64())),
-    },
-    Func {
-        rust: "precision::metrics::ulp_error",
-        wgsl: None,
-        twin: |a| V::F64(metrics::ulp_error(a[0].f32(), a[1].f64())),
-    },
-    Func {
-        rust: "precision::metrics::relative_error",
-        wgsl: None,
-        twin: |a| V::F64(metrics::relative_error(a[0].f64(), a[1].f64())),
-    },
-    Func {
-        rust: "precision::metrics::angle_degrees",
-        wgsl: None,
-        twin: |a| V::F64(metrics::angle_degrees(a[0].f64x3(), a[1].f64x3())),
-    },
+    func!(None; precision::metrics; ordinal(f32) -> OptI64),
+    func!(None; precision::metrics; ulp_distance(f32, f32) -> OptU64),
+    func!(None; precision::metrics; step_ulps(f32, i64) -> F32),
+    func!(None; precision::metrics; f32_ulp_at(f64) -> F64),
+    func!(None; precision::metrics; ulp_error(f32, f64) -> F64),
+    func!(None; precision::metrics; relative_error(f64, f64) -> F64),
+    func!(None; precision::metrics; angle_degrees(f64x3, f64x3) -> F64),
     Func {
         rust: "precision::metrics::widen3",
         wgsl: None,
         twin: |a| V::F64x3(metrics::widen3(a[0].vec3().to_array())),
     },
-    Func {
-        rust: "precision::inputs::unorm8_channel",
-        wgsl: None,
-        twin: |a| {
-            V::F32(inputs::unorm8_channel(
-                a[0].u32(),
-                a[1].channel(),
-                a[2].bool(),
-            ))
-        },
-    },
-    Func {
-        rust: "precision::inputs::rgb8_channels",
-        wgsl: None,
-        twin: |a| {
-            V::Vec3(inputs::rgb8_channels(
-                a[0].u32(),
-                a[1].channel(),
-                a[2].bool(),
-            ))
-        },
-    },
+    func!(None; precision::inputs; unorm8_channel(u32, channel, bool) -> F32),
+    func!(None; precision::inputs; rgb8_channels(u32, channel, bool) -> Vec3),
 ];
 
 pub const WGSL_HELPERS: &[(&str, &str)] = &[];

@@ -20,44 +20,12 @@ pub const FUNCS: &[Func] = &[
         wgsl: Some((prepass::wgsl::ROUGHNESS, "log_roughness_range_log2")),
         twin: |a| V::U32(range_code(rough::range(a[0].f32()))),
     },
-    Func {
-        rust: "roughness::encode_log_roughness",
-        wgsl: Some((prepass::wgsl::ROUGHNESS, "encode_log_roughness")),
-        twin: |a| V::U32(rough::encode_log_roughness(a[0].f32(), a[1].f32())),
-    },
-    Func {
-        rust: "roughness::decode_log_roughness",
-        wgsl: Some((prepass::wgsl::ROUGHNESS, "decode_log_roughness")),
-        twin: |a| V::F32(rough::decode_log_roughness(a[0].u32(), a[1].f32())),
-    },
-    Func {
-        rust: "roughness::pack_normal_xyz8_log_roughness",
-        wgsl: Some((prepass::wgsl::ROUGHNESS, "pack_normal_xyz8_log_roughness")),
-        twin: |a| {
-            V::U32(rough::pack_normal_xyz8_log_roughness(
-                a[0].u32(),
-                a[1].u32(),
-            ))
-        },
-    },
-    Func {
-        rust: "roughness::normal_xyz8_from_log_roughness_texel",
-        wgsl: Some((
-            prepass::wgsl::ROUGHNESS,
-            "normal_xyz8_from_log_roughness_texel",
-        )),
-        twin: |a| V::U32(rough::normal_xyz8_from_log_roughness_texel(a[0].u32())),
-    },
-    Func {
-        rust: "roughness::log_roughness_code_from_texel",
-        wgsl: Some((prepass::wgsl::ROUGHNESS, "log_roughness_code_from_texel")),
-        twin: |a| V::U32(rough::log_roughness_code_from_texel(a[0].u32())),
-    },
-    Func {
-        rust: "roughness::quantisation_limit",
-        wgsl: None,
-        twin: |a| V::F64(rough::quantisation_limit(a[0].f64())),
-    },
+    func!(prepass::wgsl::ROUGHNESS; roughness; encode_log_roughness(f32, f32) -> U32),
+    func!(prepass::wgsl::ROUGHNESS; roughness; decode_log_roughness(u32, f32) -> F32),
+    func!(prepass::wgsl::ROUGHNESS; roughness; pack_normal_xyz8_log_roughness(u32, u32) -> U32),
+    func!(prepass::wgsl::ROUGHNESS; roughness; normal_xyz8_from_log_roughness_texel(u32) -> U32),
+    func!(prepass::wgsl::ROUGHNESS; roughness; log_roughness_code_from_texel(u32) -> U32),
+    func!(None; roughness; quantisation_limit(f64) -> F64),
     Func {
         rust: "roughness::exact::decode",
         wgsl: None,

@@ -15,6 +15,80 @@
 use glam::Vec3;
 use prepass::precision::inputs::ChannelError;
 
+/// A [`Func`] whose twin is the plain call `prepass::<module>::<name>(args…)` and whose WGSL
+/// function (if any) has the same name: `func!(SOURCE; module::path; name(arg kinds…) -> V kind)`,
+/// or `func!(None; …)` for a Rust-only function. Each argument kind names the [`V`] accessor that
+/// reads it (`f32`, `vec3`, …), in order. Functions that need a wrapper or a conversion write the
+/// [`Func`] out by hand.
+macro_rules! func {
+    (None; $($m:ident)::+; $name:ident($($arg:ident),*) -> $kind:ident) => {
+        func!(@make None; $($m)::+; $name($($arg),*) -> $kind)
+    };
+    ($src:expr; $($m:ident)::+; $name:ident($($arg:ident),*) -> $kind:ident) => {
+        func!(@make Some(($src, stringify!($name))); $($m)::+; $name($($arg),*) -> $kind)
+    };
+    (@make $wgsl:expr; $($m:ident)::+; $name:ident($($arg:ident),*) -> $kind:ident) => {
+        $crate::rows::Func {
+            rust: concat!($(stringify!($m), "::",)+ stringify!($name)),
+            wgsl: $wgsl,
+            twin: |a| {
+                let mut args = a.iter().copied();
+                let mut next = || args.next().expect("a row gives every argument");
+                $crate::rows::V::$kind($crate::rows::Plain::plain(prepass::$($m)::+::$name(
+                    $(next().$arg()),*
+                )))
+            },
+        }
+    };
+}
+
+/// A twin's result as the payload of its [`V`] variant (glam vectors as arrays).
+pub trait Plain {
+    type Out;
+    fn plain(self) -> Self::Out;
+}
+
+macro_rules! plain_as_is {
+    ($($t:ty),*) => { $(impl Plain for $t { type Out = $t; fn plain(self) -> $t { self } })* };
+}
+plain_as_is!(
+    f32,
+    u32,
+    f64,
+    [f32; 2],
+    [f32; 3],
+    [f32; 4],
+    [f64; 3],
+    Option<u32>,
+    Option<i64>,
+    Option<u64>
+);
+
+impl Plain for glam::Vec2 {
+    type Out = [f32; 2];
+    fn plain(self) -> [f32; 2] {
+        self.to_array()
+    }
+}
+impl Plain for Vec3 {
+    type Out = [f32; 3];
+    fn plain(self) -> [f32; 3] {
+        self.to_array()
+    }
+}
+impl Plain for glam::Vec4 {
+    type Out = [f32; 4];
+    fn plain(self) -> [f32; 4] {
+        self.to_array()
+    }
+}
+impl Plain for glam::UVec2 {
+    type Out = [u32; 2];
+    fn plain(self) -> [u32; 2] {
+        self.to_array()
+    }
+}
+
 mod aggregate_light;
 mod depth24;
 mod light_volume;
