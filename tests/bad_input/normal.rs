@@ -20,14 +20,6 @@ pub(super) const R3: f32 = 0.577_350_26;
 /// 1/√2 as decoders compute it, `1/√2` with each step correctly rounded.
 pub(super) const R2: f32 = 0.707_106_77;
 
-/// A `vec4` argument (the rgba8unorm decoders' channels).
-pub(super) fn normal_vec4(v: V) -> [f32; 4] {
-    match v {
-        V::Vec4(x) => x,
-        v => panic!("{v:?} is not a vec4"),
-    }
-}
-
 pub const FUNCS: &[Func] = &[Func {
     rust: "normal::sanitize",
     wgsl: None,

@@ -1,23 +1,15 @@
 //! `wgsl/normal_hemioct.wgsl` and `normal::hemioct`: hemi-octahedral view-space normals in 24
 //! bits.
 
-use super::normal::{B15, B127, B247, normal_vec4};
+use super::normal::{B15, B127, B247};
 use super::{Func, INF, NAN, NEG_NAN, Row, SNAN, SUB_MAX, SUB_MIN, V};
-use prepass::normal::hemioct;
 
 pub const FUNCS: &[Func] = &[
     func!(prepass::wgsl::NORMAL_HEMIOCT; normal::hemioct; encode_normal_hemioct24(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_HEMIOCT; normal::hemioct; encode_normal_hemioct24_fast(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_HEMIOCT; normal::hemioct; decode_normal_hemioct24(u32) -> Vec3),
     func!(prepass::wgsl::NORMAL_HEMIOCT; normal::hemioct; encode_normal_hemioct24_unorm(vec3) -> Vec4),
-    Func {
-        rust: "normal::hemioct::decode_normal_hemioct24_unorm",
-        wgsl: Some((
-            prepass::wgsl::NORMAL_HEMIOCT,
-            "decode_normal_hemioct24_unorm",
-        )),
-        twin: |a| V::Vec3(hemioct::decode_normal_hemioct24_unorm(normal_vec4(a[0])).to_array()),
-    },
+    func!(prepass::wgsl::NORMAL_HEMIOCT; normal::hemioct; decode_normal_hemioct24_unorm(rgba) -> Vec3),
 ];
 
 pub const WGSL_HELPERS: &[(&str, &str)] = &[

@@ -1,7 +1,7 @@
 //! `wgsl/normal_oct.wgsl` and `normal::oct`: octahedral normals in 16, 24 and 32 bits, and the
 //! generic Rust-only octahedral functions.
 
-use super::normal::{B127, B247, normal_vec4};
+use super::normal::{B127, B247};
 use super::{Func, INF, NAN, NEG_NAN, Row, SNAN, SUB_MAX, SUB_MIN, V};
 use prepass::normal::oct;
 
@@ -38,20 +38,12 @@ pub const FUNCS: &[Func] = &[
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24_fast(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct24(u32) -> Vec3),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24_unorm(vec3) -> Vec4),
-    Func {
-        rust: "normal::oct::decode_normal_oct24_unorm",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct24_unorm")),
-        twin: |a| V::Vec3(oct::decode_normal_oct24_unorm(normal_vec4(a[0])).to_array()),
-    },
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct24_unorm(rgba) -> Vec3),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct32(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct32_fast(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct32(u32) -> Vec3),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct32_unorm(vec3) -> Vec4),
-    Func {
-        rust: "normal::oct::decode_normal_oct32_unorm",
-        wgsl: Some((prepass::wgsl::NORMAL_OCT, "decode_normal_oct32_unorm")),
-        twin: |a| V::Vec3(oct::decode_normal_oct32_unorm(normal_vec4(a[0])).to_array()),
-    },
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct32_unorm(rgba) -> Vec3),
     Func {
         rust: "normal::oct::max_code",
         wgsl: None,

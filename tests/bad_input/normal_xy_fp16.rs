@@ -1,7 +1,7 @@
 //! `wgsl/normal_xy_fp16.wgsl` and `normal::xy_fp16`: view-space x, y as two FP16, and the f16
 //! conversions (the twins of WGSL's `pack2x16float` and `unpack2x16float`).
 
-use super::normal::{B60, R2, normal_vec4};
+use super::normal::{B60, R2};
 use super::{Func, INF, NAN, NEG_NAN, Row, SNAN, SUB_MAX, SUB_MIN, V};
 use prepass::normal::xy_fp16;
 
@@ -14,11 +14,7 @@ pub const FUNCS: &[Func] = &[
     func!(prepass::wgsl::NORMAL_XY_FP16; normal::xy_fp16; encode_normal_xy_fp16(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_XY_FP16; normal::xy_fp16; decode_normal_xy_fp16(u32) -> Vec3),
     func!(prepass::wgsl::NORMAL_XY_FP16; normal::xy_fp16; encode_normal_xy_fp16_unorm(vec3) -> Vec4),
-    Func {
-        rust: "normal::xy_fp16::decode_normal_xy_fp16_unorm",
-        wgsl: Some((prepass::wgsl::NORMAL_XY_FP16, "decode_normal_xy_fp16_unorm")),
-        twin: |a| V::Vec3(xy_fp16::decode_normal_xy_fp16_unorm(normal_vec4(a[0])).to_array()),
-    },
+    func!(prepass::wgsl::NORMAL_XY_FP16; normal::xy_fp16; decode_normal_xy_fp16_unorm(rgba) -> Vec3),
     func!(None; normal::xy_fp16; pack2x16float(vec2) -> U32),
     Func {
         rust: "normal::xy_fp16::unpack2x16float",

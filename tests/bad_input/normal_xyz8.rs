@@ -1,18 +1,13 @@
 //! `wgsl/normal_xyz8.wgsl` and `normal::xyz8`: x, y, z in three unorm8 channels.
 
-use super::normal::{B128, R3, normal_vec4};
+use super::normal::{B128, R3};
 use super::{Func, INF, NAN, NEG_NAN, Row, SNAN, SUB_MAX, SUB_MIN, V};
-use prepass::normal::xyz8;
 
 pub const FUNCS: &[Func] = &[
     func!(prepass::wgsl::NORMAL_XYZ8; normal::xyz8; encode_normal_xyz8(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_XYZ8; normal::xyz8; decode_normal_xyz8(u32) -> Vec3),
     func!(prepass::wgsl::NORMAL_XYZ8; normal::xyz8; encode_normal_xyz8_unorm(vec3) -> Vec4),
-    Func {
-        rust: "normal::xyz8::decode_normal_xyz8_unorm",
-        wgsl: Some((prepass::wgsl::NORMAL_XYZ8, "decode_normal_xyz8_unorm")),
-        twin: |a| V::Vec3(xyz8::decode_normal_xyz8_unorm(normal_vec4(a[0])).to_array()),
-    },
+    func!(prepass::wgsl::NORMAL_XYZ8; normal::xyz8; decode_normal_xyz8_unorm(rgba) -> Vec3),
 ];
 
 pub const WGSL_HELPERS: &[(&str, &str)] = &[(

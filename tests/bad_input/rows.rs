@@ -187,6 +187,10 @@ impl V {
             v => panic!("{v:?} is not a vec4"),
         }
     }
+    /// A `vec4` argument as an array (the rgba8unorm decoders' channels).
+    pub fn rgba(self) -> [f32; 4] {
+        self.vec4().to_array()
+    }
     pub fn vec3(self) -> Vec3 {
         match self {
             V::Vec3(x) => Vec3::from(x),
