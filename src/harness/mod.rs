@@ -335,6 +335,20 @@ impl Kernel<'_> {
         )
     }
 
+    /// An error unless `args` has one entry per parameter of the function.
+    fn check_arity(&self, args: &[Arg<'_>]) -> Result<(), HarnessError> {
+        let sig = &self.signature;
+        if args.len() == sig.params.len() {
+            return Ok(());
+        }
+        Err(HarnessError::Arguments(format!(
+            "`{}` takes {} arguments, {} given",
+            sig.function,
+            sig.params.len(),
+            args.len()
+        )))
+    }
+
     /// Apply the function to `n` elements and return all results.
     pub fn run(&self, args: &[Arg<'_>], n: u64) -> Result<Output, HarnessError> {
         let total = usize::try_from(n)
@@ -362,14 +376,7 @@ impl Kernel<'_> {
         mut each: impl FnMut(u64, &Output) -> Result<(), HarnessError>,
     ) -> Result<(), HarnessError> {
         let sig = &self.signature;
-        if args.len() != sig.params.len() {
-            return Err(HarnessError::Arguments(format!(
-                "`{}` takes {} arguments, {} given",
-                sig.function,
-                sig.params.len(),
-                args.len()
-            )));
-        }
+        self.check_arity(args)?;
         for (p, a) in sig.params.iter().zip(args) {
             match a {
                 Arg::Column(bytes) => {

@@ -111,14 +111,7 @@ impl Kernel<'_> {
         if repeats == 0 {
             return Err(HarnessError::Arguments("repeats must be at least 1".into()));
         }
-        if args.len() != sig.params.len() {
-            return Err(HarnessError::Arguments(format!(
-                "`{}` takes {} arguments, {} given",
-                sig.function,
-                sig.params.len(),
-                args.len()
-            )));
-        }
+        self.check_arity(args)?;
         let gpu = self.gpu;
         if method == TimingMethod::TimestampQuery
             && !gpu

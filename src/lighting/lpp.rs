@@ -130,14 +130,31 @@ fn lpp_light(
     power: f32,
     phong: bool,
 ) -> Vec4 {
+    match lpp_terms(normal, to_eye, to_light, colour, attenuation, power, phong) {
+        Some((c, d, s)) => (d * c).extend(d * lpp_luminance(c) * s),
+        None => Vec4::ZERO,
+    }
+}
+
+/// What every P shares, operation for operation as the WGSL: `None` (P = 0) unless colour,
+/// attenuation and power are finite; else the clamped colour, `N·L·att` and the cosine term
+/// `cos^power` (Blinn-Phong's `N·H`, or Phong's `R·V`).
+fn lpp_terms(
+    normal: Vec3,
+    to_eye: Vec3,
+    to_light: Vec3,
+    colour: Vec3,
+    attenuation: f32,
+    power: f32,
+    phong: bool,
+) -> Option<(Vec3, f32, f32)> {
     if !lpp_finite3(colour) || !lpp_finite(attenuation) || !lpp_finite(power) {
-        return Vec4::ZERO;
+        return None;
     }
     let c = colour.clamp(Vec3::ZERO, Vec3::splat(LPP_COLOUR_MAX));
     let (n_dot_l, s) = lpp_cosines(normal, to_eye, to_light, phong);
     let d = n_dot_l * attenuation.clamp(0.0, 1.0);
-    let s = lpp_pow_cosine(s, power.clamp(0.0, LPP_COLOUR_MAX));
-    (d * c).extend(d * lpp_luminance(c) * s)
+    Some((c, d, lpp_pow_cosine(s, power.clamp(0.0, LPP_COLOUR_MAX))))
 }
 
 /// P for the one-buffer layout with Blinn-Phong specular:
@@ -217,13 +234,10 @@ pub fn lpp_blinn_phong_specular_rgb(
     attenuation: f32,
     power: f32,
 ) -> Vec3 {
-    if !lpp_finite3(colour) || !lpp_finite(attenuation) || !lpp_finite(power) {
-        return Vec3::ZERO;
+    match lpp_terms(normal, to_eye, to_light, colour, attenuation, power, false) {
+        Some((c, d, s)) => d * s * c,
+        None => Vec3::ZERO,
     }
-    let c = colour.clamp(Vec3::ZERO, Vec3::splat(LPP_COLOUR_MAX));
-    let (n_dot_l, s) = lpp_cosines(normal, to_eye, to_light, false);
-    let d = n_dot_l * attenuation.clamp(0.0, 1.0);
-    d * lpp_pow_cosine(s, power.clamp(0.0, LPP_COLOUR_MAX)) * c
 }
 
 /// Engel's reconstruction from an accumulated one-buffer texel: `(a / lum(rgb))^m · lum(rgb)`.

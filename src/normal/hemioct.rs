@@ -25,33 +25,9 @@ fn sanitize(n: Vec3) -> Vec3 {
     if c.iter().any(|x| x.is_nan()) {
         return Vec3::Z;
     }
-    let signed_zero = |x: f32| f32::from_bits(x.to_bits() & 0x8000_0000);
-    let flush = |x: f32| {
-        if x.to_bits() & 0x7f80_0000 == 0 {
-            signed_zero(x)
-        } else {
-            x
-        }
-    };
-    let mut c = if c.iter().any(|x| x.is_infinite()) {
-        c.map(|x| {
-            if x.is_infinite() {
-                f32::from_bits((x.to_bits() & 0x8000_0000) | 0x3f80_0000)
-            } else {
-                signed_zero(x)
-            }
-        })
-    } else {
-        c.map(flush)
-    };
+    let mut c = super::signs_or_flushed(c);
     c[2] = c[2].max(0.0);
-    let m = c[0].abs().max(c[1].abs()).max(c[2]);
-    if m == 0.0 {
-        return Vec3::Z;
-    }
-    let e = (m.to_bits() >> 23) & 0xff;
-    let scale = f32::from_bits((254 - e).max(1) << 23);
-    Vec3::from_array(c.map(|x| flush(x * scale)))
+    super::scale_to_unit_range(c).unwrap_or(Vec3::Z)
 }
 
 /// Continuous code coordinates in `[0, M]²` (as the WGSL computes them).

@@ -49,15 +49,27 @@ pub fn sanitize(n: Vec3) -> Option<Vec3> {
     if c.iter().any(|x| x.is_nan()) {
         return None;
     }
-    let signed_zero = |x: f32| f32::from_bits(x.to_bits() & 0x8000_0000);
-    let flush = |x: f32| {
-        if x.to_bits() & 0x7f80_0000 == 0 {
-            signed_zero(x)
-        } else {
-            x
-        }
-    };
-    let c = if c.iter().any(|x| x.is_infinite()) {
+    scale_to_unit_range(signs_or_flushed(c))
+}
+
+/// `x` with its exponent and mantissa cleared: `±0` of `x`'s sign.
+fn signed_zero(x: f32) -> f32 {
+    f32::from_bits(x.to_bits() & 0x8000_0000)
+}
+
+/// `x`, or `±0` of its sign when it is subnormal (as adapters that flush see it).
+fn flush(x: f32) -> f32 {
+    if x.to_bits() & 0x7f80_0000 == 0 {
+        signed_zero(x)
+    } else {
+        x
+    }
+}
+
+/// The middle step of [`sanitize`] on NaN-free components: if any is infinite, the vector of
+/// their signs (`±1` where infinite, signed zero elsewhere); otherwise subnormals flushed.
+pub(crate) fn signs_or_flushed(c: [f32; 3]) -> [f32; 3] {
+    if c.iter().any(|x| x.is_infinite()) {
         c.map(|x| {
             if x.is_infinite() {
                 f32::from_bits((x.to_bits() & 0x8000_0000) | 0x3f80_0000)
@@ -67,7 +79,12 @@ pub fn sanitize(n: Vec3) -> Option<Vec3> {
         })
     } else {
         c.map(flush)
-    };
+    }
+}
+
+/// The last step of [`sanitize`]: `None` for the zero vector, else `c` times the exact power of
+/// two that puts its largest magnitude in `[1, 4)`, components made subnormal flushed.
+pub(crate) fn scale_to_unit_range(c: [f32; 3]) -> Option<Vec3> {
     let m = c[0].abs().max(c[1].abs()).max(c[2].abs());
     if m == 0.0 {
         return None;
