@@ -504,7 +504,7 @@ fn point_and_spot_lights_match_their_twins_and_stay_finite() {
             assert!(got.iter().all(|x| x.is_finite()), "row {i}: {got:?}");
             // Same formulas; the attenuations are smooth in their inputs except at the spot's
             // edges, so compare with a tolerance of 1e-4 of the colour scale (a few ULP of the
-            // cosines through slopes ≤ 1/(cos_inner − cos_outer) ≤ 1e4·…) plus 1e-6 absolute.
+            // cosines through slopes ≤ 1/(cos_inner − cos_outer) ≤ 1e4·…) plus 1e-4 absolute (P near 0).
             let d = (Vec4::from(got) - twin).abs().max_element();
             assert_within!(
                 f64::from(d),

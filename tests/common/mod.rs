@@ -135,7 +135,7 @@ pub fn assert_decoder(name: &str, d: &prepass::sweep::normal::DecoderCheck) {
         d.not_unit
     );
     // Bound: only the per-component rounding of the final divide turns the direction:
-    // ≤ √2·2^-24 rad (plus the f64 angle's own 1e-15).
+    // ≤ √2·2^-24 rad, plus 1e-12° of slack for the f64 angle (its own rounding is ~1e-15°).
     prepass::assert_within!(
         d.max_angle_deg,
         (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12,
