@@ -121,16 +121,9 @@ pub fn lpp_cosines(normal: Vec3, to_eye: Vec3, to_light: Vec3, phong: bool) -> (
     (n_dot_l, spec.clamp(0.0, 1.0))
 }
 
-fn lpp_light(
-    normal: Vec3,
-    to_eye: Vec3,
-    to_light: Vec3,
-    colour: Vec3,
-    attenuation: f32,
-    power: f32,
-    phong: bool,
-) -> Vec4 {
-    match lpp_terms(normal, to_eye, to_light, colour, attenuation, power, phong) {
+/// The one-buffer texel of [`lpp_terms`]: `(d·c, d·lum(c)·s)`, or zero.
+fn lpp_light(terms: Option<(Vec3, f32, f32)>) -> Vec4 {
+    match terms {
         Some((c, d, s)) => (d * c).extend(d * lpp_luminance(c) * s),
         None => Vec4::ZERO,
     }
@@ -167,7 +160,15 @@ pub fn lpp_blinn_phong_light(
     attenuation: f32,
     power: f32,
 ) -> Vec4 {
-    lpp_light(normal, to_eye, to_light, colour, attenuation, power, false)
+    lpp_light(lpp_terms(
+        normal,
+        to_eye,
+        to_light,
+        colour,
+        attenuation,
+        power,
+        false,
+    ))
 }
 
 /// P for the one-buffer layout with Phong specular: `(…, N·L·att·lum(colour)·(R·V)^power)`.
@@ -179,7 +180,15 @@ pub fn lpp_phong_light(
     attenuation: f32,
     power: f32,
 ) -> Vec4 {
-    lpp_light(normal, to_eye, to_light, colour, attenuation, power, true)
+    lpp_light(lpp_terms(
+        normal,
+        to_eye,
+        to_light,
+        colour,
+        attenuation,
+        power,
+        true,
+    ))
 }
 
 /// P of a point light (`colour_radius` = colour, radius) with Blinn-Phong specular.
