@@ -359,11 +359,24 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
                 "{t:?}: specular vs lum(rgb) {lum}"
             );
         }
+        // Same formula on both sides: the twin is `x^m·lum` with `x = ratio`; each side's pow
+        // within pow_bound(x, m) of x^m, with `x` recovered from the twin as (twin/lum)^(1/m).
+        // The rest: lum(rgb) (three products, two sums: 5u per side), the division (2.5 ULP on
+        // the adapter, 0.5 in the twin: 6u), the final product (u per side): 18u, taken as 32u.
+        // An absolute 1e-30 covers the 2^-126 guards.
+        let m = f64::from(mats[i].clamp(0.0, 65504.0));
+        let (tw, lum64) = (f64::from(twin), f64::from(lum));
+        let ratio = if lum64 > 0.0 { tw / lum64 } else { 0.0 };
+        let pow_tol = if ratio > 0.0 && ratio < 1.0 && m > 0.0 {
+            2.0 * pow_bound(ratio.powf(1.0 / m), m)
+        } else {
+            0.0
+        };
         assert_within_abs!(
             f64::from(v),
-            f64::from(twin),
-            1e-4 * f64::from(twin.abs()) + 1e-30,
-            "literal, no derivation given: 1e-4 of the twin + 1e-30 absolute",
+            tw,
+            (pow_tol + 32.0 * U) * tw.abs() + 1e-30,
+            "comment above: 2·pow_bound(x, m) + 32u of the twin, + 1e-30 absolute",
             "texel {t:?} m {}",
             mats[i]
         );
