@@ -250,16 +250,16 @@ pub mod exact {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::precision::metrics::ulp_error;
 
     #[test]
     fn planes_map_to_near_and_far() {
         assert_eq!(view_z_from_depth24(0, 0.1, 100.0), 0.1);
-        crate::assert_within_abs!(
-            view_z_from_depth24(DEPTH24_MAX, 0.1, 100.0),
-            100.0,
-            100.0_f32 * 2e-7,
-            "literal: 2e-7 relative, ≈ 2.6 ULP at 100 (a spot check)",
-            "the far plane's code"
+        crate::assert_within!(
+            ulp_error(view_z_from_depth24(DEPTH24_MAX, 0.1, 100.0), 100.0),
+            bounds::DEPTH24_CORRECTLY_ROUNDED,
+            "bounds::DEPTH24_CORRECTLY_ROUNDED",
+            "the far plane's code, ULP"
         );
         assert_eq!(
             view_z_from_depth24(DEPTH24_MAX, 0.1, f32::INFINITY),
@@ -272,12 +272,11 @@ mod tests {
             view_z_from_reversed_depth(0.0, 0.5, f32::INFINITY),
             f32::INFINITY
         );
-        crate::assert_within_abs!(
-            view_z_from_reversed_depth(0.0, 0.5, 10.0),
-            10.0,
-            10.0_f32 * 2e-7,
-            "literal: 2e-7 relative, ≈ 2.1 ULP at 10 (a spot check)",
-            "the reversed far plane"
+        crate::assert_within!(
+            ulp_error(view_z_from_reversed_depth(0.0, 0.5, 10.0), 10.0),
+            bounds::FLOAT_CORRECTLY_ROUNDED,
+            "bounds::FLOAT_CORRECTLY_ROUNDED",
+            "the reversed far plane, ULP"
         );
     }
 
