@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, run_kernel};
 use glam::{Vec3, Vec4};
 use prepass::harness::{Arg, Kernel};
 use prepass::lighting::aggregate_light;
@@ -368,19 +368,17 @@ fn bad_input_is_skipped_identically_on_both_sides() {
             w.push(weight);
         }
     }
-    let out = gpu()
-        .kernel(AGGREGATE_LIGHT, "aggregate_light_accumulate")
-        .unwrap()
-        .run(
-            &[
-                Arg::column(&acc),
-                Arg::column(&vertex),
-                Arg::column(&pos),
-                Arg::column(&w),
-            ],
-            acc.len() as u64,
-        )
-        .unwrap();
+    let out = run_kernel(
+        AGGREGATE_LIGHT,
+        "aggregate_light_accumulate",
+        &[
+            Arg::column(&acc),
+            Arg::column(&vertex),
+            Arg::column(&pos),
+            Arg::column(&w),
+        ],
+        acc.len() as u64,
+    );
     for (i, got) in out.as_vec4().iter().enumerate() {
         assert!(got.iter().all(|x| x.is_finite()), "row {i}: {got:?}");
         let twin = aggregate_light::aggregate_light_accumulate(
@@ -403,11 +401,12 @@ fn bad_input_is_skipped_identically_on_both_sides() {
         }
     }
     // Empty accumulator: direction zero, position the vertex, diffuse zero.
-    let d = gpu()
-        .kernel(AGGREGATE_LIGHT, "aggregate_light_direction")
-        .unwrap()
-        .run(&[Arg::column(&[[0.0f32; 4], [f32::NAN, 0.0, 0.0, 1.0]])], 2)
-        .unwrap();
+    let d = run_kernel(
+        AGGREGATE_LIGHT,
+        "aggregate_light_direction",
+        &[Arg::column(&[[0.0f32; 4], [f32::NAN, 0.0, 0.0, 1.0]])],
+        2,
+    );
     assert_eq!(d.as_vec3(), &[[0.0; 3], [0.0; 3]]);
     assert_eq!(
         aggregate_light::aggregate_light_direction(Vec4::ZERO),

@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, run_kernel};
 use prepass::conforming::{EmulatedKernel, Emulation, Freedoms, HostAccuracy, Policy, allowance};
 use prepass::harness::{Arg, Signature};
 use prepass::{assert_at_least, assert_within, assert_within_abs};
@@ -754,11 +754,7 @@ fn identity_reproduces_every_shipped_module_bit_for_bit() {
                 .map(|(k, p)| column_for(p.ty, n, 0x9e37_79b9 ^ ((k as u64 + 1) * 0x1000_0001)))
                 .collect();
             let args: Vec<Arg<'_>> = cols.iter().map(|c| Arg::column(c)).collect();
-            let original = gpu()
-                .kernel(file.source, name)
-                .unwrap()
-                .run(&args, n as u64)
-                .unwrap();
+            let original = run_kernel(file.source, name, &args, n as u64);
             let k =
                 EmulatedKernel::new(gpu(), file.source, name, &Emulation::new(Policy::Identity))
                     .unwrap_or_else(|e| panic!("{}: {name}: {e}", file.name));

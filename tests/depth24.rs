@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, run_kernel};
 use glam::Vec3;
 use prepass::depth24::{self, DEPTH24_MAX};
 use prepass::harness::Arg;
@@ -87,13 +87,8 @@ fn unrounded_baseline_reproduces_the_talks_problem() {
 
 #[test]
 fn packed_paths_are_exact_and_match_the_twin_for_every_code() {
-    let g = gpu();
-    let packed = g
-        .kernel(DEPTH24, "pack_depth24")
-        .unwrap()
-        .run(&[Arg::Index { start: 0 }], CODES)
-        .unwrap()
-        .into_words();
+    let packed =
+        run_kernel(DEPTH24, "pack_depth24", &[Arg::Index { start: 0 }], CODES).into_words();
     let twin = Mismatches::count(&packed, |d| depth24::pack_depth24(d as u32));
     assert_eq!(twin.count, 0, "pack_depth24 twin differs: {:?}", twin.first);
     assert!(
@@ -107,12 +102,13 @@ fn packed_paths_are_exact_and_match_the_twin_for_every_code() {
         .enumerate()
         .map(|(d, p)| p | ((d as u32).wrapping_mul(0x9e37_79b9) & 0xff00_0000))
         .collect();
-    let codes = g
-        .kernel(DEPTH24, "depth24_from_packed")
-        .unwrap()
-        .run(&[Arg::column(&with_alpha)], CODES)
-        .unwrap()
-        .into_words();
+    let codes = run_kernel(
+        DEPTH24,
+        "depth24_from_packed",
+        &[Arg::column(&with_alpha)],
+        CODES,
+    )
+    .into_words();
     let m = Mismatches::count(&codes, |d| d as u32);
     assert_eq!(m.count, 0, "depth24_from_packed: {:?}", m.first);
     let twin = Mismatches::count(&codes, |i| depth24::depth24_from_packed(with_alpha[i]));
@@ -122,12 +118,7 @@ fn packed_paths_are_exact_and_match_the_twin_for_every_code() {
     let src = format!(
         "{DEPTH24}\nfn roundtrip(d: u32) -> u32 {{ return depth24_from_rgb8(unpack4x8unorm(pack_depth24(d)).xyz); }}"
     );
-    let back = g
-        .kernel(&src, "roundtrip")
-        .unwrap()
-        .run(&[Arg::Index { start: 0 }], CODES)
-        .unwrap()
-        .into_words();
+    let back = run_kernel(&src, "roundtrip", &[Arg::Index { start: 0 }], CODES).into_words();
     let m = Mismatches::count(&back, |d| d as u32);
     assert_eq!(m.count, 0, "unpack4x8unorm round trip: {:?}", m.first);
 }
@@ -225,11 +216,12 @@ fn bad_channels_give_the_documented_clamped_code_on_both_sides() {
             }
         }
     }
-    let out = gpu()
-        .kernel(DEPTH24, "depth24_from_rgb8")
-        .unwrap()
-        .run(&[Arg::column(&rgb)], rgb.len() as u64)
-        .unwrap();
+    let out = run_kernel(
+        DEPTH24,
+        "depth24_from_rgb8",
+        &[Arg::column(&rgb)],
+        rgb.len() as u64,
+    );
     for (i, (&got, c)) in out.as_u32().iter().zip(&rgb).enumerate() {
         let want = (byte(c[0]) << 16) | (byte(c[1]) << 8) | byte(c[2]);
         assert_eq!(got, want, "WGSL, input {i}: {c:?}");
@@ -243,20 +235,11 @@ fn bad_channels_give_the_documented_clamped_code_on_both_sides() {
 
 #[test]
 fn codes_above_24_bits_saturate_on_both_sides() {
-    let g = gpu();
     let n = 4096u64; // the top of the u32 range, and just above 2^24 − 1
     for start in [u32::MAX - 4095, DEPTH24_MAX + 1] {
         let idx = [Arg::Index { start }];
-        let packed = g
-            .kernel(DEPTH24, "pack_depth24")
-            .unwrap()
-            .run(&idx, n)
-            .unwrap();
-        let hyper = g
-            .kernel(DEPTH24, "hyperbolic_depth_from_depth24")
-            .unwrap()
-            .run(&idx, n)
-            .unwrap();
+        let packed = run_kernel(DEPTH24, "pack_depth24", &idx, n);
+        let hyper = run_kernel(DEPTH24, "hyperbolic_depth_from_depth24", &idx, n);
         for i in 0..n as usize {
             let d = start.wrapping_add(i as u32);
             assert_eq!(packed.as_u32()[i], 0x00ff_ffff, "pack_depth24({d})");
@@ -345,12 +328,13 @@ fn recovery_survives_emulation() {
             );
         }
         let e = emulate(&round_trip, &Emulation::new(policy)).unwrap();
-        let back = gpu()
-            .kernel(&e.source, e.function_name("roundtrip").unwrap())
-            .unwrap()
-            .run(&[Arg::Index { start: 0 }], CODES)
-            .unwrap()
-            .into_words();
+        let back = run_kernel(
+            &e.source,
+            e.function_name("roundtrip").unwrap(),
+            &[Arg::Index { start: 0 }],
+            CODES,
+        )
+        .into_words();
         let m = Mismatches::count(&back, |d| d as u32);
         eprintln!(
             "emulated {policy}: pack → unpack4x8unorm → recover: {} wrong codes",

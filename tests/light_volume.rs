@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, run_kernel};
 use glam::{Vec2, Vec3};
 use prepass::assert_within;
 use prepass::harness::Arg;
@@ -69,17 +69,18 @@ fn sphere_depth_bounds_contain_every_surface_point_and_are_tight() {
         Arg::column(&f),
         Arg::column(&rev),
     ];
-    let g = gpu();
-    let bounds = g
-        .kernel(LIGHT_VOLUME, "light_volume_sphere_depth_bounds")
-        .unwrap()
-        .run(&args, cases.len() as u64)
-        .unwrap();
-    let codes = g
-        .kernel(LIGHT_VOLUME, "light_volume_sphere_depth_bounds24")
-        .unwrap()
-        .run(&args, cases.len() as u64)
-        .unwrap();
+    let bounds = run_kernel(
+        LIGHT_VOLUME,
+        "light_volume_sphere_depth_bounds",
+        &args,
+        cases.len() as u64,
+    );
+    let codes = run_kernel(
+        LIGHT_VOLUME,
+        "light_volume_sphere_depth_bounds24",
+        &args,
+        cases.len() as u64,
+    );
     let (mut points, mut empty) = (0u64, 0u64);
     let (mut loose_u, mut loose_codes) = (0.0f64, 0.0f64);
     let mut rng = prepass::sweep::SplitMix(3);
@@ -225,18 +226,16 @@ fn sphere_stencil_choice_is_conservative() {
         .iter()
         .map(|c| light_volume::light_volume_near_corner_distance(c.2, c.3, c.4))
         .collect();
-    let out = gpu()
-        .kernel(LIGHT_VOLUME, "light_volume_sphere_needs_depth_fail")
-        .unwrap()
-        .run(
-            &[
-                Arg::column(&centers),
-                Arg::column(&radii),
-                Arg::column(&rho),
-            ],
-            cases.len() as u64,
-        )
-        .unwrap();
+    let out = run_kernel(
+        LIGHT_VOLUME,
+        "light_volume_sphere_needs_depth_fail",
+        &[
+            Arg::column(&centers),
+            Arg::column(&radii),
+            Arg::column(&rho),
+        ],
+        cases.len() as u64,
+    );
     let (mut needed, mut extra, mut safe) = (0, 0, 0);
     for (i, &got) in out.as_u32().iter().enumerate() {
         let (c, r, n, tx, ty) = cases[i];
@@ -290,19 +289,17 @@ fn cone_stencil_choice_is_conservative() {
         .iter()
         .map(|c| light_volume::light_volume_near_corner_distance(c.4, c.5, c.5))
         .collect();
-    let out = gpu()
-        .kernel(LIGHT_VOLUME, "light_volume_cone_needs_depth_fail")
-        .unwrap()
-        .run(
-            &[
-                Arg::column(&apex),
-                Arg::column(&axis),
-                Arg::column(&rt),
-                Arg::column(&rho),
-            ],
-            cases.len() as u64,
-        )
-        .unwrap();
+    let out = run_kernel(
+        LIGHT_VOLUME,
+        "light_volume_cone_needs_depth_fail",
+        &[
+            Arg::column(&apex),
+            Arg::column(&axis),
+            Arg::column(&rt),
+            Arg::column(&rho),
+        ],
+        cases.len() as u64,
+    );
     let (mut needed, mut flagged, mut twin_diff) = (0, 0, 0);
     for (i, &got) in out.as_u32().iter().enumerate() {
         let (a, d, h, k, n, t) = cases[i];

@@ -10,7 +10,7 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, run_kernel};
 use prepass::harness::Arg;
 use prepass::linear_depth as ld;
 use prepass::projection::DepthConvention::{Reversed, Standard};
@@ -203,14 +203,12 @@ fn bad_depths_give_the_documented_answers_on_both_sides() {
         ("view_z_from_reversed_depth", Reversed),
     ] {
         for far in [f, f32::INFINITY] {
-            let out = gpu()
-                .kernel(LINEAR_DEPTH, func)
-                .unwrap()
-                .run(
-                    &[Arg::column(&zs), Arg::splat_f32(n), Arg::splat_f32(far)],
-                    zs.len() as u64,
-                )
-                .unwrap();
+            let out = run_kernel(
+                LINEAR_DEPTH,
+                func,
+                &[Arg::column(&zs), Arg::splat_f32(n), Arg::splat_f32(far)],
+                zs.len() as u64,
+            );
             for (&z, &got) in zs.iter().zip(out.as_f32()) {
                 let twin = match conv {
                     Standard => ld::view_z_from_depth(z, n, far),
@@ -252,14 +250,12 @@ fn bad_depths_give_the_documented_answers_on_both_sides() {
     // Codes above 2^24 − 1 saturate to the far plane.
     let codes = [0x00ff_ffffu32, 0x0100_0000, u32::MAX];
     for far in [f, f32::INFINITY] {
-        let out = gpu()
-            .kernel(LINEAR_DEPTH, "view_z_from_depth24")
-            .unwrap()
-            .run(
-                &[Arg::column(&codes), Arg::splat_f32(n), Arg::splat_f32(far)],
-                3,
-            )
-            .unwrap();
+        let out = run_kernel(
+            LINEAR_DEPTH,
+            "view_z_from_depth24",
+            &[Arg::column(&codes), Arg::splat_f32(n), Arg::splat_f32(far)],
+            3,
+        );
         let far_code = ld::view_z_from_depth24(0x00ff_ffff, n, far);
         for (&d, &got) in codes.iter().zip(out.as_f32()) {
             assert_eq!(ld::view_z_from_depth24(d, n, far), far_code);

@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, run_kernel};
 use glam::{Vec3, Vec4};
 use prepass::harness::Arg;
 use prepass::lighting::lpp;
@@ -79,11 +79,7 @@ fn single_white_light(emulation: Option<prepass::conforming::Emulation>) {
         Arg::column(&params),
     ];
     let out = match &emulation {
-        None => gpu()
-            .kernel(&src, "single")
-            .unwrap()
-            .run(&args, n as u64)
-            .unwrap(),
+        None => run_kernel(&src, "single", &args, n as u64),
         Some(e) => {
             let k = prepass::conforming::EmulatedKernel::new(gpu(), &src, "single", e).unwrap();
             k.run(&args, n as u64).unwrap().0
@@ -252,11 +248,7 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
         Arg::column(&power),
     ];
     for f in ["lpp_blinn_phong_light", "lpp_phong_light"] {
-        let out = gpu()
-            .kernel(LPP, f)
-            .unwrap()
-            .run(&args, rows as u64)
-            .unwrap();
+        let out = run_kernel(LPP, f, &args, rows as u64);
         for (i, v) in out.as_vec4().iter().enumerate() {
             assert!(v.iter().all(|x| x.is_finite()), "{f} row {i}: {v:?}");
             let twin = if f == "lpp_phong_light" {
@@ -337,14 +329,12 @@ fn bad_input_never_gives_nan_or_inf_and_matches_the_documented_answer() {
             }
         }
     }
-    let out = gpu()
-        .kernel(LPP, "lpp_reconstruct_specular")
-        .unwrap()
-        .run(
-            &[Arg::column(&texels), Arg::column(&mats)],
-            texels.len() as u64,
-        )
-        .unwrap();
+    let out = run_kernel(
+        LPP,
+        "lpp_reconstruct_specular",
+        &[Arg::column(&texels), Arg::column(&mats)],
+        texels.len() as u64,
+    );
     for (i, &v) in out.as_f32().iter().enumerate() {
         let t = texels[i];
         let twin = lpp::lpp_reconstruct_specular(Vec4::from(t), mats[i]);
@@ -401,18 +391,16 @@ fn two_buffer_layout_and_combination_agree_with_the_one_buffer_layout() {
          let two = lpp_combine_two_buffers(albedo, gloss, diff, vec3<f32>(lpp_luminance(spec)));\n\
          return vec4<f32>(one - two, length(one));\n}}"
     );
-    let out = gpu()
-        .kernel(&src, "both")
-        .unwrap()
-        .run(
-            &[
-                Arg::column(&normals),
-                Arg::column(&eyes),
-                Arg::column(&lights),
-            ],
-            n as u64,
-        )
-        .unwrap();
+    let out = run_kernel(
+        &src,
+        "both",
+        &[
+            Arg::column(&normals),
+            Arg::column(&eyes),
+            Arg::column(&lights),
+        ],
+        n as u64,
+    );
     let mut worst = 0.0f64;
     for v in out.as_vec4() {
         let d = Vec3::new(v[0], v[1], v[2]).length();
@@ -472,37 +460,32 @@ fn point_and_spot_lights_match_their_twins_and_stay_finite() {
         inner.push(inn);
         power.push(rng.range(1.0, 64.0));
     }
-    let g = gpu();
-    let point = g
-        .kernel(LPP, "lpp_point_light")
-        .unwrap()
-        .run(
-            &[
-                Arg::column(&normals),
-                Arg::column(&eyes),
-                Arg::column(&to_light),
-                Arg::column(&colour_radius),
-                Arg::column(&power),
-            ],
-            n as u64,
-        )
-        .unwrap();
-    let spot = g
-        .kernel(LPP, "lpp_spot_light")
-        .unwrap()
-        .run(
-            &[
-                Arg::column(&normals),
-                Arg::column(&eyes),
-                Arg::column(&to_light),
-                Arg::column(&colour_radius),
-                Arg::column(&axis),
-                Arg::column(&inner),
-                Arg::column(&power),
-            ],
-            n as u64,
-        )
-        .unwrap();
+    let point = run_kernel(
+        LPP,
+        "lpp_point_light",
+        &[
+            Arg::column(&normals),
+            Arg::column(&eyes),
+            Arg::column(&to_light),
+            Arg::column(&colour_radius),
+            Arg::column(&power),
+        ],
+        n as u64,
+    );
+    let spot = run_kernel(
+        LPP,
+        "lpp_spot_light",
+        &[
+            Arg::column(&normals),
+            Arg::column(&eyes),
+            Arg::column(&to_light),
+            Arg::column(&colour_radius),
+            Arg::column(&axis),
+            Arg::column(&inner),
+            Arg::column(&power),
+        ],
+        n as u64,
+    );
     let (mut worst, mut lit) = (0.0f64, 0);
     for i in 0..n {
         let (nv, ev, lv) = (

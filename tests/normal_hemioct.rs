@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, run_kernel};
 use prepass::assert_within;
 use prepass::harness::Arg;
 use prepass::normal::hemioct;
@@ -77,11 +77,12 @@ fn every_code_decodes_to_a_unit_vector_in_the_upper_hemisphere() {
     let codes: Vec<u32> = (0u32..1 << 16)
         .map(|i| i.wrapping_mul(0x9e37_79b9))
         .collect();
-    let out = gpu()
-        .kernel(c.source, c.decode)
-        .unwrap()
-        .run(&[Arg::column(&codes)], codes.len() as u64)
-        .unwrap();
+    let out = run_kernel(
+        c.source,
+        c.decode,
+        &[Arg::column(&codes)],
+        codes.len() as u64,
+    );
     for (i, v) in out.as_vec3().iter().enumerate() {
         assert!(v[2] >= 0.0);
         assert_eq!(

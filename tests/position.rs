@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, run_kernel};
 use glam::{Mat3, Vec2, Vec3};
 use prepass::assert_within;
 use prepass::harness::Arg;
@@ -74,14 +74,14 @@ fn view_position_within_view_z_error_plus_two_roundings_over_screen_and_fov() {
             Arg::column(&codes),
             Arg::splat_vec(&[near, far]),
         ];
-        let g = gpu();
-        let p = g.kernel(&src, "rebuild").unwrap().run(&args, n).unwrap();
-        let p_rh = g.kernel(&src, "rebuild_rh").unwrap().run(&args, n).unwrap();
-        let vz = g
-            .kernel(&src, "vz_only")
-            .unwrap()
-            .run(&[Arg::column(&codes), Arg::splat_vec(&[near, far])], n)
-            .unwrap();
+        let p = run_kernel(&src, "rebuild", &args, n);
+        let p_rh = run_kernel(&src, "rebuild_rh", &args, n);
+        let vz = run_kernel(
+            &src,
+            "vz_only",
+            &[Arg::column(&codes), Arg::splat_vec(&[near, far])],
+            n,
+        );
         for k in 0..ndc.len() {
             let vz_exact = exact::view_z_from_depth24(codes[k], near, far);
             let e_vz = relative_error(f64::from(vz.as_f32()[k]), vz_exact);
@@ -166,36 +166,31 @@ fn world_rebuild_error_grows_with_camera_distance_and_camera_relative_does_not()
     for exp10 in 0..=7 {
         let dist = 10f32.powi(exp10);
         let cam = (dir * dist).to_array();
-        let g = gpu();
-        let world = g
-            .kernel(&src, "world_rebuild")
-            .unwrap()
-            .run(
-                &[
-                    Arg::column(&rays),
-                    Arg::column(&vzs),
-                    Arg::splat_vec(&cam),
-                    Arg::splat_vec(&cols[0]),
-                    Arg::splat_vec(&cols[1]),
-                    Arg::splat_vec(&cols[2]),
-                ],
-                n,
-            )
-            .unwrap();
-        let rel = g
-            .kernel(&src, "relative_rebuild")
-            .unwrap()
-            .run(
-                &[
-                    Arg::column(&rays),
-                    Arg::column(&vzs),
-                    Arg::splat_vec(&cols[0]),
-                    Arg::splat_vec(&cols[1]),
-                    Arg::splat_vec(&cols[2]),
-                ],
-                n,
-            )
-            .unwrap();
+        let world = run_kernel(
+            &src,
+            "world_rebuild",
+            &[
+                Arg::column(&rays),
+                Arg::column(&vzs),
+                Arg::splat_vec(&cam),
+                Arg::splat_vec(&cols[0]),
+                Arg::splat_vec(&cols[1]),
+                Arg::splat_vec(&cols[2]),
+            ],
+            n,
+        );
+        let rel = run_kernel(
+            &src,
+            "relative_rebuild",
+            &[
+                Arg::column(&rays),
+                Arg::column(&vzs),
+                Arg::splat_vec(&cols[0]),
+                Arg::splat_vec(&cols[1]),
+                Arg::splat_vec(&cols[2]),
+            ],
+            n,
+        );
         let (mut world_max, mut rel_max, mut rel_scaled) = (0.0f64, 0.0f64, 0.0f64);
         for k in 0..rays.len() {
             let r = rays[k].map(f64::from);
@@ -243,12 +238,12 @@ fn world_rebuild_error_grows_with_camera_distance_and_camera_relative_does_not()
 
 #[test]
 fn fullscreen_triangle_and_uv_helpers_match_their_twins() {
-    let g = gpu();
-    let out = g
-        .kernel(POSITION, "fullscreen_triangle_ndc")
-        .unwrap()
-        .run(&[Arg::Index { start: 0 }], 8)
-        .unwrap();
+    let out = run_kernel(
+        POSITION,
+        "fullscreen_triangle_ndc",
+        &[Arg::Index { start: 0 }],
+        8,
+    );
     for (i, v) in out.as_vec2().iter().enumerate() {
         assert_eq!(
             *v,
@@ -267,11 +262,12 @@ fn fullscreen_triangle_and_uv_helpers_match_their_twins() {
             pos::fullscreen_triangle_ray_rh,
         ),
     ] {
-        let out = g
-            .kernel(POSITION, f)
-            .unwrap()
-            .run(&[Arg::Index { start: 0 }, Arg::splat_vec(&tan)], 3)
-            .unwrap();
+        let out = run_kernel(
+            POSITION,
+            f,
+            &[Arg::Index { start: 0 }, Arg::splat_vec(&tan)],
+            3,
+        );
         for (i, v) in out.as_vec3().iter().enumerate() {
             assert_eq!(
                 *v,
@@ -283,11 +279,12 @@ fn fullscreen_triangle_and_uv_helpers_match_their_twins() {
     let uv: Vec<[f32; 2]> = (0..4096)
         .map(|k| [(k % 64) as f32 / 63.0, (k / 64) as f32 / 63.0])
         .collect();
-    let out = g
-        .kernel(POSITION, "ndc_from_uv")
-        .unwrap()
-        .run(&[Arg::column(&uv)], uv.len() as u64)
-        .unwrap();
+    let out = run_kernel(
+        POSITION,
+        "ndc_from_uv",
+        &[Arg::column(&uv)],
+        uv.len() as u64,
+    );
     for (k, v) in out.as_vec2().iter().enumerate() {
         // 2u is exact, so 2u − 1 has one rounding fused or not: bit-identical.
         assert_eq!(*v, pos::ndc_from_uv(Vec2::from(uv[k])).to_array());

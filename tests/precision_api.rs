@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, run_kernel};
 use prepass::depth24;
 use prepass::harness::{Arg, ValueType};
 use prepass::precision::check::{
@@ -58,11 +58,12 @@ fn off_by_one_depth_is_found_and_shrunk_to_the_smallest_failing_code() {
     // Independent answer: sweep the first 4096 codes through the same WGSL on the adapter and
     // take the first whose error exceeds the bound. (Derivation: d = 0 is exact; d = 1 gives
     // 2^-24 where 2^-24·(1 + 2^-24 + …) was meant, 0.5·(1 + 2^-24 + …) ULP > 0.5.)
-    let sweep = gpu()
-        .kernel(WRONG_DEPTH, "depth_unit_wrong")
-        .unwrap()
-        .run(&[Arg::Index { start: 0 }], 4096)
-        .unwrap();
+    let sweep = run_kernel(
+        WRONG_DEPTH,
+        "depth_unit_wrong",
+        &[Arg::Index { start: 0 }],
+        4096,
+    );
     let smallest = (0u32..4096)
         .find(|&d| ulps(&sweep.as_f32()[d as usize], &exact_depth(&d)) > CORRECTLY_ROUNDED)
         .expect("the sweep finds a failing code");

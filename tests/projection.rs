@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::gpu;
+use common::run_kernel;
 use prepass::depth24::{DEPTH24_MAX, hyperbolic_depth_from_depth24};
 use prepass::harness::Arg;
 use prepass::linear_depth::{self as ld, exact};
@@ -112,11 +112,7 @@ proptest! {
         let near: Vec<f32> = cases.iter().map(|c| c.0.0).collect();
         let far: Vec<f32> = cases.iter().map(|c| c.0.1).collect();
         let code: Vec<u32> = cases.iter().map(|c| c.1).collect();
-        let out = gpu()
-            .kernel(prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth24")
-            .unwrap()
-            .run(&[Arg::column(&code), Arg::column(&near), Arg::column(&far)], code.len() as u64)
-            .unwrap();
+        let out = run_kernel(prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth24", &[Arg::column(&code), Arg::column(&near), Arg::column(&far)], code.len() as u64);
         for (k, &got) in out.as_f32().iter().enumerate() {
             let twin = ld::view_z_from_depth24(code[k], near[k], far[k]);
             // Within 1 ULP of the twin (the bound; only fusion could separate them)…

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::gpu;
+use common::{gpu, run_kernel};
 use prepass::harness::Arg;
 use prepass::roughness::{self, quantisation_limit};
 use prepass::sweep::roughness::{
@@ -170,17 +170,15 @@ fn general_ranges_stay_within_their_derived_bound() {
         let dec = roughness::bounds::general_range_decode(max);
         let bound = roughness::bounds::general_range(max);
         let ps = sampled_powers(max);
-        let out = gpu()
-            .kernel(
-                &format!(
-                    "{ROUGHNESS}\nfn rt(p: f32, m: f32) -> vec2<u32> {{ let c = encode_log_roughness(p, m); \
+        let out = run_kernel(
+            &format!(
+                "{ROUGHNESS}\nfn rt(p: f32, m: f32) -> vec2<u32> {{ let c = encode_log_roughness(p, m); \
                      return vec2<u32>(c, bitcast<u32>(decode_log_roughness(c, m))); }}"
-                ),
-                "rt",
-            )
-            .unwrap()
-            .run(&[Arg::column(&ps), Arg::splat_f32(max)], ps.len() as u64)
-            .unwrap();
+            ),
+            "rt",
+            &[Arg::column(&ps), Arg::splat_f32(max)],
+            ps.len() as u64,
+        );
         let mut worst = 0.0f64;
         let (mut code_diff, mut value_diff) = (0u64, 0u64);
         for (p, w) in ps.iter().zip(out.words().chunks_exact(2)) {
@@ -276,11 +274,12 @@ fn bad_input_gives_the_documented_answers_on_both_sides() {
             ms.push(m);
         }
     }
-    let codes = gpu()
-        .kernel(ROUGHNESS, "encode_log_roughness")
-        .unwrap()
-        .run(&[Arg::column(&ps), Arg::column(&ms)], ps.len() as u64)
-        .unwrap();
+    let codes = run_kernel(
+        ROUGHNESS,
+        "encode_log_roughness",
+        &[Arg::column(&ps), Arg::column(&ms)],
+        ps.len() as u64,
+    );
     for (i, &c) in codes.as_u32().iter().enumerate() {
         let (p, m) = (ps[i], ms[i]);
         assert_eq!(c, roughness::encode_log_roughness(p, m), "p={p} max={m}");
@@ -298,11 +297,12 @@ fn bad_input_gives_the_documented_answers_on_both_sides() {
     }
     let ks: Vec<u32> = [0u32, 1, 128, 254, 255, 256, 1000, u32::MAX].repeat(maxes.len());
     let ms2: Vec<f32> = maxes.iter().flat_map(|&m| [m; 8]).collect();
-    let values = gpu()
-        .kernel(ROUGHNESS, "decode_log_roughness")
-        .unwrap()
-        .run(&[Arg::column(&ks), Arg::column(&ms2)], ks.len() as u64)
-        .unwrap();
+    let values = run_kernel(
+        ROUGHNESS,
+        "decode_log_roughness",
+        &[Arg::column(&ks), Arg::column(&ms2)],
+        ks.len() as u64,
+    );
     for (i, &v) in values.as_f32().iter().enumerate() {
         let (k, m) = (ks[i], ms2[i]);
         assert!(v.is_finite() && v >= 1.0, "code {k} max {m}: {v}");
@@ -331,7 +331,6 @@ fn bad_input_gives_the_documented_answers_on_both_sides() {
 #[test]
 fn normal_and_roughness_share_one_texel() {
     // Every 24-bit normal pattern with junk in byte 3, against a few codes (and out-of-range).
-    let g = gpu();
     let n = 1u64 << 24;
     for code in [0u32, 1, 128, 255, 256, u32::MAX] {
         let src = format!(
@@ -339,11 +338,12 @@ fn normal_and_roughness_share_one_texel() {
              let t = pack_normal_xyz8_log_roughness(nrm, code); \
              return vec3<u32>(t, normal_xyz8_from_log_roughness_texel(t), log_roughness_code_from_texel(t)); }}"
         );
-        let out = g
-            .kernel(&src, "t")
-            .unwrap()
-            .run(&[Arg::Index { start: 0 }, Arg::splat_u32(code)], n)
-            .unwrap();
+        let out = run_kernel(
+            &src,
+            "t",
+            &[Arg::Index { start: 0 }, Arg::splat_u32(code)],
+            n,
+        );
         for (i, w) in out.words().chunks_exact(3).enumerate() {
             let i = i as u32;
             let nrm = i | (i.wrapping_mul(2_654_435_769) & 0xff00_0000);

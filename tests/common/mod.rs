@@ -6,7 +6,7 @@ compile_error!(
      `cargo test --release --all-features` (the README's test command)"
 );
 
-use prepass::harness::Gpu;
+use prepass::harness::{Arg, Gpu, Output};
 use std::sync::OnceLock;
 
 /// The adapter every test runs on. With none, every test that needs it FAILS with the
@@ -22,6 +22,17 @@ pub fn gpu() -> &'static Gpu {
         Ok(g) => g,
         Err(e) => panic!("{e}"),
     }
+}
+
+/// `function` of `source` applied to `n` elements on [`gpu`]'s adapter. Panics with the
+/// harness's error (unknown function, arguments that do not fit its signature, a lost device),
+/// naming the function.
+#[allow(dead_code)]
+pub fn run_kernel(source: &str, function: &str, args: &[Arg<'_>], n: u64) -> Output {
+    gpu()
+        .kernel(source, function)
+        .and_then(|k| k.run(args, n))
+        .unwrap_or_else(|e| panic!("`{function}` on the adapter: {e}"))
 }
 
 /// Each `bad` input must encode, with `codec`'s WGSL encoder on the adapter, to the same code as
