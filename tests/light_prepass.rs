@@ -177,9 +177,9 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
         Config::default_frame().height,
     );
     let body = format!(
-        "{}Errors at {}×{} against the fat frame of the same light layout; memory at the \
+        "{} Errors at {}×{} against the fat frame of the same light layout; memory at the \
          default {}×{}, one sample.\n\n{}",
-        common::adapter_line(),
+        common::adapter_line().trim_end(),
         base.width,
         base.height,
         memory_at.0,
