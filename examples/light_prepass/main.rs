@@ -161,7 +161,12 @@ fn main() {
 }
 
 fn summary(label: &str, cfg: &Config, o: &renderer::render::Output) -> String {
-    let t = o.pass_ms.map_or("timestamps unsupported".to_string(), |t| {
+    let untimed = if cfg.repeats == 0 {
+        "not timed (--repeats 0)"
+    } else {
+        "timestamps unsupported by this adapter"
+    };
+    let t = o.pass_ms.map_or(untimed.to_string(), |t| {
         format!(
             "GPU (a) {:.2} ms, (b) {:.2} ms, (c) {:.2} ms",
             t[0], t[1], t[2]

@@ -11,7 +11,34 @@
 //! at every edge; sample 0 plus an edge mask saves the second sample's lighting off edges, but
 //! needs an edge-detection pass and still lights edges per sample. Cost: the light and
 //! composite passes shade every covered sample (twice the fragments at 2×), measured by
-//! `--compare` (the MSAA section of `compare.md`).
+//! `--compare` (the MSAA section of `compare.md`). lavapipe offers 1× and 4× only: `--msaa 2`
+//! there is refused with the counts it has, and `--compare` measures 4× in its place.
+//!
+//! **Depth bounds.** WebGPU has no depth-bounds test. Each light's range comes from the crate's
+//! `light_volume_sphere_depth_bounds` (`…bounds24` for the 24-bit code; a spot light uses the
+//! sphere of its range around the apex), computed per instance in the vertex stage; the fragment
+//! shader compares the stored depth against it and discards before decoding the normal. It
+//! never changes the image (the range is conservative); `--compare` counts the fragments it
+//! rejects and times the light pass with and without it.
+//!
+//! **Bad input** (every frame carries the first three lights; the test checks each):
+//! - *a light at the camera*: its sphere contains the eye, so the camera-inside test
+//!   (`light_volume_sphere_needs_depth_fail`) sends it to the back-face pipeline (depth test
+//!   "volume behind the scene"); it lights what lies within its radius. A surface point exactly
+//!   at a light has a zero light vector, for which the crate's lighting returns no light;
+//! - *a volume crossing the near plane*: the same test (the eye within radius + the near-plane
+//!   corner distance) draws its back faces, so the clipped front faces lose nothing;
+//! - *a zero-radius light* (or a negative or non-finite one) is left out on the CPU and counted;
+//!   drawn anyway, its mesh would be degenerate and its attenuation 0;
+//! - *a pixel with no geometry* (the sky of the infinite projection): its depth is the clear
+//!   value (reversed 0 / standard 1, code 0 / 2^24 − 1, fat view depth 0), which the light pass
+//!   discards before anything else — an infinite view depth never becomes a position; the
+//!   composite draws geometry only, so the sky keeps the clear colour;
+//! - *a resolution of 0 or beyond `max_texture_dimension_2d`*, or an MSAA count the adapter
+//!   lacks: a clear error before any texture is created.
+//!
+//! With a finite far plane, volumes reaching past it are clipped there (the default projection
+//! is infinite, so none is).
 
 pub mod bound;
 pub mod compare;

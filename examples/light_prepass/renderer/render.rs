@@ -113,7 +113,7 @@ pub struct Output {
     /// The fat G-buffer, when the layout is fat and single-sampled.
     pub fat: Option<FatGBuffer>,
     /// GPU time of passes (a), (b), (c) in milliseconds (the minimum over the repeats), or
-    /// `None` when the adapter has no timestamp queries.
+    /// `None` when the adapter has no timestamp queries or `repeats` is 0.
     pub pass_ms: Option<[f64; 3]>,
     /// Light-pass fragments: shaded (invoked), rejected by depth bounds, discarded as sky.
     pub fragments: [u32; 3],
@@ -982,7 +982,7 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
             let b = read_buffer(dev, staging);
             let t: Vec<u64> = bytemuck::pod_collect_to_vec(&b);
             let period = f64::from(dev.queue.get_timestamp_period());
-            if run > 0 || cfg.repeats == 0 {
+            if run > 0 {
                 for k in 0..3 {
                     let ns = t[2 * k + 1].wrapping_sub(t[2 * k]) as f64 * period;
                     best[k] = best[k].min(ns / 1e6);
@@ -1011,7 +1011,8 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
         height: cfg.height,
         colour,
         fat,
-        pass_ms: dev.timestamps.then_some(best),
+        // Run 0 alone includes lavapipe's lazy shader compilation: untimed.
+        pass_ms: (dev.timestamps && cfg.repeats > 0).then_some(best),
         fragments,
         classes,
         skipped: sorted.skipped,
