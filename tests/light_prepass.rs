@@ -297,6 +297,32 @@ fn light_prepass_bad_input() {
     assert!(o.fragments[2] > 0, "the sky is reached and discarded");
     let rgb = to_rgb8(&o.colour);
     assert!(rgb.iter().any(|p| p[0] > 64), "the frame is lit");
+    // The other conventions and formats render finite frames too: standard depth with a finite
+    // far plane in a 24-bit code, an rgba8unorm two-buffer light layout.
+    for cfg in [
+        Config {
+            convention: prepass::projection::DepthConvention::Standard,
+            far: 200.0,
+            storage: Storage::Diet {
+                normal: prepass::scene::NormalEncoding::Xyz8,
+                depth: prepass::scene::DepthStorage::Code24Rgba8,
+            },
+            ..base
+        },
+        Config {
+            light_format: renderer::LightFormat::Rgba8Unorm,
+            lights_layout: prepass::scene::LightBuffers::Two,
+            ..base
+        },
+    ] {
+        let o = render(dev, &cfg, &scene).unwrap();
+        assert_eq!(non_finite(&o.colour), 0, "{}", cfg.layout_name());
+        assert!(
+            to_rgb8(&o.colour).iter().any(|p| p[0] > 64),
+            "{} is lit",
+            cfg.layout_name()
+        );
+    }
     if let Some(n) = dev.sample_counts(&base).into_iter().find(|&n| n > 1) {
         let o = render(dev, &Config { msaa: n, ..base }, &scene).unwrap();
         assert_eq!(non_finite(&o.colour), 0, "MSAA {n}×");

@@ -39,6 +39,13 @@
 //! by `2^-11·C`. The tone curve is monotonic, so the level moves by at most
 //! `255·(T(C + ΔC) − T(C − ΔC))`, plus 1 for the two roundings to a level.
 //!
+//! Two things the frames do not share, and why they add nothing: the D24 layout's hardware
+//! depth buffer is `depth24plus-stencil8`, not `depth32float`. The scene has no coplanar
+//! surfaces, so the same surface wins pass (a)'s depth test in both. A light volume's depth
+//! test may decide differently only where the scene lies within one 24-bit depth step of the
+//! volume's mesh, which encloses the light's sphere. There the light's attenuation is at most
+//! `A(r − ε_p) ≤ 1.54·ε_p/r`, already in `Δatt`, because `ε_p` includes that step.
+//!
 //! Normals whose view-space `z` is negative are outside xy FP16's and hemi-octahedral codes'
 //! domain: they decode mirrored, with no bound — those pixels are excluded from the check and
 //! counted, and the test requires the artefact to show there.
