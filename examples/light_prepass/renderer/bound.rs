@@ -26,17 +26,20 @@
 //!   between `n` and `H` by `Δφ ≤ θ + (π/2)·chord`, and `cos^n φ` by at most `√n·Δφ`
 //!   (`max_φ n·sin φ·cos^(n−1) φ ≤ √n` for `n ≥ 1`); the specular weight `S_i = D·(N·H)^n` moves
 //!   by `ΔD + D⁺·(√n·Δφ + 2·pow_relative)` (`pow_relative`: WGSL's `exp2(y·log2 x)` allowance,
-//!   `prepass::lighting::lpp::bounds::pow_relative`, once per frame).
+//!   `prepass::lighting::lpp::bounds::pow_relative`, once per frame); both weights add
+//!   `128u·D⁺` (`u = 2^-24`) for the f32 evaluation of P in the two frames.
 //!
 //! Sums over the lights: the two-buffer layout stores `Σ col·D_i` and `Σ col·S_i`, so each moves
 //! by the sum of the moves. The one-buffer layout stores `L = lum(Σ col·D_i)` and
 //! `A = Σ lum(col)·S_i`, and the combine rebuilds `S = L·min(A/L, 1)^m`; its gradient is bounded
 //! (`|∂S/∂A| ≤ m`, `|∂S/∂L| ≤ max(1, m − 1)` for `m ≥ 1`), so `ΔS ≤ m·ΔA + max(1, m − 1)·ΔL`.
-//! The light buffer rounds at every blend: rgba16float to `2^-11` relative of the running sum
-//! (`k` blends: `k·2^-11` of the final sum, for each frame, so twice that between frames);
-//! rgba8unorm to `0.5/255` per blend. The composite `C = albedo·diffuse + gloss·specular` moves
+//! The light buffer rounds at every blend, within one unit in the last place whatever the
+//! rounding mode (Vulkan leaves it to the implementation): rgba16float to `2^-10` relative of
+//! the running sum (`k` blends: `k·2^-10` of the final sum, plus `2^-24` absolute for f16
+//! subnormals, for each frame, so twice that between frames), rgba8unorm to `1/255` per blend.
+//! The composite `C = albedo·diffuse + gloss·specular` moves
 //! by `albedo_max·Δdiffuse + gloss_max·Δspecular`, and the rgba16float output rounds each frame
-//! by `2^-11·C`. The tone curve is monotonic, so the level moves by at most
+//! by `2^-10·C`. The tone curve is monotonic, so the level moves by at most
 //! `255·(T(C + ΔC) − T(C − ΔC))`, plus 1 for the two roundings to a level.
 //!
 //! Two things the frames do not share, and why they add nothing: the D24 layout's hardware
@@ -107,13 +110,14 @@ pub fn hemisphere_only(e: NormalEncoding) -> bool {
 /// The relative error of the rebuilt view depth at view depth `vz`, against the fat layout's
 /// f32 view depth of the same rasterised window depth:
 /// - **D32F**: the depth buffer holds the very f32 window depth the fat layout converted, and
-///   the same WGSL function converts it: `2^-20` allows for a rasteriser whose stored depth
-///   differs from `frag_coord.z` by a few ULP;
+///   the same WGSL function converts it; compiled into two pipelines it may round differently,
+///   each within the crate's every-conforming-adapter bound (`linear_depth::bounds`, under 17
+///   ULP, `2^-19` relative), so `2^-18` between the two;
 /// - **D24 in RGBA8**: the code is `round(z·(2^24 − 1))` of an f32 product, within one code of
 ///   `z`, so `Δz ≤ 1/(2^24 − 1)`; window depth has `|dz/dvz| = k·n/vz²` (`k = f/(f − n)`, 1 for
-///   an infinite far plane, either convention), so `Δvz/vz ≤ vz·Δz/(k·n)`; plus the `2^-20` above.
+///   an infinite far plane, either convention), so `Δvz/vz ≤ vz·Δz/(k·n)`; plus the `2^-18` above.
 pub fn depth_relative(storage: Storage, vz: f64, near: f64, far: f64) -> f64 {
-    let base = 2f64.powi(-20);
+    let base = 2f64.powi(-18);
     match storage {
         Storage::Diet {
             depth: DepthStorage::Code24Rgba8 | DepthStorage::Code24,
@@ -287,8 +291,10 @@ pub fn in_domain(inp: &Inputs, x: u32, y: u32) -> PixelBound {
             0.5
         };
         let pow_rel = prepass::lighting::lpp::bounds::pow_relative(h, power);
-        // f32 evaluation of the light's P in each frame: 32u relative of its terms.
-        let eval = 32.0 * 2f64.powi(-24);
+        // f32 evaluation of the light's P in each frame, on any conforming adapter: the unit
+        // vectors (lpp_direction, ≈ 3 ULP a component), the dot products, the window and the
+        // products stay under 32 ULP of their terms: 64u relative, twice for the two frames.
+        let eval = 2.0 * 64.0 * 2f64.powi(-24);
         let d_spec = d_diff + d_up * (sqrt_n * dphi + 2.0 * pow_rel + eval);
         let d_diff = d_diff + d_up * eval;
         let col = [
@@ -311,8 +317,8 @@ pub fn in_domain(inp: &Inputs, x: u32, y: u32) -> PixelBound {
     }
     // Blend rounding, both frames.
     let blend = |sum_up: f64| match cfg.light_format {
-        LightFormat::Rgba16Float => 2.0 * f64::from(k) * (2f64.powi(-11) * sum_up + 2f64.powi(-25)),
-        LightFormat::Rgba8Unorm => f64::from(k) / 255.0,
+        LightFormat::Rgba16Float => 2.0 * f64::from(k) * (2f64.powi(-10) * sum_up + 2f64.powi(-24)),
+        LightFormat::Rgba8Unorm => 2.0 * f64::from(k) / 255.0,
     };
     let a_max = inp
         .materials
@@ -347,7 +353,7 @@ pub fn in_domain(inp: &Inputs, x: u32, y: u32) -> PixelBound {
         };
         let c = f64::from(c_fat[ch]).max(0.0);
         let mut dc = a_max * diffuse + g_max * specular;
-        dc += 2f64.powi(-11) * (2.0 * c + dc);
+        dc += 2f64.powi(-10) * (2.0 * c + dc);
         out.linear[ch] = dc;
         let lo = super::compare::tonemap64((c - dc).max(0.0));
         let hi = super::compare::tonemap64(c + dc);
