@@ -1,7 +1,9 @@
 //! The light pre-pass example's frame (`examples/light_prepass`), rendered on the adapter at a
 //! small size with the fat reference G-buffer and every diet layout of the issue (xyz8, oct24,
 //! oct32, xy FP16 normals; D24 in RGBA8 and D32F depth; one and two light buffers). It checks
-//! that no pixel is NaN or infinite, that every diet frame stays within the bound derived in
+//! that no pixel is NaN or infinite, that each diet G-buffer read back from its render targets
+//! decodes within the encodings' derived errors of the fat one, that every diet frame stays
+//! within the bound derived in
 //! `examples/light_prepass/renderer/bound.rs` of the fat frame at every pixel, that xy FP16's
 //! mirrored `z < 0` normals show beyond that bound, that the images are written, and the bad
 //! input of the issue (a light at the camera, a volume through the near plane, a zero-radius
@@ -116,6 +118,118 @@ fn check_bound(rows: &[Row], row: &Row, scene: &scene::SceneData) -> (usize, usi
     (excluded, broken, excess_max)
 }
 
+/// The diet G-buffer, read back from its render targets and decoded with the crate's Rust twins
+/// (bit-identical to the WGSL decoders), against the fat one at every pixel: the normal within
+/// the encoding's derived angle (`bound::normal_angle_at`), the rebuilt view depth within
+/// `bound::depth_relative`, the roughness code exact. Returns the largest angle, degrees.
+fn check_gbuffer(rows: &[Row], row: &Row, scene: &scene::SceneData) -> f64 {
+    use prepass::normal::{oct, xy_fp16, xyz8};
+    use prepass::scene::{DepthStorage, NormalEncoding};
+    let fat = fat_of(rows, row)
+        .output
+        .fat
+        .as_ref()
+        .expect("the fat G-buffer");
+    let diet = row.output.diet.as_ref().expect("the diet G-buffer");
+    let Storage::Diet { normal, depth } = row.cfg.storage else {
+        unreachable!()
+    };
+    let name = row.cfg.layout_name();
+    let projection =
+        prepass::projection::Projection::new(scene.camera.near, row.cfg.far, row.cfg.convention)
+            .unwrap();
+    let free = renderer::shaders::alpha_free(normal);
+    let (mut angle_worst, mut depth_worst) = ((0f64, 0f64, 0usize), (0f64, 0f64, 0usize));
+    for (i, t) in fat.normal.iter().enumerate() {
+        let vz = f64::from(fat.view_z[i]);
+        if vz.is_nan() || vz <= 0.0 {
+            continue;
+        }
+        let b: [u8; 4] = diet.targets[0][4 * i..4 * i + 4].try_into().unwrap();
+        let texel = u32::from_le_bytes(b);
+        let c = b.map(|x| f32::from(x) / 255.0);
+        let n = match normal {
+            NormalEncoding::Xyz8 => xyz8::decode_normal_xyz8_unorm(c),
+            NormalEncoding::XyFp16 => xy_fp16::decode_normal_xy_fp16_unorm(c),
+            NormalEncoding::Oct24 => oct::decode_normal_oct24(texel),
+            NormalEncoding::Oct32 => oct::decode_normal_oct32(texel),
+            e => panic!("{e:?} is not in the comparison"),
+        };
+        let code = if free {
+            u32::from(b[3])
+        } else {
+            u32::from(diet.targets.last().unwrap()[i])
+        };
+        assert_eq!(code, t[3] as u32, "{name}: roughness code at texel {i}");
+        let f = glam::DVec3::new(f64::from(t[0]), f64::from(t[1]), f64::from(t[2])).normalize();
+        if !(bound::hemisphere_only(normal) && f.z < 0.0) {
+            let n = n.as_dvec3();
+            let angle = f.cross(n).length().atan2(f.dot(n));
+            let ratio = angle / bound::normal_angle_at(normal, f.z);
+            if ratio > angle_worst.0 {
+                angle_worst = (ratio, angle, i);
+            }
+        }
+        let vz_diet = match depth {
+            DepthStorage::Code24Rgba8 => {
+                let d: [u8; 4] = diet.targets[1][4 * i..4 * i + 4].try_into().unwrap();
+                let code = (u32::from(d[0]) << 16) | (u32::from(d[1]) << 8) | u32::from(d[2]);
+                match row.cfg.convention {
+                    prepass::projection::DepthConvention::Reversed => projection
+                        .view_z_from_depth(prepass::depth24::hyperbolic_depth_from_depth24(code)),
+                    prepass::projection::DepthConvention::Standard => {
+                        prepass::linear_depth::view_z_from_depth24_consts(
+                            code,
+                            projection.depth24_consts(),
+                        )
+                    }
+                }
+            }
+            _ => projection.view_z_from_depth(diet.depth.as_ref().unwrap()[i]),
+        };
+        let rel = (f64::from(vz_diet) - vz).abs() / vz;
+        let ratio = rel
+            / bound::depth_relative(
+                row.cfg.storage,
+                vz,
+                f64::from(scene.camera.near),
+                f64::from(row.cfg.far),
+            );
+        if ratio > depth_worst.0 {
+            depth_worst = (ratio, rel, i);
+        }
+    }
+    let w = row.cfg.width as usize;
+    let (r, a, i) = angle_worst;
+    eprintln!(
+        "{name}: normals off by up to {:.4}° ({:.2} of the derived bound), view depth by up to \
+         {:.2e} relative ({:.2} of its bound)",
+        a.to_degrees(),
+        r,
+        depth_worst.1,
+        depth_worst.0
+    );
+    assert_within!(
+        r,
+        1.0,
+        "bound::normal_angle_at (derived in its docs): angle / bound",
+        "{name}: texel ({}, {}) decodes {:.4}° from the fat normal",
+        i % w,
+        i / w,
+        a.to_degrees()
+    );
+    let (r, rel, i) = depth_worst;
+    assert_within!(
+        r,
+        1.0,
+        "bound::depth_relative (derived in its docs): error / bound",
+        "{name}: texel ({}, {}) rebuilds view depth {rel:.3e} relative from the fat one",
+        i % w,
+        i / w
+    );
+    a.to_degrees()
+}
+
 #[test]
 fn light_prepass_frame_diet_within_derived_bound_of_fat() {
     let dev = device();
@@ -135,6 +249,7 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
         let Storage::Diet { normal, .. } = r.cfg.storage else {
             unreachable!()
         };
+        check_gbuffer(&rows, r, &scene);
         let (excluded, broken, excess) = check_bound(&rows, r, &scene);
         if bound::hemisphere_only(normal) {
             // The scene's normal-mapped ground and off-axis spheres face away from the view

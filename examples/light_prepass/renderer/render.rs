@@ -102,6 +102,17 @@ pub struct FatGBuffer {
     pub view_z: Vec<f32>,
 }
 
+/// A diet G-buffer read back (single-sampled frames only): the test decodes it with the Rust
+/// twins and checks each target against the fat one and the encodings' derived errors.
+pub struct DietGBuffer {
+    /// Each colour target's texels, in `Scene::gbuffer()` order after the depth target
+    /// (normal, then the 24-bit depth code for D24, then the roughness for the encodings
+    /// without a free alpha).
+    pub targets: Vec<Vec<u8>>,
+    /// The depth buffer (D32F layouts).
+    pub depth: Option<Vec<f32>>,
+}
+
 /// One rendered frame.
 pub struct Output {
     /// Width.
@@ -112,6 +123,8 @@ pub struct Output {
     pub colour: Vec<[f32; 4]>,
     /// The fat G-buffer, when the layout is fat and single-sampled.
     pub fat: Option<FatGBuffer>,
+    /// The diet G-buffer, when the layout is a diet one and single-sampled.
+    pub diet: Option<DietGBuffer>,
     /// GPU time of passes (a), (b), (c) in milliseconds (the minimum over the repeats), or
     /// `None` when the adapter has no timestamp queries or `repeats` is 0.
     pub pass_ms: Option<[f64; 3]>,
@@ -320,6 +333,15 @@ fn buffer_entry(
 
 /// Read a single-sampled texture back, `texel` bytes a texel, rows unpadded.
 fn read_texture(dev: &Device, tex: &wgpu::Texture, texel: u32) -> Vec<u8> {
+    read_aspect(dev, tex, texel, wgpu::TextureAspect::All)
+}
+
+fn read_aspect(
+    dev: &Device,
+    tex: &wgpu::Texture,
+    texel: u32,
+    aspect: wgpu::TextureAspect,
+) -> Vec<u8> {
     let (w, h) = (tex.width(), tex.height());
     let row = w * texel;
     let padded =
@@ -332,7 +354,10 @@ fn read_texture(dev: &Device, tex: &wgpu::Texture, texel: u32) -> Vec<u8> {
     });
     let mut enc = dev.device.create_command_encoder(&Default::default());
     enc.copy_texture_to_buffer(
-        tex.as_image_copy(),
+        wgpu::TexelCopyTextureInfo {
+            aspect,
+            ..tex.as_image_copy()
+        },
         wgpu::TexelCopyBufferInfo {
             buffer: &buf,
             layout: wgpu::TexelCopyBufferLayout {
@@ -510,7 +535,13 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
         .map(|t| t.create_view(&Default::default()))
         .collect();
     let dformat = depth_format(cfg);
-    let depth = texture(dev, cfg, dformat, cfg.msaa, attach);
+    let depth = texture(
+        dev,
+        cfg,
+        dformat,
+        cfg.msaa,
+        attach | wgpu::TextureUsages::COPY_SRC,
+    );
     let depth_view = depth.create_view(&Default::default());
     let depth_sample_view = depth.create_view(&wgpu::TextureViewDescriptor {
         aspect: wgpu::TextureAspect::DepthOnly,
@@ -1005,12 +1036,27 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
         normal: bytemuck::pod_collect_to_vec(&read_texture(dev, &gtex[0], 16)),
         view_z: bytemuck::pod_collect_to_vec(&read_texture(dev, &gtex[1], 4)),
     });
+    let diet = (matches!(cfg.storage, Storage::Diet { .. }) && !ms).then(|| DietGBuffer {
+        targets: gtex
+            .iter()
+            .map(|t| read_texture(dev, t, t.format().block_copy_size(None).unwrap_or(4)))
+            .collect(),
+        depth: (dformat == wgpu::TextureFormat::Depth32Float).then(|| {
+            bytemuck::pod_collect_to_vec(&read_aspect(
+                dev,
+                &depth,
+                4,
+                wgpu::TextureAspect::DepthOnly,
+            ))
+        }),
+    });
     let classes = sorted.ranges.clone().map(|r| r.end - r.start);
     Ok(Output {
         width: cfg.width,
         height: cfg.height,
         colour,
         fat,
+        diet,
         // Run 0 alone includes lavapipe's lazy shader compilation: untimed.
         pass_ms: (dev.timestamps && cfg.repeats > 0).then_some(best),
         fragments,
