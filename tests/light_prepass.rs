@@ -118,116 +118,40 @@ fn check_bound(rows: &[Row], row: &Row, scene: &scene::SceneData) -> (usize, usi
     (excluded, broken, excess_max)
 }
 
-/// The diet G-buffer, read back from its render targets and decoded with the crate's Rust twins
-/// (bit-identical to the WGSL decoders), against the fat one at every pixel: the normal within
-/// the encoding's derived angle (`bound::normal_angle_at`), the rebuilt view depth within
-/// `bound::depth_relative`, the roughness code exact. Returns the largest angle, degrees.
-fn check_gbuffer(rows: &[Row], row: &Row, scene: &scene::SceneData) -> f64 {
-    use prepass::normal::{oct, xy_fp16, xyz8};
-    use prepass::scene::{DepthStorage, NormalEncoding};
+/// The diet G-buffer against the fat one (`bound::gbuffer_error`): the decoded normal within
+/// the encoding's derived angle, the rebuilt view depth within its derived relative error.
+fn check_gbuffer(rows: &[Row], row: &Row, scene: &scene::SceneData) {
     let fat = fat_of(rows, row)
         .output
         .fat
         .as_ref()
         .expect("the fat G-buffer");
-    let diet = row.output.diet.as_ref().expect("the diet G-buffer");
-    let Storage::Diet { normal, depth } = row.cfg.storage else {
-        unreachable!()
-    };
+    let g = bound::gbuffer_error(row, fat, scene).unwrap_or_else(|e| panic!("{e}"));
     let name = row.cfg.layout_name();
-    let projection =
-        prepass::projection::Projection::new(scene.camera.near, row.cfg.far, row.cfg.convention)
-            .unwrap();
-    let free = renderer::shaders::alpha_free(normal);
-    let (mut angle_worst, mut depth_worst) = ((0f64, 0f64, 0usize), (0f64, 0f64, 0usize));
-    for (i, t) in fat.normal.iter().enumerate() {
-        let vz = f64::from(fat.view_z[i]);
-        if vz.is_nan() || vz <= 0.0 {
-            continue;
-        }
-        let b: [u8; 4] = diet.targets[0][4 * i..4 * i + 4].try_into().unwrap();
-        let texel = u32::from_le_bytes(b);
-        let c = b.map(|x| f32::from(x) / 255.0);
-        let n = match normal {
-            NormalEncoding::Xyz8 => xyz8::decode_normal_xyz8_unorm(c),
-            NormalEncoding::XyFp16 => xy_fp16::decode_normal_xy_fp16_unorm(c),
-            NormalEncoding::Oct24 => oct::decode_normal_oct24(texel),
-            NormalEncoding::Oct32 => oct::decode_normal_oct32(texel),
-            e => panic!("{e:?} is not in the comparison"),
-        };
-        let code = if free {
-            u32::from(b[3])
-        } else {
-            u32::from(diet.targets.last().unwrap()[i])
-        };
-        assert_eq!(code, t[3] as u32, "{name}: roughness code at texel {i}");
-        let f = glam::DVec3::new(f64::from(t[0]), f64::from(t[1]), f64::from(t[2])).normalize();
-        if !(bound::hemisphere_only(normal) && f.z < 0.0) {
-            let n = n.as_dvec3();
-            let angle = f.cross(n).length().atan2(f.dot(n));
-            let ratio = angle / bound::normal_angle_at(normal, f.z);
-            if ratio > angle_worst.0 {
-                angle_worst = (ratio, angle, i);
-            }
-        }
-        let vz_diet = match depth {
-            DepthStorage::Code24Rgba8 => {
-                let d: [u8; 4] = diet.targets[1][4 * i..4 * i + 4].try_into().unwrap();
-                let code = (u32::from(d[0]) << 16) | (u32::from(d[1]) << 8) | u32::from(d[2]);
-                match row.cfg.convention {
-                    prepass::projection::DepthConvention::Reversed => projection
-                        .view_z_from_depth(prepass::depth24::hyperbolic_depth_from_depth24(code)),
-                    prepass::projection::DepthConvention::Standard => {
-                        prepass::linear_depth::view_z_from_depth24_consts(
-                            code,
-                            projection.depth24_consts(),
-                        )
-                    }
-                }
-            }
-            _ => projection.view_z_from_depth(diet.depth.as_ref().unwrap()[i]),
-        };
-        let rel = (f64::from(vz_diet) - vz).abs() / vz;
-        let ratio = rel
-            / bound::depth_relative(
-                row.cfg.storage,
-                vz,
-                f64::from(scene.camera.near),
-                f64::from(row.cfg.far),
-            );
-        if ratio > depth_worst.0 {
-            depth_worst = (ratio, rel, i);
-        }
-    }
     let w = row.cfg.width as usize;
-    let (r, a, i) = angle_worst;
     eprintln!(
         "{name}: normals off by up to {:.4}° ({:.2} of the derived bound), view depth by up to \
          {:.2e} relative ({:.2} of its bound)",
-        a.to_degrees(),
-        r,
-        depth_worst.1,
-        depth_worst.0
+        g.angle_deg, g.angle_ratio, g.depth_rel, g.depth_ratio
     );
     assert_within!(
-        r,
+        g.angle_ratio,
         1.0,
-        "bound::normal_angle_at (derived in its docs): angle / bound",
+        "bound::normal_angle_at (derived in its docs): angle / bound at the worst texel",
         "{name}: texel ({}, {}) decodes {:.4}° from the fat normal",
-        i % w,
-        i / w,
-        a.to_degrees()
+        g.angle_at % w,
+        g.angle_at / w,
+        g.angle_deg
     );
-    let (r, rel, i) = depth_worst;
     assert_within!(
-        r,
+        g.depth_ratio,
         1.0,
-        "bound::depth_relative (derived in its docs): error / bound",
-        "{name}: texel ({}, {}) rebuilds view depth {rel:.3e} relative from the fat one",
-        i % w,
-        i / w
+        "bound::depth_relative (derived in its docs): error / bound at the worst texel",
+        "{name}: texel ({}, {}) rebuilds view depth {:.3e} relative from the fat one",
+        g.depth_at % w,
+        g.depth_at / w,
+        g.depth_rel
     );
-    a.to_degrees()
 }
 
 #[test]
@@ -270,7 +194,7 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
 
     // The images and compare.md are written.
     let dir = std::env::temp_dir().join(format!("prepass-light_prepass-{}", std::process::id()));
-    renderer::report::write(&dir, dev, &base, &rows, "").unwrap();
+    renderer::report::write(&dir, dev, &base, &scene, &rows, "").unwrap();
     for r in &rows {
         let stem = r.cfg.file_stem();
         let mut files = vec![format!("{stem}.png")];
@@ -284,6 +208,7 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
     }
     let md = std::fs::read_to_string(dir.join("compare.md")).unwrap();
     assert!(md.contains("xy fp16 + D24 in RGBA8, two buffers"), "{md}");
+    assert!(md.contains("## The G-buffer, decoded"), "{md}");
     let _ = std::fs::remove_dir_all(&dir);
 
     // The README's table and images.

@@ -295,7 +295,7 @@ fn run() -> Result<(), String> {
             }
         }
     }
-    report::write(&args.out, &dev, &cfg, &rows, &extra)?;
+    report::write(&args.out, &dev, &cfg, &scene, &rows, &extra)?;
     println!(
         "wrote {} frames, error images and compare.md to {} in {:.1} s",
         rows.len(),

@@ -362,3 +362,122 @@ pub fn in_domain(inp: &Inputs, x: u32, y: u32) -> PixelBound {
     }
     out
 }
+
+/// The largest errors of a diet G-buffer against the fat one, each against its derived bound.
+#[derive(Clone, Copy, Debug)]
+pub struct GBufferError {
+    /// Largest angle between a decoded and the fat normal (in the encoding's domain), degrees.
+    pub angle_deg: f64,
+    /// The largest angle / [`normal_angle_at`] over the pixels (≤ 1 when the bound holds).
+    pub angle_ratio: f64,
+    /// The texel of the largest ratio.
+    pub angle_at: usize,
+    /// Largest relative error of the rebuilt view depth.
+    pub depth_rel: f64,
+    /// The largest error / [`depth_relative`] over the pixels.
+    pub depth_ratio: f64,
+    /// The texel of the largest ratio.
+    pub depth_at: usize,
+}
+
+/// Decode `row`'s diet G-buffer (read back from its render targets) with the crate's Rust twins
+/// — bit-identical to the WGSL decoders — and measure it against the fat G-buffer at every
+/// pixel with geometry: the normal against [`normal_angle_at`], the view depth against
+/// [`depth_relative`]. The roughness code must be exact (an error names the texel).
+pub fn gbuffer_error(
+    row: &super::report::Row,
+    fat: &FatGBuffer,
+    scene: &super::scene::SceneData,
+) -> Result<GBufferError, String> {
+    use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
+    use prepass::projection::{DepthConvention, Projection};
+    let diet = row
+        .output
+        .diet
+        .as_ref()
+        .ok_or("no diet G-buffer (multisampled frame)")?;
+    let Storage::Diet { normal, depth } = row.cfg.storage else {
+        return Err("the fat layout has no diet G-buffer".into());
+    };
+    let name = row.cfg.layout_name();
+    let projection = Projection::new(scene.camera.near, row.cfg.far, row.cfg.convention)
+        .map_err(|e| e.to_string())?;
+    let free = super::shaders::alpha_free(normal);
+    let mut g = GBufferError {
+        angle_deg: 0.0,
+        angle_ratio: 0.0,
+        angle_at: 0,
+        depth_rel: 0.0,
+        depth_ratio: 0.0,
+        depth_at: 0,
+    };
+    for (i, t) in fat.normal.iter().enumerate() {
+        let vz = f64::from(fat.view_z[i]);
+        if vz.is_nan() || vz <= 0.0 {
+            continue;
+        }
+        let texel = |k: usize, size: usize| &diet.targets[k][size * i..size * (i + 1)];
+        let b: [u8; 4] = match normal {
+            NormalEncoding::Oct16 => [texel(0, 2)[0], texel(0, 2)[1], 0, 0],
+            _ => texel(0, 4).try_into().map_err(|_| "texel size")?,
+        };
+        let c = b.map(|x| f32::from(x) / 255.0);
+        let p = u32::from_le_bytes(b);
+        let n = match normal {
+            NormalEncoding::Xyz8 => xyz8::decode_normal_xyz8_unorm(c),
+            NormalEncoding::XyFp16 => xy_fp16::decode_normal_xy_fp16_unorm(c),
+            NormalEncoding::Hemioct24 => hemioct::decode_normal_hemioct24_unorm(c),
+            NormalEncoding::Oct16 => oct::decode_normal_oct16(p),
+            NormalEncoding::Oct24 => oct::decode_normal_oct24(p),
+            NormalEncoding::Oct32 => oct::decode_normal_oct32(p),
+        };
+        let code = if free {
+            u32::from(b[3])
+        } else {
+            u32::from(diet.targets.last().ok_or("no roughness target")?[i])
+        };
+        if code != t[3] as u32 {
+            return Err(format!(
+                "{name}: roughness code {code} at texel {i}, the fat G-buffer has {}",
+                t[3]
+            ));
+        }
+        let f = glam::DVec3::new(f64::from(t[0]), f64::from(t[1]), f64::from(t[2])).normalize();
+        if !(hemisphere_only(normal) && f.z < 0.0) {
+            let n = n.as_dvec3();
+            let angle = f.cross(n).length().atan2(f.dot(n));
+            let ratio = angle / normal_angle_at(normal, f.z);
+            g.angle_deg = g.angle_deg.max(angle.to_degrees());
+            if ratio > g.angle_ratio {
+                (g.angle_ratio, g.angle_at) = (ratio, i);
+            }
+        }
+        let vz_diet = match depth {
+            DepthStorage::Code24Rgba8 => {
+                let d = texel(1, 4);
+                let code = (u32::from(d[0]) << 16) | (u32::from(d[1]) << 8) | u32::from(d[2]);
+                match row.cfg.convention {
+                    DepthConvention::Reversed => projection
+                        .view_z_from_depth(prepass::depth24::hyperbolic_depth_from_depth24(code)),
+                    DepthConvention::Standard => prepass::linear_depth::view_z_from_depth24_consts(
+                        code,
+                        projection.depth24_consts(),
+                    ),
+                }
+            }
+            _ => projection.view_z_from_depth(diet.depth.as_ref().ok_or("no depth read back")?[i]),
+        };
+        let rel = (f64::from(vz_diet) - vz).abs() / vz;
+        let bound = depth_relative(
+            row.cfg.storage,
+            vz,
+            f64::from(scene.camera.near),
+            f64::from(row.cfg.far),
+        );
+        g.depth_rel = g.depth_rel.max(rel);
+        if rel / bound > g.depth_ratio {
+            (g.depth_ratio, g.depth_at) = (rel / bound, i);
+        }
+    }
+    Ok(g)
+}

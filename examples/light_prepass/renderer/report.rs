@@ -159,6 +159,7 @@ pub fn write(
     dir: &Path,
     dev: &Device,
     base: &Config,
+    scene: &SceneData,
     rows: &[Row],
     extra: &str,
 ) -> Result<(), String> {
@@ -229,6 +230,36 @@ pub fn write(
             c[0], c[1], c[2], c[3], r.output.skipped
         );
     }
+    md.push_str(
+        "## The G-buffer, decoded\n\nEach diet G-buffer read back from its render targets, \
+         decoded with the crate's Rust twins, against the fat one at every pixel with geometry \
+         (xy FP16: normals with z ≥ 0 only), beside the bounds derived in \
+         `examples/light_prepass/renderer/bound.rs`.\n\n| layout | max normal error ° | of \
+         its derived bound | max view-depth error (relative) | of its derived bound |\n\
+         |---|---|---|---|---|\n",
+    );
+    for r in rows.iter().filter(|r| r.error.is_some()) {
+        let Some(fat) = fat_of(rows, r).output.fat.as_ref() else {
+            continue;
+        };
+        match super::bound::gbuffer_error(r, fat, scene) {
+            Ok(g) => {
+                let _ = writeln!(
+                    md,
+                    "| {} | {:.4} | {:.2} | {:.2e} | {:.2} |",
+                    r.cfg.layout_name(),
+                    g.angle_deg,
+                    g.angle_ratio,
+                    g.depth_rel,
+                    g.depth_ratio
+                );
+            }
+            Err(e) => {
+                let _ = writeln!(md, "| {} | {e} | | | |", r.cfg.layout_name());
+            }
+        }
+    }
+    md.push('\n');
     md.push_str(extra);
     std::fs::write(dir.join("compare.md"), md).map_err(|e| format!("compare.md: {e}"))
 }
