@@ -230,6 +230,20 @@ pub fn write(
             c[0], c[1], c[2], c[3], r.output.skipped
         );
     }
+    if let Some(r) = rows.first() {
+        let o = &r.output;
+        let _ = writeln!(
+            md,
+            "## Bad input\n\nEvery frame carries a light at the camera and one whose volume \
+             crosses the near plane: the camera-inside test draws both by their back faces ({} \
+             sphere volumes went that way). A zero-radius light is left out on the CPU ({} left \
+             out). Sky pixels (no geometry, infinite depth) are discarded by the light pass \
+             before anything else ({} light-pass fragments of the fat frame) and keep the clear \
+             colour. A resolution of 0 or beyond the adapter's `max_texture_dimension_2d`, or an \
+             MSAA count it lacks, stops with an error before anything is created.\n",
+            o.classes[1], o.skipped, o.fragments[2]
+        );
+    }
     md.push_str(
         "## The G-buffer, decoded\n\nEach diet G-buffer read back from its render targets, \
          decoded with the crate's Rust twins, against the fat one at every pixel with geometry \
