@@ -252,7 +252,7 @@ pub fn build(lights: usize) -> SceneData {
             2.0 - (hue - 4.0).abs(),
         )
         .clamp(Vec3::ZERO, Vec3::ONE);
-        let colour = (c * 0.8 + Vec3::splat(0.2)) * rng.range(0.3, 0.8);
+        let colour = (c * 0.85 + Vec3::splat(0.15)) * rng.range(0.5, 1.1);
         let position = Vec3::new(
             rng.range(-16.0, 16.0),
             rng.range(0.3, 3.5),
@@ -264,9 +264,9 @@ pub fn build(lights: usize) -> SceneData {
             (axis, outer.cos(), (outer * 0.7).cos())
         });
         let radius = if spot.is_some() {
-            rng.range(4.0, 8.0)
+            rng.range(3.5, 7.0)
         } else {
-            rng.range(1.5, 4.0)
+            rng.range(1.0, 2.6)
         };
         ls.push(Light {
             position,
