@@ -1,0 +1,234 @@
+//! A headless light pre-pass renderer on top of prepass: real render targets, the crate's
+//! composed WGSL (`Scene::wgsl()`) plus this example's entry points, three passes
+//! (G-buffer, light volumes, composite), timestamp queries, PNG output. Shared by the example
+//! (`examples/light_prepass/main.rs`) and its test (`tests/light_prepass.rs`).
+//!
+//! **MSAA.** Encoded normals, roughness codes and depth codes are never averaged: nothing in
+//! the G-buffer is resolved. The light pass and the composite pass run per sample
+//! (`@builtin(sample_index)` forces sample-rate shading): each sample's own code is decoded
+//! and lit, the light buffers stay multisampled, and only the final colour is resolved — an
+//! average of colours, which is what a resolve is for. Why: it is the one strategy that is exact
+//! at every edge; sample 0 plus an edge mask saves the second sample's lighting off edges, but
+//! needs an edge-detection pass and still lights edges per sample. Cost: the light and
+//! composite passes shade every covered sample (twice the fragments at 2×), measured by
+//! `--compare` (the MSAA section of `compare.md`). lavapipe offers 1× and 4× only: `--msaa 2`
+//! there is refused with the counts it has, and `--compare` measures 4× in its place.
+//!
+//! **Depth bounds.** WebGPU has no depth-bounds test. Each light's range comes from the crate's
+//! `light_volume_sphere_depth_bounds` (`…bounds24` for the 24-bit code; a spot light uses the
+//! sphere of its range around the apex), computed per instance in the vertex stage; the fragment
+//! shader compares the stored depth against it and discards before decoding the normal. It
+//! never changes the image (the range is conservative); `--compare` counts the fragments it
+//! rejects and times the light pass with and without it.
+//!
+//! **Bad input** (every frame carries the first three lights; the test checks each):
+//! - *a light at the camera*: its sphere contains the eye, so the camera-inside test
+//!   (`light_volume_sphere_needs_depth_fail`) sends it to the back-face pipeline (depth test
+//!   "volume behind the scene"); it lights what lies within its radius. A surface point exactly
+//!   at a light has a zero light vector, for which the crate's lighting returns no light;
+//! - *a volume crossing the near plane*: the same test (the eye within radius + the near-plane
+//!   corner distance) draws its back faces, so the clipped front faces lose nothing;
+//! - *a zero-radius light* (or a negative or non-finite one) is left out on the CPU and counted;
+//!   drawn anyway, its mesh would be degenerate and its attenuation 0;
+//! - *a pixel with no geometry* (the sky of the infinite projection): its depth is the clear
+//!   value (reversed 0 / standard 1, code 0 / 2^24 − 1, fat view depth 0), which the light pass
+//!   discards before anything else — an infinite view depth never becomes a position; the
+//!   composite draws geometry only, so the sky keeps the clear colour;
+//! - *a resolution of 0 or beyond `max_texture_dimension_2d`*, or an MSAA count the adapter
+//!   lacks: a clear error before any texture is created.
+//!
+//! With a finite far plane, volumes reaching past it are clipped there (the default projection
+//! is infinite, so none is).
+
+pub mod bound;
+pub mod compare;
+pub mod png_out;
+pub mod render;
+pub mod report;
+pub mod scene;
+pub mod shaders;
+pub mod volumes;
+
+use prepass::projection::DepthConvention;
+use prepass::scene::{
+    DepthChoice, DepthStorage, LightBuffers, LightingChoice, Lights, NormalChoice, NormalEncoding,
+    PositionChoice, RoughnessChoice, Scene, Specular,
+};
+
+/// The ambient term every layout adds (`ambient·albedo`), so unlit geometry is not black.
+pub const AMBIENT: f32 = 0.04;
+/// The largest specular power the log-range roughness code spans (2^13, the exact table path).
+pub const MAX_POWER: f32 = 8192.0;
+
+/// How the G-buffer stores normals and depth.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Storage {
+    /// The reference: f32 view-space normals and f32 view depth (`rgba32float`, `r32float`).
+    Fat,
+    /// A diet layout, as `Scene::gbuffer()` lays it out.
+    Diet {
+        /// Normal encoding.
+        normal: NormalEncoding,
+        /// `Float32` (the depth buffer, sampled) or `Code24Rgba8` (a 24-bit code in RGBA8).
+        depth: DepthStorage,
+    },
+}
+
+/// Light-buffer texel format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightFormat {
+    /// 8-bit unorm: sums clamp at 1.
+    Rgba8Unorm,
+    /// Half float.
+    Rgba16Float,
+}
+
+/// Everything one frame depends on.
+#[derive(Clone, Copy, Debug)]
+pub struct Config {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// Number of random lights (the three bad-input lights come on top).
+    pub lights: usize,
+    /// MSAA samples, 1 or 2.
+    pub msaa: u32,
+    /// G-buffer storage.
+    pub storage: Storage,
+    /// Depth convention.
+    pub convention: DepthConvention,
+    /// Far plane (`f32::INFINITY` for the default infinite projection).
+    pub far: f32,
+    /// Light-buffer layout.
+    pub lights_layout: LightBuffers,
+    /// Light-buffer format.
+    pub light_format: LightFormat,
+    /// Reject pixels outside each light's depth range in the fragment shader.
+    pub depth_bounds: bool,
+    /// Timed repetitions (the minimum per pass is reported); the first is untimed.
+    pub repeats: u32,
+}
+
+impl Config {
+    /// The default frame: 1280×720, 256 lights, oct24 normals, reversed float depth with an
+    /// infinite far plane, the one-buffer light layout in rgba16float, no MSAA.
+    pub fn default_frame() -> Self {
+        Config {
+            width: 1280,
+            height: 720,
+            lights: 256,
+            msaa: 1,
+            storage: Storage::Diet {
+                normal: NormalEncoding::Oct24,
+                depth: DepthStorage::Float32,
+            },
+            convention: DepthConvention::Reversed,
+            far: f32::INFINITY,
+            lights_layout: LightBuffers::One,
+            light_format: LightFormat::Rgba16Float,
+            depth_bounds: true,
+            repeats: 2,
+        }
+    }
+
+    /// The `prepass` scene declaration these choices make (the fat layout declares the
+    /// float-depth scene: its lighting functions are the same, its normals are not encoded).
+    pub fn scene(&self) -> Scene {
+        let (normal, storage) = match self.storage {
+            Storage::Fat => (NormalEncoding::Oct32, DepthStorage::Float32),
+            Storage::Diet { normal, depth } => (normal, depth),
+        };
+        Scene {
+            depth: DepthChoice {
+                storage,
+                convention: self.convention,
+                infinite_far: self.far == f32::INFINITY,
+            },
+            position: PositionChoice::View,
+            normal: NormalChoice {
+                encoding: Some(normal),
+                fast_encoder: false,
+            },
+            roughness: RoughnessChoice::Log8,
+            lighting: LightingChoice {
+                lights: Lights::PointAndSpot,
+                specular: Specular::BlinnPhong,
+                buffers: self.lights_layout,
+                aggregate_vertex_lights: false,
+                light_volumes: true,
+            },
+        }
+    }
+
+    /// A short name of the layout, e.g. `oct24 + D32F, one buffer`.
+    pub fn layout_name(&self) -> String {
+        let s = match self.storage {
+            Storage::Fat => "fat (f32 normal + f32 view depth)".to_string(),
+            Storage::Diet { normal, depth } => format!(
+                "{} + {}",
+                encoding_name(normal),
+                match depth {
+                    DepthStorage::Float32 => "D32F",
+                    DepthStorage::Code24Rgba8 => "D24 in RGBA8",
+                    DepthStorage::Code24 => "D24 in R32Uint",
+                }
+            ),
+        };
+        let l = match self.lights_layout {
+            LightBuffers::One => "one buffer",
+            LightBuffers::Two => "two buffers",
+        };
+        format!("{s}, {l}")
+    }
+
+    /// A file-name stem for the layout, e.g. `oct24_d32f_one`.
+    pub fn file_stem(&self) -> String {
+        let s = match self.storage {
+            Storage::Fat => "fat".to_string(),
+            Storage::Diet { normal, depth } => format!(
+                "{}_{}",
+                shaders::stem(normal),
+                match depth {
+                    DepthStorage::Float32 => "d32f",
+                    _ => "d24",
+                }
+            ),
+        };
+        let l = match self.lights_layout {
+            LightBuffers::One => "one",
+            LightBuffers::Two => "two",
+        };
+        format!("{s}_{l}")
+    }
+}
+
+/// The encoding's table name (as the README's encoding table spells it).
+pub fn encoding_name(e: NormalEncoding) -> &'static str {
+    match e {
+        NormalEncoding::Xyz8 => "xyz8",
+        NormalEncoding::XyFp16 => "xy fp16",
+        NormalEncoding::Oct16 => "oct16",
+        NormalEncoding::Oct24 => "oct24",
+        NormalEncoding::Oct32 => "oct32",
+        NormalEncoding::Hemioct24 => "hemioct24",
+    }
+}
+
+/// The layouts `--compare` renders against the fat reference: every diet normal of the issue
+/// (xyz8, oct24, oct32, xy fp16) with each depth storage (D24 in RGBA8, D32F), for the light
+/// layout given.
+pub fn diet_layouts(lights: LightBuffers) -> Vec<(Storage, LightBuffers)> {
+    let mut v = Vec::new();
+    for normal in [
+        NormalEncoding::Xyz8,
+        NormalEncoding::Oct24,
+        NormalEncoding::Oct32,
+        NormalEncoding::XyFp16,
+    ] {
+        for depth in [DepthStorage::Code24Rgba8, DepthStorage::Float32] {
+            v.push((Storage::Diet { normal, depth }, lights));
+        }
+    }
+    v
+}

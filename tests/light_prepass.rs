@@ -1,0 +1,379 @@
+//! The light pre-pass example's frame (`examples/light_prepass`), rendered on the adapter at a
+//! small size with the fat reference G-buffer and every diet layout of the issue (xyz8, oct24,
+//! oct32, xy FP16 normals; D24 in RGBA8 and D32F depth; one and two light buffers). It checks
+//! that no pixel is NaN or infinite, that each diet G-buffer read back from its render targets
+//! decodes within the encodings' derived errors of the fat one, that every diet frame stays
+//! within the bound derived in
+//! `examples/light_prepass/renderer/bound.rs` of the fat frame at every pixel, that xy FP16's
+//! mirrored `z < 0` normals show beyond that bound, that the images are written, and the bad
+//! input of the issue (a light at the camera, a volume through the near plane, a zero-radius
+//! light, the sky, resolutions of 0 and beyond the adapter's limit).
+//!
+//! It publishes the README's `light-prepass` table (bytes per pixel, memory, error: the
+//! deterministic columns; times vary per run and stay in the example's `compare.md`) and, with
+//! `PREPASS_WRITE_DOCS=1` (`bash .ci/docs`), rewrites the README's PNGs in `docs/light_prepass/`;
+//! otherwise it checks that the committed PNGs are the frames it renders.
+
+mod common;
+
+#[path = "../examples/light_prepass/renderer/mod.rs"]
+#[allow(dead_code)]
+mod renderer;
+
+use prepass::{assert_at_least, assert_within};
+use renderer::compare::{false_colour, non_finite, to_rgb8};
+use renderer::render::{Device, lights_in_view, render};
+use renderer::report::{Row, fat_of, run, table};
+use renderer::{Config, Storage, bound, scene};
+use std::sync::OnceLock;
+
+/// The frame the test renders: the default frame (its scene, camera and 256 lights) at 320×180.
+fn small() -> Config {
+    Config {
+        width: 320,
+        height: 180,
+        repeats: 0,
+        ..Config::default_frame()
+    }
+}
+
+/// The adapter; with none this FAILS, naming the fix (install lavapipe).
+fn device() -> &'static Device {
+    static DEV: OnceLock<Result<Device, String>> = OnceLock::new();
+    match DEV.get_or_init(|| {
+        Device::new().inspect(|d| eprintln!("light_prepass test renders on: {}", d.describe()))
+    }) {
+        Ok(d) => d,
+        Err(e) => panic!("{e}"),
+    }
+}
+
+/// Every pixel of `row` against its fat frame and the derived bound. Returns, for the pixels
+/// outside the encoding's domain (view-space z < 0), how many there are, how many break the
+/// bound they would have inside it, and the largest such excess in levels.
+fn check_bound(rows: &[Row], row: &Row, scene: &scene::SceneData) -> (usize, usize, f64) {
+    let fat = fat_of(rows, row);
+    let fat_g = fat.output.fat.as_ref().expect("the fat frame's G-buffer");
+    let (tan, sorted) = lights_in_view(&row.cfg, scene);
+    let inputs = bound::Inputs {
+        cfg: &row.cfg,
+        fat: fat_g,
+        fat_colour: &fat.output.colour,
+        lights: &sorted.lights,
+        materials: &scene.materials,
+        tan_half_fov: tan,
+        near: scene.camera.near,
+    };
+    let name = row.cfg.layout_name();
+    let (mut worst, mut at) = (f64::NEG_INFINITY, None);
+    let (mut excluded, mut broken, mut excess_max) = (0usize, 0usize, 0f64);
+    for y in 0..row.cfg.height {
+        for x in 0..row.cfg.width {
+            let i = (y * row.cfg.width + x) as usize;
+            let (a, b) = (fat.rgb[i], row.rgb[i]);
+            match bound::pixel(&inputs, x, y) {
+                None => {
+                    excluded += 1;
+                    let pb = bound::in_domain(&inputs, x, y);
+                    let over = (0..3)
+                        .map(|k| f64::from(a[k].abs_diff(b[k])) - pb.levels[k])
+                        .fold(f64::NEG_INFINITY, f64::max);
+                    if over > 0.0 {
+                        broken += 1;
+                        excess_max = excess_max.max(over);
+                    }
+                }
+                Some(pb) => {
+                    for k in 0..3 {
+                        let excess = f64::from(a[k].abs_diff(b[k])) - pb.levels[k];
+                        if excess > worst {
+                            worst = excess;
+                            at = Some((x, y, k, a[k].abs_diff(b[k]), pb));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    let (x, y, k, e, pb) = at.expect("pixels");
+    eprintln!(
+        "{name}: worst pixel ({x}, {y}) channel {k}: error {e} levels, bound {:.3} levels; \
+         {excluded} pixels outside the encoding's domain, {broken} of them beyond the \
+         in-domain bound (by up to {excess_max:.1} levels)",
+        pb.levels[k]
+    );
+    assert_within!(
+        worst,
+        0.0,
+        "examples/light_prepass/renderer/bound.rs (the derivation in its module docs): \
+         error − bound at the worst pixel",
+        "{name}: pixel ({x}, {y}) channel {k}: error {e} levels, bound {:.4} levels from a linear \
+         bound {:.3e}; θ = {:.3e} rad, ε_p = {:.3e}, {} lights reach it",
+        pb.levels[k],
+        pb.linear[k],
+        pb.theta,
+        pb.eps_p,
+        pb.lights
+    );
+    (excluded, broken, excess_max)
+}
+
+/// The diet G-buffer against the fat one (`bound::gbuffer_error`): the decoded normal within
+/// the encoding's derived angle, the rebuilt view depth within its derived relative error.
+fn check_gbuffer(rows: &[Row], row: &Row, scene: &scene::SceneData) {
+    let fat = fat_of(rows, row)
+        .output
+        .fat
+        .as_ref()
+        .expect("the fat G-buffer");
+    let g = bound::gbuffer_error(row, fat, scene).unwrap_or_else(|e| panic!("{e}"));
+    let name = row.cfg.layout_name();
+    let w = row.cfg.width as usize;
+    eprintln!(
+        "{name}: normals off by up to {:.4}° ({:.2} of the derived bound), view depth by up to \
+         {:.2e} relative ({:.2} of its bound)",
+        g.angle_deg, g.angle_ratio, g.depth_rel, g.depth_ratio
+    );
+    assert_within!(
+        g.angle_ratio,
+        1.0,
+        "bound::normal_angle_at (derived in its docs): angle / bound at the worst texel",
+        "{name}: texel ({}, {}) decodes {:.4}° from the fat normal",
+        g.angle_at % w,
+        g.angle_at / w,
+        g.angle_deg
+    );
+    assert_within!(
+        g.depth_ratio,
+        1.0,
+        "bound::depth_relative (derived in its docs): error / bound at the worst texel",
+        "{name}: texel ({}, {}) rebuilds view depth {:.3e} relative from the fat one",
+        g.depth_at % w,
+        g.depth_at / w,
+        g.depth_rel
+    );
+}
+
+#[test]
+fn light_prepass_frame_diet_within_derived_bound_of_fat() {
+    let dev = device();
+    let base = small();
+    let scene = scene::build(base.lights);
+    let rows = run(dev, &base, &scene).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(rows.len(), 18, "two fat frames and sixteen diet layouts");
+    for r in &rows {
+        assert_eq!(
+            non_finite(&r.output.colour),
+            0,
+            "{}: NaN or infinite pixels",
+            r.cfg.layout_name()
+        );
+    }
+    for r in rows.iter().filter(|r| r.error.is_some()) {
+        let Storage::Diet { normal, .. } = r.cfg.storage else {
+            unreachable!()
+        };
+        check_gbuffer(&rows, r, &scene);
+        let (excluded, broken, excess) = check_bound(&rows, r, &scene);
+        if bound::hemisphere_only(normal) {
+            // The scene's normal-mapped ground and off-axis spheres face away from the view
+            // axis (z < 0): xy FP16 mirrors those normals, and the error there must break the
+            // bound the same pixels would have if their normals were in the encoding's domain
+            // — the artefact is in the image, not only in the numbers.
+            assert_at_least!(excluded, > 0, "the scene must have z < 0 view-space normals");
+            assert_at_least!(
+                excess,
+                > 1.0,
+                "xy FP16's z < 0 artefact: error beyond the in-domain bound (bound::in_domain), \
+                 levels",
+                "{}: {broken} of {excluded} z < 0 pixels break it",
+                r.cfg.layout_name()
+            );
+        }
+    }
+
+    // The images and compare.md are written.
+    let dir = std::env::temp_dir().join(format!("prepass-light_prepass-{}", std::process::id()));
+    renderer::report::write(&dir, dev, &base, &scene, &rows, "").unwrap();
+    for r in &rows {
+        let stem = r.cfg.file_stem();
+        let mut files = vec![format!("{stem}.png")];
+        if r.error.is_some() {
+            files.push(format!("{stem}_error.png"));
+        }
+        for f in files {
+            let (w, h) = png_size(&dir.join(&f));
+            assert_eq!((w, h), (base.width, base.height), "{f}");
+        }
+    }
+    let md = std::fs::read_to_string(dir.join("compare.md")).unwrap();
+    assert!(md.contains("xy fp16 + D24 in RGBA8, two buffers"), "{md}");
+    assert!(md.contains("## The G-buffer, decoded"), "{md}");
+    let _ = std::fs::remove_dir_all(&dir);
+
+    // The README's table and images.
+    let memory_at = (
+        Config::default_frame().width,
+        Config::default_frame().height,
+    );
+    let body = format!(
+        "{} Errors at {}×{} against the fat frame of the same light layout; memory at the \
+         default {}×{}, one sample.\n\n{}",
+        common::adapter_line().trim_end(),
+        base.width,
+        base.height,
+        memory_at.0,
+        memory_at.1,
+        table(&rows, memory_at, false)
+    );
+    common::publish("README.md", "light-prepass", &body);
+    let find = |stem: &str| {
+        rows.iter()
+            .find(|r| r.cfg.file_stem() == stem)
+            .unwrap_or_else(|| panic!("no layout {stem}"))
+    };
+    let frame = find("oct24_d32f_one");
+    let images = [
+        ("frame.png", frame.rgb.clone()),
+        (
+            "xy_fp16_error.png",
+            false_colour(
+                &fat_of(&rows, find("xy_fp16_d32f_one")).rgb,
+                &find("xy_fp16_d32f_one").rgb,
+            ),
+        ),
+        (
+            "xyz8_error.png",
+            false_colour(
+                &fat_of(&rows, find("xyz8_d24_one")).rgb,
+                &find("xyz8_d24_one").rgb,
+            ),
+        ),
+    ];
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/light_prepass");
+    for (name, rgb) in images {
+        let path = docs.join(name);
+        if std::env::var_os("PREPASS_WRITE_DOCS").is_some() {
+            std::fs::create_dir_all(&docs).unwrap();
+            renderer::png_out::write_rgb(&path, base.width, base.height, &rgb).unwrap();
+        } else {
+            let committed = png_pixels(&path);
+            assert!(
+                committed == rgb,
+                "{} differs from the frame rendered now: run `bash .ci/docs` to regenerate it",
+                path.display()
+            );
+        }
+    }
+}
+
+fn png_size(path: &std::path::Path) -> (u32, u32) {
+    let f = std::fs::File::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let r = png::Decoder::new(std::io::BufReader::new(f))
+        .read_info()
+        .unwrap();
+    (r.info().width, r.info().height)
+}
+
+fn png_pixels(path: &std::path::Path) -> Vec<[u8; 3]> {
+    let f = std::fs::File::open(path).unwrap_or_else(|e| {
+        panic!(
+            "{}: {e}; run `bash .ci/docs` to write the README's images",
+            path.display()
+        )
+    });
+    let mut r = png::Decoder::new(std::io::BufReader::new(f))
+        .read_info()
+        .unwrap();
+    let mut buf = vec![0; r.output_buffer_size()];
+    let info = r.next_frame(&mut buf).unwrap();
+    buf[..info.buffer_size()]
+        .chunks_exact(3)
+        .map(|c| [c[0], c[1], c[2]])
+        .collect()
+}
+
+/// Bad input: a resolution of 0 and one beyond the adapter's limit are clear errors; the
+/// frame's own bad-input lights (at the camera, through the near plane, radius 0) and its sky
+/// render finite pixels; MSAA, where the adapter has it, renders finite pixels per sample.
+#[test]
+fn light_prepass_bad_input() {
+    let dev = device();
+    let max = dev.device.limits().max_texture_dimension_2d;
+    for (w, h, want) in [
+        (0, 180, "at least 1"),
+        (320, 0, "at least 1"),
+        (max + 1, 8, "limit"),
+    ] {
+        let cfg = Config {
+            width: w,
+            height: h,
+            ..small()
+        };
+        let e = renderer::render::check(dev, &cfg).expect_err("a bad resolution must fail");
+        assert!(e.contains(want), "{w}×{h}: {e}");
+    }
+    let cfg = Config { msaa: 3, ..small() };
+    let e = renderer::render::check(dev, &cfg).expect_err("3 samples must fail");
+    assert!(e.contains("supports"), "{e}");
+
+    let base = Config {
+        width: 160,
+        height: 90,
+        ..small()
+    };
+    let scene = scene::build(base.lights);
+    let o = render(dev, &base, &scene).unwrap();
+    let o_single = &o;
+    // Two volumes need their back faces (the light at the camera, the one through the near
+    // plane); the zero-radius light is left out.
+    assert_at_least!(
+        o.classes[1],
+        2,
+        "the camera-inside test on the bad-input lights"
+    );
+    assert_eq!(o.skipped, 1, "the zero-radius light is left out");
+    assert_eq!(non_finite(&o.colour), 0);
+    assert!(o.fragments[2] > 0, "the sky is reached and discarded");
+    let rgb = to_rgb8(&o.colour);
+    assert!(rgb.iter().any(|p| p[0] > 64), "the frame is lit");
+    // The other conventions and formats render finite frames too: standard depth with a finite
+    // far plane in a 24-bit code, an rgba8unorm two-buffer light layout.
+    for cfg in [
+        Config {
+            convention: prepass::projection::DepthConvention::Standard,
+            far: 200.0,
+            storage: Storage::Diet {
+                normal: prepass::scene::NormalEncoding::Xyz8,
+                depth: prepass::scene::DepthStorage::Code24Rgba8,
+            },
+            ..base
+        },
+        Config {
+            light_format: renderer::LightFormat::Rgba8Unorm,
+            lights_layout: prepass::scene::LightBuffers::Two,
+            ..base
+        },
+    ] {
+        let o = render(dev, &cfg, &scene).unwrap();
+        assert_eq!(non_finite(&o.colour), 0, "{}", cfg.layout_name());
+        assert!(
+            to_rgb8(&o.colour).iter().any(|p| p[0] > 64),
+            "{} is lit",
+            cfg.layout_name()
+        );
+    }
+    if let Some(n) = dev.sample_counts(&base).into_iter().find(|&n| n > 1) {
+        let o = render(dev, &Config { msaa: n, ..base }, &scene).unwrap();
+        assert_eq!(non_finite(&o.colour), 0, "MSAA {n}×");
+        // Per-sample lighting: a pixel a volume covers wholly runs n invocations instead of
+        // one, an edge pixel at least one, so at least n/2 times the single-sample count.
+        let single = f64::from(o_single.fragments[0]);
+        assert_at_least!(
+            f64::from(o.fragments[0]),
+            single * f64::from(n) / 2.0,
+            "sample-rate shading in the light pass (comment above)",
+            "MSAA {n}×"
+        );
+    }
+}
