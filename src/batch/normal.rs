@@ -28,17 +28,19 @@ fn sel(c: bool, a: u32, b: u32) -> u32 {
 /// its final scaling, and whether any component is NaN.
 #[inline(always)]
 fn sanitize_bits(n: Vec3) -> ([u32; 3], bool) {
+    // (No `array::map` in lane bodies: it is not always inlined, and a call stops the
+    // vectoriser.)
     let b = [n.x.to_bits(), n.y.to_bits(), n.z.to_bits()];
-    let abs = b.map(|x| x & 0x7fff_ffff);
-    let sign = b.map(|x| x & 0x8000_0000);
+    let abs = [b[0] & 0x7fff_ffff, b[1] & 0x7fff_ffff, b[2] & 0x7fff_ffff];
+    let sign = [b[0] & 0x8000_0000, b[1] & 0x8000_0000, b[2] & 0x8000_0000];
     let nan = (abs[0] > 0x7f80_0000) | (abs[1] > 0x7f80_0000) | (abs[2] > 0x7f80_0000);
     let inf = (abs[0] == 0x7f80_0000) | (abs[1] == 0x7f80_0000) | (abs[2] == 0x7f80_0000);
-    let c = [0, 1, 2].map(|k| {
+    let comp = |k: usize| {
         let inf_form = sel(abs[k] == 0x7f80_0000, sign[k] | 0x3f80_0000, sign[k]);
         let flushed = sel(abs[k] < 0x0080_0000, sign[k], b[k]);
         sel(inf, inf_form, flushed)
-    });
-    (c, nan)
+    };
+    ([comp(0), comp(1), comp(2)], nan)
 }
 
 /// The exact power-of-two scaling of [`crate::normal::sanitize`]: `m` the largest component
@@ -60,7 +62,11 @@ fn scale_and_flush(c: [f32; 3], m: f32) -> Vec3 {
 #[inline(always)]
 fn sanitize_or_z(n: Vec3) -> Vec3 {
     let (c, nan) = sanitize_bits(n);
-    let c = c.map(f32::from_bits);
+    let c = [
+        f32::from_bits(c[0]),
+        f32::from_bits(c[1]),
+        f32::from_bits(c[2]),
+    ];
     let m = c[0].abs().max(c[1].abs()).max(c[2].abs());
     let s = scale_and_flush(c, m);
     let bad = nan | (m == 0.0);
@@ -75,7 +81,11 @@ fn sanitize_or_z(n: Vec3) -> Vec3 {
 #[inline(always)]
 fn hemioct_sanitize(n: Vec3) -> Vec3 {
     let (c, nan) = sanitize_bits(n);
-    let mut c = c.map(f32::from_bits);
+    let mut c = [
+        f32::from_bits(c[0]),
+        f32::from_bits(c[1]),
+        f32::from_bits(c[2]),
+    ];
     c[2] = c[2].max(0.0);
     let m = c[0].abs().max(c[1].abs()).max(c[2]);
     let s = scale_and_flush(c, m);
@@ -122,8 +132,14 @@ fn oct_lattice(u: u32, v: u32, m: i32) -> [i32; 3] {
     let z = m
         .wrapping_sub(a.wrapping_abs())
         .wrapping_sub(b.wrapping_abs());
-    let fx = m.wrapping_sub(b.wrapping_abs()).wrapping_mul(a.signum());
-    let fy = m.wrapping_sub(a.wrapping_abs()).wrapping_mul(b.signum());
+    // (m − |b|)·signum(a) as a select: `i32::signum` does not vectorise (a, b are odd, so
+    // never zero).
+    let (fx, fy) = (
+        m.wrapping_sub(b.wrapping_abs()),
+        m.wrapping_sub(a.wrapping_abs()),
+    );
+    let fx = if a < 0 { fx.wrapping_neg() } else { fx };
+    let fy = if b < 0 { fy.wrapping_neg() } else { fy };
     let pos = z >= 0;
     [if pos { a } else { fx }, if pos { b } else { fy }, z]
 }
@@ -145,7 +161,11 @@ fn hemioct_lattice(u: u32, v: u32) -> [i32; 3] {
 /// fits a `u32` (its L1 norm is M < 2^16).
 #[inline(always)]
 fn sin2(s: Vec3, d: [i32; 3]) -> f32 {
-    let ad = d.map(|x| x.unsigned_abs());
+    let ad = [
+        d[0].unsigned_abs(),
+        d[1].unsigned_abs(),
+        d[2].unsigned_abs(),
+    ];
     let len2 = ad[0]
         .wrapping_mul(ad[0])
         .wrapping_add(ad[1].wrapping_mul(ad[1]))
@@ -163,9 +183,8 @@ fn sin2(s: Vec3, d: [i32; 3]) -> f32 {
 /// `(0,0), (1,0), (0,1), (1,1)`, the first with the strictly smallest score.
 #[inline(always)]
 fn best_of_four(s: Vec3, c: Vec2, m: u32, lattice: impl Fn(u32, u32) -> [i32; 3]) -> (u32, u32) {
-    // floor(c) for c ≥ 0 (c ∈ [0, M]): truncation.
-    let bx = (c.x as i32 as u32).min(m.wrapping_sub(1));
-    let by = (c.y as i32 as u32).min(m.wrapping_sub(1));
+    let bx = floor_small(c.x).min(m.wrapping_sub(1));
+    let by = floor_small(c.y).min(m.wrapping_sub(1));
     let (mut best_x, mut best_y) = (bx, by);
     let mut best_s2 = sin2(s, lattice(bx, by));
     for k in 1..4u32 {
@@ -177,6 +196,15 @@ fn best_of_four(s: Vec3, c: Vec2, m: u32, lattice: impl Fn(u32, u32) -> [i32; 3]
         best_s2 = if better { s2 } else { best_s2 };
     }
     (best_x, best_y)
+}
+
+/// `floor(c) as u32` for `0 ≤ c < 2^23`, exactly: the nearest integer `r`, less one where
+/// `r > c` (`r` as f32 is exact). No float-to-int conversion, whose saturating form does not
+/// vectorise.
+#[inline(always)]
+fn floor_small(c: f32) -> u32 {
+    let r = round_even_small(c);
+    r.wrapping_sub(u32::from(r as i32 as f32 > c))
 }
 
 #[inline(always)]
@@ -237,8 +265,8 @@ fn xyz8_encode_lane(n: Vec3) -> u32 {
 
 #[inline(always)]
 fn xyz8_decode_lane(p: u32) -> Vec3 {
-    let d = [p, p >> 8, p >> 16].map(|b| (((b & 0xff) << 1) as i32).wrapping_sub(255) as f32);
-    normalize(Vec3::from_array(d))
+    let c = |b: u32| (((b & 0xff) << 1) as i32).wrapping_sub(255) as f32;
+    normalize(Vec3::new(c(p), c(p >> 8), c(p >> 16)))
 }
 
 /// f32 → f16 bits, round to nearest even, for `|x| ≤ 1` (all the encoder passes it; any f32
@@ -292,7 +320,8 @@ fn xy_fp16_decode_lane(p: u32) -> Vec3 {
 /// [`crate::depth24::unpack4x8unorm`]: `byte/255` per byte, byte 0 first.
 #[inline(always)]
 pub(crate) fn unpack4x8unorm_lane(p: u32) -> [f32; 4] {
-    [0, 8, 16, 24].map(|shift| ((p >> shift) & 0xff) as i32 as f32 / 255.0)
+    let c = |b: u32| (b & 0xff) as i32 as f32 / 255.0;
+    [c(p), c(p >> 8), c(p >> 16), c(p >> 24)]
 }
 
 /// `round(255·clamp(c, 0, 1))` with NaN → 0 for one channel (the twins' `unorm_bytes` rule).
@@ -308,6 +337,54 @@ fn unorm_bytes_lane(c: [f32; 4]) -> u32 {
         | (unorm_byte_lane(c[1]) << 8)
         | (unorm_byte_lane(c[2]) << 16)
         | (unorm_byte_lane(c[3]) << 24)
+}
+
+// Named lanes for the composite forms: a closure whose body is large after inlining may not be
+// inlined into the loop itself (a call there stops the vectoriser); an `inline(always)` fn is.
+
+#[inline(always)]
+fn oct_precise_fixed<const BITS: u32>(n: Vec3) -> u32 {
+    oct_precise_lane(n, BITS, (1 << BITS) - 1)
+}
+#[inline(always)]
+fn oct_round_fixed<const BITS: u32>(n: Vec3) -> u32 {
+    oct_round_lane(n, BITS, (1 << BITS) - 1)
+}
+#[inline(always)]
+fn oct_decode_fixed<const BITS: u32>(p: u32) -> Vec3 {
+    oct_decode_lane(p, BITS, (1 << BITS) - 1)
+}
+#[inline(always)]
+fn oct_precise_unorm<const BITS: u32>(n: Vec3) -> [f32; 4] {
+    unpack4x8unorm_lane(oct_precise_fixed::<BITS>(n))
+}
+#[inline(always)]
+fn oct_decode_unorm<const BITS: u32>(c: [f32; 4]) -> Vec3 {
+    oct_decode_fixed::<BITS>(unorm_bytes_lane(c))
+}
+#[inline(always)]
+fn xyz8_encode_unorm(n: Vec3) -> [f32; 4] {
+    unpack4x8unorm_lane(xyz8_encode_lane(n))
+}
+#[inline(always)]
+fn xyz8_decode_unorm(c: [f32; 4]) -> Vec3 {
+    xyz8_decode_lane(unorm_bytes_lane(c))
+}
+#[inline(always)]
+fn xy_fp16_encode_unorm(n: Vec3) -> [f32; 4] {
+    unpack4x8unorm_lane(xy_fp16_encode_lane(n))
+}
+#[inline(always)]
+fn xy_fp16_decode_unorm(c: [f32; 4]) -> Vec3 {
+    xy_fp16_decode_lane(unorm_bytes_lane(c))
+}
+#[inline(always)]
+fn hemioct_encode_unorm(n: Vec3) -> [f32; 4] {
+    unpack4x8unorm_lane(hemioct_precise_lane(n))
+}
+#[inline(always)]
+fn hemioct_decode_unorm(c: [f32; 4]) -> Vec3 {
+    hemioct_decode_lane(unorm_bytes_lane(c))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -332,14 +409,14 @@ batch_fn!(
     encode_normal_xyz8_unorm, encode_normal_xyz8_unorm_with, "normal::encode_normal_xyz8_unorm",
     (), Vec3 => [f32; 4],
     scalar: xyz8::encode_normal_xyz8_unorm,
-    lane: |n| unpack4x8unorm_lane(xyz8_encode_lane(n)),
+    lane: xyz8_encode_unorm,
 );
 batch_fn!(
     /// Batch [`xyz8::decode_normal_xyz8_unorm`].
     decode_normal_xyz8_unorm, decode_normal_xyz8_unorm_with, "normal::decode_normal_xyz8_unorm",
     (), [f32; 4] => Vec3,
     scalar: xyz8::decode_normal_xyz8_unorm,
-    lane: |c| xyz8_decode_lane(unorm_bytes_lane(c)),
+    lane: xyz8_decode_unorm,
 );
 
 batch_fn!(
@@ -362,7 +439,7 @@ batch_fn!(
     "normal::encode_normal_xy_fp16_unorm",
     (), Vec3 => [f32; 4],
     scalar: xy_fp16::encode_normal_xy_fp16_unorm,
-    lane: |n| unpack4x8unorm_lane(xy_fp16_encode_lane(n)),
+    lane: xy_fp16_encode_unorm,
 );
 batch_fn!(
     /// Batch [`xy_fp16::decode_normal_xy_fp16_unorm`].
@@ -370,7 +447,7 @@ batch_fn!(
     "normal::decode_normal_xy_fp16_unorm",
     (), [f32; 4] => Vec3,
     scalar: xy_fp16::decode_normal_xy_fp16_unorm,
-    lane: |c| xy_fp16_decode_lane(unorm_bytes_lane(c)),
+    lane: xy_fp16_decode_unorm,
 );
 
 batch_fn!(
@@ -414,35 +491,35 @@ macro_rules! oct_size {
             $enc, $enc_w, concat!("normal::", stringify!($enc)),
             (), Vec3 => u32,
             scalar: oct::$enc,
-            lane: |n| oct_precise_lane(n, $bits, (1 << $bits) - 1),
+            lane: oct_precise_fixed::<$bits>,
         );
         batch_fn!(
             #[doc = concat!("Batch [`oct::", stringify!($fast), "`].")]
             $fast, $fast_w, concat!("normal::", stringify!($fast)),
             (), Vec3 => u32,
             scalar: oct::$fast,
-            lane: |n| oct_round_lane(n, $bits, (1 << $bits) - 1),
+            lane: oct_round_fixed::<$bits>,
         );
         batch_fn!(
             #[doc = concat!("Batch [`oct::", stringify!($dec), "`].")]
             $dec, $dec_w, concat!("normal::", stringify!($dec)),
             (), u32 => Vec3,
             scalar: oct::$dec,
-            lane: |p| oct_decode_lane(p, $bits, (1 << $bits) - 1),
+            lane: oct_decode_fixed::<$bits>,
         );
         batch_fn!(
             #[doc = concat!("Batch [`oct::", stringify!($eu), "`].")]
             $eu, $eu_w, concat!("normal::", stringify!($eu)),
             (), Vec3 => [f32; 4],
             scalar: oct::$eu,
-            lane: |n| unpack4x8unorm_lane(oct_precise_lane(n, $bits, (1 << $bits) - 1)),
+            lane: oct_precise_unorm::<$bits>,
         );
         batch_fn!(
             #[doc = concat!("Batch [`oct::", stringify!($du), "`].")]
             $du, $du_w, concat!("normal::", stringify!($du)),
             (), [f32; 4] => Vec3,
             scalar: oct::$du,
-            lane: |c| oct_decode_lane(unorm_bytes_lane(c), $bits, (1 << $bits) - 1),
+            lane: oct_decode_unorm::<$bits>,
         );
     };
 }
@@ -515,7 +592,7 @@ batch_fn!(
     "normal::encode_normal_hemioct24_unorm",
     (), Vec3 => [f32; 4],
     scalar: hemioct::encode_normal_hemioct24_unorm,
-    lane: |n| unpack4x8unorm_lane(hemioct_precise_lane(n)),
+    lane: hemioct_encode_unorm,
 );
 batch_fn!(
     /// Batch [`hemioct::decode_normal_hemioct24_unorm`].
@@ -523,5 +600,5 @@ batch_fn!(
     "normal::decode_normal_hemioct24_unorm",
     (), [f32; 4] => Vec3,
     scalar: hemioct::decode_normal_hemioct24_unorm,
-    lane: |c| hemioct_decode_lane(unorm_bytes_lane(c)),
+    lane: hemioct_decode_unorm,
 );
