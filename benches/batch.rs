@@ -18,7 +18,7 @@
 //! second of prepass over meshopt's; `oct16` is the precise encoder, `oct16_fast` the rounding
 //! one, and both share `oct16 decode`), then the memory cap: a plain copy of the larger buffer
 //! of each operation (the 12-byte-per-normal `Vec3` side), and each prepass function's rate as
-//! a fraction of it. 65,536 normals keep every buffer (≤ 1 MiB) in L2, so the cap is the
+//! a fraction of it, and prepass's rates at the baseline level (SSE2, NEON) for comparison. 65,536 normals keep every buffer (≤ 1 MiB) in L2, so the cap is the
 //! cache's, not DRAM's. Set `PREPASS_BENCH_SUMMARY_ONLY=1` to skip criterion.
 
 use criterion::{BatchSize, Criterion, Throughput};
@@ -181,6 +181,14 @@ fn medians(runs: usize, fs: &mut [&mut dyn FnMut() -> f64]) -> Vec<f64> {
 fn summary() {
     let (flat, vecs) = normals();
     let level = Level::detected();
+    // The baseline vector level, for comparison: SSE2 on x86_64, NEON on aarch64.
+    let base = if cfg!(target_arch = "x86_64") {
+        Level::Sse2
+    } else if cfg!(target_arch = "aarch64") {
+        Level::Neon
+    } else {
+        Level::Scalar
+    };
     let runs = 101;
     let rate = |secs: f64| N as f64 / secs / 1e6;
     let mut ratios = Vec::new();
@@ -196,6 +204,8 @@ fn summary() {
         let mut out_fast = vec![0u32; N];
         let mut decoded = vec![Vec3::ZERO; N];
         let mut copy_dst = vec![Vec3::ZERO; N];
+        let (mut out_b, mut out_fast_b, mut decoded_b) =
+            (out.clone(), out.clone(), decoded.clone());
         let t = medians(
             runs,
             &mut [
@@ -208,10 +218,25 @@ fn summary() {
                 &mut || timed(|| (size.fast)(level, black_box(&vecs), &mut out_fast)),
                 &mut || timed(|| (size.decode)(level, black_box(&codes), &mut decoded)),
                 &mut || timed(|| copy_dst.copy_from_slice(black_box(&vecs))),
+                &mut || timed(|| (size.precise)(base, black_box(&vecs), &mut out_b)),
+                &mut || timed(|| (size.fast)(base, black_box(&vecs), &mut out_fast_b)),
+                &mut || timed(|| (size.decode)(base, black_box(&codes), &mut decoded_b)),
             ],
         );
         black_box((&out, &out_fast, &decoded, &copy_dst, &buf));
-        let [m_enc, m_dec, p_precise, p_fast, p_dec, copy] = t[..] else {
+        black_box((&out_b, &out_fast_b, &decoded_b));
+        let [
+            m_enc,
+            m_dec,
+            p_precise,
+            p_fast,
+            p_dec,
+            copy,
+            s_precise,
+            s_fast,
+            s_dec,
+        ] = t[..]
+        else {
             unreachable!()
         };
         let name = size.name;
@@ -229,14 +254,17 @@ fn summary() {
         ));
         caps.push(format!(
             "{name}/{}-bit: M normals/s: meshopt encode {:.0}, decode {:.0}; prepass encode {:.0} \
-             (precise), {:.0} (fast), decode {:.0}; copy {:.0} (cap); prepass/copy: encode {:.2} \
-             (precise), {:.2} (fast), decode {:.2}",
+             (precise), {:.0} (fast), decode {:.0} (at {base}: {:.0}, {:.0}, {:.0}); copy {:.0} (cap); \
+             prepass/copy: encode {:.2} (precise), {:.2} (fast), decode {:.2}",
             size.bits,
             rate(m_enc),
             rate(m_dec),
             rate(p_precise),
             rate(p_fast),
             rate(p_dec),
+            rate(s_precise),
+            rate(s_fast),
+            rate(s_dec),
             rate(copy),
             copy / p_precise,
             copy / p_fast,
