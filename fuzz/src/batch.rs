@@ -79,7 +79,7 @@ fn same<I: Bits, O: Bits>(
 ) {
     let want: Vec<O> = src.iter().map(|&x| scalar(x)).collect();
     let mut got = vec![O::default(); src.len()];
-    let mut compare = |form: &str, got: &[O]| {
+    let compare = |form: &str, got: &[O]| {
         for (k, (g, w)) in got.iter().zip(&want).enumerate() {
             assert!(
                 g.bits() == w.bits(),
