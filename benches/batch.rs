@@ -153,6 +153,41 @@ fn criterion_groups(c: &mut Criterion) {
     }
 }
 
+/// The other batch families at the detected level beside [`Level::Scalar`] (the scalar twin per
+/// element): roughness at the tests' range 8192, and 24-bit depth recovery from RGB8 channels.
+fn criterion_others(c: &mut Criterion) {
+    use prepass::batch::{depth24 as bd, roughness as br};
+    let level = Level::detected();
+    let powers: Vec<f32> = (0..N)
+        .map(|i| (i as f32 / N as f32 * 13.0).exp2())
+        .collect();
+    let codes: Vec<u32> = (0..N as u32)
+        .map(|i| i.wrapping_mul(0x9e37_79b1) & 0xff)
+        .collect();
+    let rgb: Vec<Vec3> = (0..N as u32)
+        .map(|i| {
+            let p = prepass::depth24::pack_depth24(i.wrapping_mul(0x9e37_79b1) & 0xff_ffff);
+            let [r, g, b, _] = prepass::depth24::unpack4x8unorm(p);
+            Vec3::new(r, g, b)
+        })
+        .collect();
+    let (mut out_u32, mut out_f32) = (vec![0u32; N], vec![0f32; N]);
+    let mut g = c.benchmark_group("batch_others");
+    g.throughput(Throughput::Elements(N as u64));
+    for l in [level, Level::Scalar] {
+        g.bench_function(format!("roughness encode (max 8192, {l})"), |b| {
+            b.iter(|| br::encode_log_roughness_with(l, 8192.0, black_box(&powers), &mut out_u32))
+        });
+        g.bench_function(format!("roughness decode (max 8192, {l})"), |b| {
+            b.iter(|| br::decode_log_roughness_with(l, 8192.0, black_box(&codes), &mut out_f32))
+        });
+        g.bench_function(format!("depth24_from_rgb8 ({l})"), |b| {
+            b.iter(|| bd::depth24_from_rgb8_with(l, black_box(&rgb), &mut out_u32))
+        });
+    }
+    g.finish();
+}
+
 /// Seconds `f` takes.
 fn timed(f: impl FnOnce()) -> f64 {
     let start = Instant::now();
@@ -308,6 +343,7 @@ fn main() {
             .measurement_time(Duration::from_secs(2))
             .configure_from_args();
         criterion_groups(&mut c);
+        criterion_others(&mut c);
         c.final_summary();
     }
     summary();

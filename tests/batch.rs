@@ -572,22 +572,37 @@ fn roughness_decode_every_code() {
     }
 }
 
-/// Every 7th `f32` power in `[1, 8192]` for the tests' range 8192, and for every range every
+/// The power-of-two encoder is a different evaluation of the same exact function (its
+/// candidate comes from a polynomial, `src/batch/roughness.rs`), so it is checked densely:
+/// every `f32` in `[1, 2]` at range 2 (`L = 1`, where the candidate's error in codes is
+/// largest; the error depends only on the significand), every 3rd `f32` in `[1, 8192]` at
+/// the tests' range 8192, every 61st `f32` in `[1, 2^127]` at range 2^127; and for every range every
 /// 64th pattern of the stratified 32-bit sample read as `f32` (NaNs, negatives, subnormals and
 /// huge powers among them).
 #[test]
 fn roughness_encode() {
-    let dense: Vec<f32> = (1.0f32.to_bits()..=8192.0f32.to_bits())
-        .step_by(7)
-        .map(f32::from_bits)
-        .collect();
-    check(
-        "roughness::encode_log_roughness(max 8192)",
-        &dense,
-        |p| prepass::roughness::encode_log_roughness(p, 8192.0),
-        |l, s, d| br::encode_log_roughness_with(l, 8192.0, s, d),
-        |s, d| br::encode_log_roughness(8192.0, s, d),
-    );
+    let span = |lo: f32, hi: f32, step: usize| -> Vec<f32> {
+        (lo.to_bits()..=hi.to_bits())
+            .step_by(step)
+            .map(f32::from_bits)
+            .collect()
+    };
+    for (max, powers) in [
+        (2.0, span(1.0, 2.0, 1)),
+        (8192.0, span(1.0, 8192.0, 3)),
+        (
+            f32::from_bits(0x7f00_0000),
+            span(1.0, f32::from_bits(0x7f00_0000), 5),
+        ),
+    ] {
+        check(
+            &format!("roughness::encode_log_roughness(max {max:e}, dense)"),
+            &powers,
+            |p| prepass::roughness::encode_log_roughness(p, max),
+            |l, s, d| br::encode_log_roughness_with(l, max, s, d),
+            |s, d| br::encode_log_roughness(max, s, d),
+        );
+    }
     let sparse: Vec<f32> = stratified()
         .iter()
         .step_by(64)

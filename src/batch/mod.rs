@@ -31,9 +31,10 @@
 //! baseline (SSE2 on `x86_64`, NEON on `aarch64`) and, on `x86_64`, again inside a
 //! `#[target_feature(enable = "avx2")]` function chosen at run time by
 //! `is_x86_feature_detected!`. LLVM vectorises these loops (8 lanes with AVX2, 4 with SSE2 or
-//! NEON). Bit-identity holds because Rust never contracts `a·b + c` into an FMA nor reassociates,
-//! and `+ − × / sqrt` are correctly rounded in SSE, AVX and NEON just as in scalar code. Two
-//! scalar operations are replaced by exact equivalents that vectorise without SSE4.1:
+//! NEON; the exceptions, scalar but branch-free, are in [`roughness`]). Bit-identity holds
+//! because Rust never contracts `a·b + c` into an FMA nor reassociates, and `+ − × / sqrt` are
+//! correctly rounded in SSE, AVX and NEON just as in scalar code. Two scalar operations are
+//! replaced by exact equivalents that vectorise without SSE4.1:
 //! `round_ties_even(x)` for `0 ≤ x < 2^23` is the bit pattern of `x + 2^23` minus that of
 //! `2^23` (the addition rounds to an integer, ties to even), and `floor(x)` for `x ≥ 0` is the
 //! truncating `x as i32`.

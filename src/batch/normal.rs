@@ -202,7 +202,7 @@ fn best_of_four(s: Vec3, c: Vec2, m: u32, lattice: impl Fn(u32, u32) -> [i32; 3]
 /// `r > c` (`r` as f32 is exact). No float-to-int conversion, whose saturating form does not
 /// vectorise.
 #[inline(always)]
-fn floor_small(c: f32) -> u32 {
+pub(crate) fn floor_small(c: f32) -> u32 {
     let r = round_even_small(c);
     r.wrapping_sub(u32::from(r as i32 as f32 > c))
 }
