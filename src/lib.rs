@@ -23,7 +23,8 @@
 //! | `conforming` | any | the worst conforming adapter emulated on yours: any module rewritten so every operation the WGSL spec leaves free lands at a chosen end of its interval (feature `validate`; run with `harness`) |
 //!
 //! Features: none by default (glam + half only); `validate` adds naga, `harness` adds wgpu,
-//! `proptest` adds strategies for downstream precision suites.
+//! `proptest` adds strategies for downstream precision suites, `rayon` splits long batches of
+//! [`batch`] across threads.
 
 #![warn(missing_docs)]
 

@@ -57,8 +57,9 @@ pub mod normal;
 pub mod roughness;
 
 /// Batches at least this long are split across rayon's pool by the plain (non-`_with`) batch
-/// functions when the `rayon` feature is on: 2^16 elements (about 0.3 ms of work at the slowest
-/// codec's single-thread rate, so the split's overhead of a few µs is small).
+/// functions when the `rayon` feature is on: 2^16 elements, enough work per batch (tens of µs
+/// or more at every codec's single-thread rate, `benches/batch.rs`) that the split's own cost
+/// is small beside it.
 pub const PAR_THRESHOLD: usize = 1 << 16;
 
 /// Chunk length of the rayon split: 2^14 elements (≤ 256 KiB of input and output per chunk, so
