@@ -15,6 +15,7 @@
 //! | [`roughness`] | `wgsl/roughness.wgsl` | specular exponent in log range, 8 bits; normal + roughness RGBA8 texel |
 //! | [`lighting`] (`lpp`, `aggregate_light`, `light_volume`) | `wgsl/lpp.wgsl`, `wgsl/aggregate_light.wgsl`, `wgsl/light_volume.wgsl` | light pre-pass P/C and specular reconstruction, aggregate vertex lights, light volumes and depth bounds; each twin has its WGSL function's name |
 //! | [`normal`] | `wgsl/normal_*.wgsl` | normal encodings: xyz8, xy FP16, octahedral 16/24/32, hemi-octahedral 24 |
+//! | [`batch`] | — | every normal, depth24 and roughness encoder and decoder over slices, SIMD (SSE2, AVX2 at run time, NEON), bit-identical to the scalar twins; feature `rayon` splits long batches |
 //! | [`precision`] | — | error metrics (ULP, relative, angular, mismatches) and test inputs |
 //! | `precision::strategies`, `precision::check` | any | proptest strategies with adversarial cases; batched checks of any WGSL against a Rust reference, shrinking on the adapter (features `proptest`; `check` also `harness`) |
 //! | [`wgsl`] | all | embedded sources; naga validation/translation (feature `validate`) |
@@ -22,10 +23,12 @@
 //! | `conforming` | any | the worst conforming adapter emulated on yours: any module rewritten so every operation the WGSL spec leaves free lands at a chosen end of its interval (feature `validate`; run with `harness`) |
 //!
 //! Features: none by default (glam + half only); `validate` adds naga, `harness` adds wgpu,
-//! `proptest` adds strategies for downstream precision suites.
+//! `proptest` adds strategies for downstream precision suites, `rayon` splits long batches of
+//! [`batch`] across threads.
 
 #![warn(missing_docs)]
 
+pub mod batch;
 #[cfg(feature = "validate")]
 pub mod conforming;
 pub mod depth24;

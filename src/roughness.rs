@@ -181,7 +181,7 @@ pub fn range(max_power: f32) -> Range {
     }
 }
 
-fn boundary_bits(j: u32, l: u32) -> u32 {
+pub(crate) fn boundary_bits(j: u32, l: u32) -> u32 {
     let n = (2 * j + 1) * l;
     BOUNDARY_STEPS[(n % 510) as usize] + ((n / 510) << 23)
 }

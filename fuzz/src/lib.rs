@@ -14,6 +14,8 @@
 //! A builder family (`Projection`, scene: arbitrary input → `Ok` or a clear `Err`) is a new
 //! table plus a three-line `fuzz_targets/builders.rs` and one line in `.ci/fuzz`.
 
+pub mod batch;
+
 use glam::Vec3;
 use prepass::depth24::{self, DEPTH24_MAX};
 use prepass::linear_depth as ld;
@@ -414,6 +416,7 @@ pub const TABLES: &[(&str, &[Entry])] = &[
     ("decoders", DECODERS),
     ("encoders", ENCODERS),
     ("differential", DIFFERENTIAL),
+    ("batch", batch::BATCH),
 ];
 
 #[cfg(test)]

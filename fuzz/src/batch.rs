@@ -1,0 +1,384 @@
+//! The `batch` target's table: every batch twin of `prepass::batch` against its scalar twin.
+//!
+//! Each entry reads a length `1..=64` (so the vector loops' tails and short batches run), that
+//! many inputs (any bit patterns: NaN, Inf, subnormals, codes with high bits set), and for the
+//! generic octahedral codes a `bits` in `1..=16` or for roughness a `max_power`; it runs the
+//! batch twin at every level this CPU has and in its plain (detected-level) form, and asserts
+//! every output has the scalar twin's bits.
+
+use crate::{Entry, Input};
+use glam::Vec3;
+use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br};
+use prepass::depth24 as d24;
+use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
+use prepass::roughness as r;
+
+/// A value compared by its bits.
+trait Bits: Copy + Default + std::fmt::Debug {
+    fn bits(self) -> [u32; 4];
+}
+impl Bits for u32 {
+    fn bits(self) -> [u32; 4] {
+        [self, 0, 0, 0]
+    }
+}
+impl Bits for f32 {
+    fn bits(self) -> [u32; 4] {
+        [self.to_bits(), 0, 0, 0]
+    }
+}
+impl Bits for Vec3 {
+    fn bits(self) -> [u32; 4] {
+        [self.x.to_bits(), self.y.to_bits(), self.z.to_bits(), 0]
+    }
+}
+impl Bits for [f32; 4] {
+    fn bits(self) -> [u32; 4] {
+        self.map(f32::to_bits)
+    }
+}
+
+/// Inputs read from the fuzz bytes: a length byte, then that many values.
+trait Read: Bits {
+    fn read(i: &mut Input) -> Self;
+}
+impl Read for u32 {
+    fn read(i: &mut Input) -> Self {
+        i.u32()
+    }
+}
+impl Read for f32 {
+    fn read(i: &mut Input) -> Self {
+        i.f32()
+    }
+}
+impl Read for Vec3 {
+    fn read(i: &mut Input) -> Self {
+        i.vec3()
+    }
+}
+impl Read for [f32; 4] {
+    fn read(i: &mut Input) -> Self {
+        [i.f32(), i.f32(), i.f32(), i.f32()]
+    }
+}
+
+fn inputs<I: Read>(i: &mut Input) -> Vec<I> {
+    let n = usize::from(i.u8() % 64) + 1;
+    (0..n).map(|_| I::read(i)).collect()
+}
+
+/// Every level and the plain form against the scalar twin, bit for bit.
+#[track_caller]
+fn same<I: Bits, O: Bits>(
+    name: &str,
+    src: &[I],
+    scalar: impl Fn(I) -> O,
+    with: impl Fn(Level, &[I], &mut [O]),
+    plain: impl Fn(&[I], &mut [O]),
+) {
+    let want: Vec<O> = src.iter().map(|&x| scalar(x)).collect();
+    let mut got = vec![O::default(); src.len()];
+    let compare = |form: &str, got: &[O]| {
+        for (k, (g, w)) in got.iter().zip(&want).enumerate() {
+            assert!(
+                g.bits() == w.bits(),
+                "{name} [{form}]: input #{k} {:?} (bits {:08x?}): batch {g:?} but scalar twin {w:?}",
+                src[k],
+                src[k].bits()
+            );
+        }
+    };
+    for level in Level::all_available() {
+        with(level, src, &mut got);
+        compare(&level.to_string(), &got);
+    }
+    plain(src, &mut got);
+    compare("plain", &got);
+}
+
+/// An entry for a batch twin without parameters.
+macro_rules! entry {
+    ($in:ty, $scalar:path, $module:ident :: $f:ident, $fw:ident) => {
+        Entry {
+            name: concat!("batch::", stringify!($module), "::", stringify!($f)),
+            check: |i| {
+                let src: Vec<$in> = inputs(i);
+                same(
+                    stringify!($f),
+                    &src,
+                    $scalar,
+                    |l, s, d| $module::$fw(l, s, d),
+                    |s, d| $module::$f(s, d),
+                );
+            },
+        }
+    };
+}
+
+/// One entry per public batch twin (the `_with` form of each is exercised at every level).
+pub const BATCH: &[Entry] = &[
+    entry!(
+        Vec3,
+        xyz8::encode_normal_xyz8,
+        bn::encode_normal_xyz8,
+        encode_normal_xyz8_with
+    ),
+    entry!(
+        u32,
+        xyz8::decode_normal_xyz8,
+        bn::decode_normal_xyz8,
+        decode_normal_xyz8_with
+    ),
+    entry!(
+        Vec3,
+        xyz8::encode_normal_xyz8_unorm,
+        bn::encode_normal_xyz8_unorm,
+        encode_normal_xyz8_unorm_with
+    ),
+    entry!(
+        [f32; 4],
+        xyz8::decode_normal_xyz8_unorm,
+        bn::decode_normal_xyz8_unorm,
+        decode_normal_xyz8_unorm_with
+    ),
+    entry!(
+        Vec3,
+        xy_fp16::encode_normal_xy_fp16,
+        bn::encode_normal_xy_fp16,
+        encode_normal_xy_fp16_with
+    ),
+    entry!(
+        u32,
+        xy_fp16::decode_normal_xy_fp16,
+        bn::decode_normal_xy_fp16,
+        decode_normal_xy_fp16_with
+    ),
+    entry!(
+        Vec3,
+        xy_fp16::encode_normal_xy_fp16_unorm,
+        bn::encode_normal_xy_fp16_unorm,
+        encode_normal_xy_fp16_unorm_with
+    ),
+    entry!(
+        [f32; 4],
+        xy_fp16::decode_normal_xy_fp16_unorm,
+        bn::decode_normal_xy_fp16_unorm,
+        decode_normal_xy_fp16_unorm_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct16,
+        bn::encode_normal_oct16,
+        encode_normal_oct16_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct16_fast,
+        bn::encode_normal_oct16_fast,
+        encode_normal_oct16_fast_with
+    ),
+    entry!(
+        u32,
+        oct::decode_normal_oct16,
+        bn::decode_normal_oct16,
+        decode_normal_oct16_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct16_unorm,
+        bn::encode_normal_oct16_unorm,
+        encode_normal_oct16_unorm_with
+    ),
+    entry!(
+        [f32; 4],
+        oct::decode_normal_oct16_unorm,
+        bn::decode_normal_oct16_unorm,
+        decode_normal_oct16_unorm_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct24,
+        bn::encode_normal_oct24,
+        encode_normal_oct24_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct24_fast,
+        bn::encode_normal_oct24_fast,
+        encode_normal_oct24_fast_with
+    ),
+    entry!(
+        u32,
+        oct::decode_normal_oct24,
+        bn::decode_normal_oct24,
+        decode_normal_oct24_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct24_unorm,
+        bn::encode_normal_oct24_unorm,
+        encode_normal_oct24_unorm_with
+    ),
+    entry!(
+        [f32; 4],
+        oct::decode_normal_oct24_unorm,
+        bn::decode_normal_oct24_unorm,
+        decode_normal_oct24_unorm_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct32,
+        bn::encode_normal_oct32,
+        encode_normal_oct32_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct32_fast,
+        bn::encode_normal_oct32_fast,
+        encode_normal_oct32_fast_with
+    ),
+    entry!(
+        u32,
+        oct::decode_normal_oct32,
+        bn::decode_normal_oct32,
+        decode_normal_oct32_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct32_unorm,
+        bn::encode_normal_oct32_unorm,
+        encode_normal_oct32_unorm_with
+    ),
+    entry!(
+        [f32; 4],
+        oct::decode_normal_oct32_unorm,
+        bn::decode_normal_oct32_unorm,
+        decode_normal_oct32_unorm_with
+    ),
+    entry!(
+        Vec3,
+        hemioct::encode_normal_hemioct24,
+        bn::encode_normal_hemioct24,
+        encode_normal_hemioct24_with
+    ),
+    entry!(
+        Vec3,
+        hemioct::encode_normal_hemioct24_fast,
+        bn::encode_normal_hemioct24_fast,
+        encode_normal_hemioct24_fast_with
+    ),
+    entry!(
+        u32,
+        hemioct::decode_normal_hemioct24,
+        bn::decode_normal_hemioct24,
+        decode_normal_hemioct24_with
+    ),
+    entry!(
+        Vec3,
+        hemioct::encode_normal_hemioct24_unorm,
+        bn::encode_normal_hemioct24_unorm,
+        encode_normal_hemioct24_unorm_with
+    ),
+    entry!(
+        [f32; 4],
+        hemioct::decode_normal_hemioct24_unorm,
+        bn::decode_normal_hemioct24_unorm,
+        decode_normal_hemioct24_unorm_with
+    ),
+    entry!(u32, d24::pack_depth24, bd::pack_depth24, pack_depth24_with),
+    entry!(
+        u32,
+        d24::depth24_from_packed,
+        bd::depth24_from_packed,
+        depth24_from_packed_with
+    ),
+    entry!(
+        Vec3,
+        d24::depth24_from_rgb8,
+        bd::depth24_from_rgb8,
+        depth24_from_rgb8_with
+    ),
+    entry!(
+        u32,
+        d24::hyperbolic_depth_from_depth24,
+        bd::hyperbolic_depth_from_depth24,
+        hyperbolic_depth_from_depth24_with
+    ),
+    entry!(
+        u32,
+        d24::unpack4x8unorm,
+        bd::unpack4x8unorm,
+        unpack4x8unorm_with
+    ),
+    Entry {
+        name: "batch::normal::encode_oct_precise",
+        check: |i| {
+            let bits = u32::from(i.u8() % 16) + 1;
+            let src: Vec<Vec3> = inputs(i);
+            same(
+                "encode_oct_precise",
+                &src,
+                |n| oct::encode_precise(n, bits),
+                |l, s, d| bn::encode_oct_precise_with(l, bits, s, d),
+                |s, d| bn::encode_oct_precise(bits, s, d),
+            );
+        },
+    },
+    Entry {
+        name: "batch::normal::encode_oct_round",
+        check: |i| {
+            let bits = u32::from(i.u8() % 16) + 1;
+            let src: Vec<Vec3> = inputs(i);
+            same(
+                "encode_oct_round",
+                &src,
+                |n| oct::encode_round(n, bits),
+                |l, s, d| bn::encode_oct_round_with(l, bits, s, d),
+                |s, d| bn::encode_oct_round(bits, s, d),
+            );
+        },
+    },
+    Entry {
+        name: "batch::normal::decode_oct",
+        check: |i| {
+            let bits = u32::from(i.u8() % 16) + 1;
+            let src: Vec<u32> = inputs(i);
+            same(
+                "decode_oct",
+                &src,
+                |p| oct::decode(p, bits),
+                |l, s, d| bn::decode_oct_with(l, bits, s, d),
+                |s, d| bn::decode_oct(bits, s, d),
+            );
+        },
+    },
+    Entry {
+        name: "batch::roughness::encode_log_roughness",
+        check: |i| {
+            let max_power = i.f32();
+            let src: Vec<f32> = inputs(i);
+            same(
+                "encode_log_roughness",
+                &src,
+                |p| r::encode_log_roughness(p, max_power),
+                |l, s, d| br::encode_log_roughness_with(l, max_power, s, d),
+                |s, d| br::encode_log_roughness(max_power, s, d),
+            );
+        },
+    },
+    Entry {
+        name: "batch::roughness::decode_log_roughness",
+        check: |i| {
+            let max_power = i.f32();
+            let src: Vec<u32> = inputs(i);
+            same(
+                "decode_log_roughness",
+                &src,
+                |k| r::decode_log_roughness(k, max_power),
+                |l, s, d| br::decode_log_roughness_with(l, max_power, s, d),
+                |s, d| br::decode_log_roughness(max_power, s, d),
+            );
+        },
+    },
+];

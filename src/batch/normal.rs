@@ -1,0 +1,623 @@
+//! Batch twins of the normal encodings ([`crate::normal`]): xyz8, xy FP16, octahedral 16/24/32
+//! (precise and rounding encoders, and the generic `bits` forms), hemi-octahedral 24, and every
+//! `_unorm` render-target form. Names, the slice contract and the vectorisation: [`crate::batch`].
+//!
+//! Each function writes exactly what its scalar twin returns for every input (checked by
+//! `tests/batch.rs` on every level this CPU has), so the error bounds, bad-input rules and
+//! layouts are the scalar twins': see the linked function.
+//!
+//! **The precise octahedral encoders** evaluate the scalar twin's four candidate scores
+//! `|s × D|²/|D|²` in the same order with the same operations and keep the first strictly
+//! smallest, all in lanes: the same output by construction, at about four times the rounding
+//! encoder's arithmetic.
+
+use super::{batch_fn, round_even_small};
+use crate::normal::{hemioct, oct, xy_fp16, xyz8};
+use glam::{Vec2, Vec3};
+
+// ---------------------------------------------------------------------------------------------
+// Lane bodies: branch-free mirrors of the scalar twins, operation for operation.
+
+/// `x` with its bits replaced when `c` (a select, not a branch).
+#[inline(always)]
+fn sel(c: bool, a: u32, b: u32) -> u32 {
+    if c { a } else { b }
+}
+
+/// The sanitized components (bits) of `n` as [`crate::normal::sanitize`] computes them before
+/// its final scaling, and whether any component is NaN.
+#[inline(always)]
+fn sanitize_bits(n: Vec3) -> ([u32; 3], bool) {
+    // (No `array::map` in lane bodies: it is not always inlined, and a call stops the
+    // vectoriser.)
+    let b = [n.x.to_bits(), n.y.to_bits(), n.z.to_bits()];
+    let abs = [b[0] & 0x7fff_ffff, b[1] & 0x7fff_ffff, b[2] & 0x7fff_ffff];
+    let sign = [b[0] & 0x8000_0000, b[1] & 0x8000_0000, b[2] & 0x8000_0000];
+    let nan = (abs[0] > 0x7f80_0000) | (abs[1] > 0x7f80_0000) | (abs[2] > 0x7f80_0000);
+    let inf = (abs[0] == 0x7f80_0000) | (abs[1] == 0x7f80_0000) | (abs[2] == 0x7f80_0000);
+    let comp = |k: usize| {
+        let inf_form = sel(abs[k] == 0x7f80_0000, sign[k] | 0x3f80_0000, sign[k]);
+        let flushed = sel(abs[k] < 0x0080_0000, sign[k], b[k]);
+        sel(inf, inf_form, flushed)
+    };
+    ([comp(0), comp(1), comp(2)], nan)
+}
+
+/// The exact power-of-two scaling of [`crate::normal::sanitize`]: `m` the largest component
+/// magnitude, each component times `2^(127 − e(m))` (clamped as the twin does), then flushed.
+#[inline(always)]
+fn scale_and_flush(c: [f32; 3], m: f32) -> Vec3 {
+    let e = (m.to_bits() >> 23) & 0xff;
+    // e ≤ 255; wrapping (only garbage lanes, selected away, ever have e = 255 or 0).
+    let scale = f32::from_bits(254u32.wrapping_sub(e).max(1) << 23);
+    let f = |x: f32| {
+        let y = x * scale;
+        let yb = y.to_bits();
+        f32::from_bits(sel(yb & 0x7f80_0000 == 0, yb & 0x8000_0000, yb))
+    };
+    Vec3::new(f(c[0]), f(c[1]), f(c[2]))
+}
+
+/// `crate::normal::sanitize(n).unwrap_or(Vec3::Z)`, branch-free.
+#[inline(always)]
+fn sanitize_or_z(n: Vec3) -> Vec3 {
+    let (c, nan) = sanitize_bits(n);
+    let c = [
+        f32::from_bits(c[0]),
+        f32::from_bits(c[1]),
+        f32::from_bits(c[2]),
+    ];
+    let m = c[0].abs().max(c[1].abs()).max(c[2].abs());
+    let s = scale_and_flush(c, m);
+    let bad = nan | (m == 0.0);
+    Vec3::new(
+        f32::from_bits(sel(bad, 0, s.x.to_bits())),
+        f32::from_bits(sel(bad, 0, s.y.to_bits())),
+        f32::from_bits(sel(bad, 0x3f80_0000, s.z.to_bits())),
+    )
+}
+
+/// The hemi-octahedral twin's own sanitize (`z` clamped to `[0, ∞)` before the scaling).
+#[inline(always)]
+fn hemioct_sanitize(n: Vec3) -> Vec3 {
+    let (c, nan) = sanitize_bits(n);
+    let mut c = [
+        f32::from_bits(c[0]),
+        f32::from_bits(c[1]),
+        f32::from_bits(c[2]),
+    ];
+    c[2] = c[2].max(0.0);
+    let m = c[0].abs().max(c[1].abs()).max(c[2]);
+    let s = scale_and_flush(c, m);
+    let bad = nan | (m == 0.0);
+    Vec3::new(
+        f32::from_bits(sel(bad, 0, s.x.to_bits())),
+        f32::from_bits(sel(bad, 0, s.y.to_bits())),
+        f32::from_bits(sel(bad, 0x3f80_0000, s.z.to_bits())),
+    )
+}
+
+/// `v / sqrt(dot(v, v))` with the scalar twin's evaluation order.
+#[inline(always)]
+fn normalize(v: Vec3) -> Vec3 {
+    v / ((v.x * v.x + v.y * v.y) + v.z * v.z).sqrt()
+}
+
+/// [`oct::continuous`] with `m = max_code(bits)` as f32.
+#[inline(always)]
+fn oct_continuous(s: Vec3, m: f32) -> Vec2 {
+    let a = s.abs();
+    let l1 = (a.x + a.y) + a.z;
+    let p = Vec2::new(s.x / l1, s.y / l1);
+    let sgn = Vec2::new(
+        if p.x >= 0.0 { 1.0 } else { -1.0 },
+        if p.y >= 0.0 { 1.0 } else { -1.0 },
+    );
+    let folded = (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
+    let neg = s.z < 0.0;
+    let p = Vec2::new(
+        if neg { folded.x } else { p.x },
+        if neg { folded.y } else { p.y },
+    );
+    let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::ONE);
+    t * m
+}
+
+/// [`oct::lattice`] for `(u, v)`, `m = max_code(bits)`; |components| ≤ m < 2^16, so the
+/// wrapping arithmetic never wraps.
+#[inline(always)]
+fn oct_lattice(u: u32, v: u32, m: i32) -> [i32; 3] {
+    let a = ((u << 1) as i32).wrapping_sub(m);
+    let b = ((v << 1) as i32).wrapping_sub(m);
+    let z = m
+        .wrapping_sub(a.wrapping_abs())
+        .wrapping_sub(b.wrapping_abs());
+    // (m − |b|)·signum(a) as a select: `i32::signum` does not vectorise (a, b are odd, so
+    // never zero).
+    let (fx, fy) = (
+        m.wrapping_sub(b.wrapping_abs()),
+        m.wrapping_sub(a.wrapping_abs()),
+    );
+    let fx = if a < 0 { fx.wrapping_neg() } else { fx };
+    let fy = if b < 0 { fy.wrapping_neg() } else { fy };
+    let pos = z >= 0;
+    [if pos { a } else { fx }, if pos { b } else { fy }, z]
+}
+
+/// [`hemioct::lattice`] for `(u, v)`.
+#[inline(always)]
+fn hemioct_lattice(u: u32, v: u32) -> [i32; 3] {
+    let m = hemioct::M as i32;
+    let a = ((u << 1) as i32).wrapping_sub(m);
+    let b = ((v << 1) as i32).wrapping_sub(m);
+    [
+        a.wrapping_add(b) / 2,
+        a.wrapping_sub(b) / 2,
+        m.wrapping_sub(a.wrapping_abs().max(b.wrapping_abs())),
+    ]
+}
+
+/// The precise encoders' score `|s × D|² / |D|²` as the scalar twins compute it. `|D|² ≤ M²`
+/// fits a `u32` (its L1 norm is M < 2^16).
+#[inline(always)]
+fn sin2(s: Vec3, d: [i32; 3]) -> f32 {
+    let ad = [
+        d[0].unsigned_abs(),
+        d[1].unsigned_abs(),
+        d[2].unsigned_abs(),
+    ];
+    let len2 = ad[0]
+        .wrapping_mul(ad[0])
+        .wrapping_add(ad[1].wrapping_mul(ad[1]))
+        .wrapping_add(ad[2].wrapping_mul(ad[2])) as f32;
+    let d = Vec3::new(d[0] as f32, d[1] as f32, d[2] as f32);
+    let x = Vec3::new(
+        s.y * d.z - s.z * d.y,
+        s.z * d.x - s.x * d.z,
+        s.x * d.y - s.y * d.x,
+    );
+    ((x.x * x.x + x.y * x.y) + x.z * x.z) / len2
+}
+
+/// The four-candidate selection of the precise encoders: of `base + {0,1}²` in the order
+/// `(0,0), (1,0), (0,1), (1,1)`, the first with the strictly smallest score.
+#[inline(always)]
+fn best_of_four(s: Vec3, c: Vec2, m: u32, lattice: impl Fn(u32, u32) -> [i32; 3]) -> (u32, u32) {
+    let bx = floor_small(c.x).min(m.wrapping_sub(1));
+    let by = floor_small(c.y).min(m.wrapping_sub(1));
+    let (mut best_x, mut best_y) = (bx, by);
+    let mut best_s2 = sin2(s, lattice(bx, by));
+    for k in 1..4u32 {
+        let (cx, cy) = (bx.wrapping_add(k & 1), by.wrapping_add(k >> 1));
+        let s2 = sin2(s, lattice(cx, cy));
+        let better = s2 < best_s2;
+        best_x = sel(better, cx, best_x);
+        best_y = sel(better, cy, best_y);
+        best_s2 = if better { s2 } else { best_s2 };
+    }
+    (best_x, best_y)
+}
+
+/// `floor(c) as u32` for `0 ≤ c < 2^23`, exactly: the nearest integer `r`, less one where
+/// `r > c` (`r` as f32 is exact). No float-to-int conversion, whose saturating form does not
+/// vectorise.
+#[inline(always)]
+pub(crate) fn floor_small(c: f32) -> u32 {
+    let r = round_even_small(c);
+    r.wrapping_sub(u32::from(r as i32 as f32 > c))
+}
+
+#[inline(always)]
+fn oct_precise_lane(n: Vec3, bits: u32, m: u32) -> u32 {
+    let s = sanitize_or_z(n);
+    let c = oct_continuous(s, m as f32);
+    let (u, v) = best_of_four(s, c, m, |u, v| oct_lattice(u, v, m as i32));
+    u | (v << bits)
+}
+
+#[inline(always)]
+fn oct_round_lane(n: Vec3, bits: u32, m: u32) -> u32 {
+    let c = oct_continuous(sanitize_or_z(n), m as f32);
+    round_even_small(c.x) | (round_even_small(c.y) << bits)
+}
+
+/// The decoder's [`oct_lattice`] in f32: every value is an integer below 2^17, so each
+/// operation is exact and the result is `oct_lattice(…) as f32`, zeros included: `a`, `b` are
+/// odd, `z = (M − |a|) − |b|` is `+0` when zero, and the folded components get `+ 0.0`, which
+/// turns the `−0` of a corner (`M − |b| = 0` with `a < 0`) into the integer's `+0` and leaves
+/// every other value alone. Fewer vector operations than the integer form: `|x|` and the
+/// fold's sign are bit masks.
+#[inline(always)]
+fn oct_lattice_f32(u: u32, v: u32, m: u32) -> Vec3 {
+    let mf = m as i32 as f32;
+    let a = ((u << 1) as i32).wrapping_sub(m as i32) as f32;
+    let b = ((v << 1) as i32).wrapping_sub(m as i32) as f32;
+    let (abs_a, abs_b) = (a.abs(), b.abs());
+    let z = (mf - abs_a) - abs_b;
+    // (M − |b|)·signum(a): M − |b| ≥ +0 gets a's sign bit, then −0 becomes +0.
+    let fx = f32::from_bits((mf - abs_b).to_bits() | (a.to_bits() & 0x8000_0000)) + 0.0;
+    let fy = f32::from_bits((mf - abs_a).to_bits() | (b.to_bits() & 0x8000_0000)) + 0.0;
+    let neg = z < 0.0;
+    Vec3::new(if neg { fx } else { a }, if neg { fy } else { b }, z)
+}
+
+#[inline(always)]
+fn oct_decode_lane(p: u32, bits: u32, m: u32) -> Vec3 {
+    normalize(oct_lattice_f32(p & m, (p >> bits) & m, m))
+}
+
+#[inline(always)]
+fn hemioct_continuous(s: Vec3) -> Vec2 {
+    let l1 = (s.x.abs() + s.y.abs()) + s.z;
+    let p = Vec2::new(s.x / l1, s.y / l1);
+    let q = Vec2::new(p.x + p.y, p.x - p.y);
+    (q * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::ONE) * hemioct::M as f32
+}
+
+#[inline(always)]
+fn hemioct_precise_lane(n: Vec3) -> u32 {
+    let s = hemioct_sanitize(n);
+    let c = hemioct_continuous(s);
+    let (u, v) = best_of_four(s, c, hemioct::M, hemioct_lattice);
+    u | (v << 12)
+}
+
+#[inline(always)]
+fn hemioct_round_lane(n: Vec3) -> u32 {
+    let c = hemioct_continuous(hemioct_sanitize(n));
+    round_even_small(c.x) | (round_even_small(c.y) << 12)
+}
+
+#[inline(always)]
+fn hemioct_decode_lane(p: u32) -> Vec3 {
+    let d = hemioct_lattice(p & 0xfff, (p >> 12) & 0xfff);
+    normalize(Vec3::new(d[0] as f32, d[1] as f32, d[2] as f32))
+}
+
+#[inline(always)]
+fn xyz8_encode_lane(n: Vec3) -> u32 {
+    let s = sanitize_or_z(n);
+    let u = s / ((s.x * s.x + s.y * s.y) + s.z * s.z).sqrt();
+    let c = (u * 0.5 + 0.5).clamp(Vec3::ZERO, Vec3::ONE) * 255.0;
+    round_even_small(c.x) | (round_even_small(c.y) << 8) | (round_even_small(c.z) << 16)
+}
+
+#[inline(always)]
+fn xyz8_decode_lane(p: u32) -> Vec3 {
+    let c = |b: u32| (((b & 0xff) << 1) as i32).wrapping_sub(255) as f32;
+    normalize(Vec3::new(c(p), c(p >> 8), c(p >> 16)))
+}
+
+/// f32 → f16 bits, round to nearest even, for `|x| ≤ 1` (all the encoder passes it; any f32
+/// there, subnormals and ±0 included): the normal-half range by integer rounding of the
+/// dropped 13 mantissa bits (a carry moves into the exponent field correctly), the
+/// subnormal-half range `|x| < 2^-14` as the integer nearest `|x|·2^24` (exact product).
+#[inline(always)]
+fn f16_bits_unit(x: f32) -> u32 {
+    let b = x.to_bits();
+    let sign = (b >> 16) & 0x8000;
+    let a = b & 0x7fff_ffff;
+    let normal = (a.wrapping_add(0x0fff).wrapping_add((a >> 13) & 1) >> 13).wrapping_sub(112 << 10);
+    let sub = round_even_small(f32::from_bits(a) * 16_777_216.0);
+    sign | sel(a >= 0x3880_0000, normal, sub)
+}
+
+/// f16 bits (low 16 bits of `h`) → f32, exactly; NaN halves give some NaN (the decoder only
+/// asks whether it is one).
+#[inline(always)]
+fn f16_to_f32(h: u32) -> f32 {
+    let sign = (h & 0x8000) << 16;
+    let e = (h >> 10) & 0x1f;
+    let m = h & 0x3ff;
+    let normal = (e.wrapping_add(112) << 23) | (m << 13);
+    let special = 0x7f80_0000 | (m << 13);
+    let sub = (m as i32 as f32 * (1.0 / 16_777_216.0)).to_bits();
+    f32::from_bits(sign | sel(e == 0, sub, sel(e == 31, special, normal)))
+}
+
+#[inline(always)]
+fn xy_fp16_encode_lane(n: Vec3) -> u32 {
+    let s = sanitize_or_z(n);
+    let u = s / ((s.x * s.x + s.y * s.y) + s.z * s.z).sqrt();
+    let xy = Vec2::new(u.x, u.y).clamp(Vec2::splat(-1.0), Vec2::splat(1.0));
+    f16_bits_unit(xy.x) | (f16_bits_unit(xy.y) << 16)
+}
+
+#[inline(always)]
+fn xy_fp16_decode_lane(p: u32) -> Vec3 {
+    let h = Vec2::new(f16_to_f32(p & 0xffff), f16_to_f32(p >> 16));
+    let h = Vec2::new(
+        if h.x.is_nan() { 0.0 } else { h.x },
+        if h.y.is_nan() { 0.0 } else { h.y },
+    );
+    let xy = h.clamp(Vec2::splat(-1.0), Vec2::splat(1.0));
+    let s = xy.x * xy.x + xy.y * xy.y;
+    let z2 = (1.0 - s).max(0.0);
+    Vec3::new(xy.x, xy.y, z2.sqrt()) / (s + z2).sqrt()
+}
+
+/// [`crate::depth24::unpack4x8unorm`]: `byte/255` per byte, byte 0 first.
+#[inline(always)]
+pub(crate) fn unpack4x8unorm_lane(p: u32) -> [f32; 4] {
+    let c = |b: u32| (b & 0xff) as i32 as f32 / 255.0;
+    [c(p), c(p >> 8), c(p >> 16), c(p >> 24)]
+}
+
+/// `round(255·clamp(c, 0, 1))` with NaN → 0 for one channel (the twins' `unorm_bytes` rule).
+#[inline(always)]
+pub(crate) fn unorm_byte_lane(c: f32) -> u32 {
+    let c = if c.is_nan() { 0.0 } else { c };
+    round_even_small(c.clamp(0.0, 1.0) * 255.0)
+}
+
+#[inline(always)]
+fn unorm_bytes_lane(c: [f32; 4]) -> u32 {
+    unorm_byte_lane(c[0])
+        | (unorm_byte_lane(c[1]) << 8)
+        | (unorm_byte_lane(c[2]) << 16)
+        | (unorm_byte_lane(c[3]) << 24)
+}
+
+// Named lanes for the composite forms: a closure whose body is large after inlining may not be
+// inlined into the loop itself (a call there stops the vectoriser); an `inline(always)` fn is.
+
+#[inline(always)]
+fn oct_precise_fixed<const BITS: u32>(n: Vec3) -> u32 {
+    oct_precise_lane(n, BITS, (1 << BITS) - 1)
+}
+#[inline(always)]
+fn oct_round_fixed<const BITS: u32>(n: Vec3) -> u32 {
+    oct_round_lane(n, BITS, (1 << BITS) - 1)
+}
+#[inline(always)]
+fn oct_decode_fixed<const BITS: u32>(p: u32) -> Vec3 {
+    oct_decode_lane(p, BITS, (1 << BITS) - 1)
+}
+#[inline(always)]
+fn oct_precise_unorm<const BITS: u32>(n: Vec3) -> [f32; 4] {
+    unpack4x8unorm_lane(oct_precise_fixed::<BITS>(n))
+}
+#[inline(always)]
+fn oct_decode_unorm<const BITS: u32>(c: [f32; 4]) -> Vec3 {
+    oct_decode_fixed::<BITS>(unorm_bytes_lane(c))
+}
+#[inline(always)]
+fn xyz8_encode_unorm(n: Vec3) -> [f32; 4] {
+    unpack4x8unorm_lane(xyz8_encode_lane(n))
+}
+#[inline(always)]
+fn xyz8_decode_unorm(c: [f32; 4]) -> Vec3 {
+    xyz8_decode_lane(unorm_bytes_lane(c))
+}
+#[inline(always)]
+fn xy_fp16_encode_unorm(n: Vec3) -> [f32; 4] {
+    unpack4x8unorm_lane(xy_fp16_encode_lane(n))
+}
+#[inline(always)]
+fn xy_fp16_decode_unorm(c: [f32; 4]) -> Vec3 {
+    xy_fp16_decode_lane(unorm_bytes_lane(c))
+}
+#[inline(always)]
+fn hemioct_encode_unorm(n: Vec3) -> [f32; 4] {
+    unpack4x8unorm_lane(hemioct_precise_lane(n))
+}
+#[inline(always)]
+fn hemioct_decode_unorm(c: [f32; 4]) -> Vec3 {
+    hemioct_decode_lane(unorm_bytes_lane(c))
+}
+
+// ---------------------------------------------------------------------------------------------
+// The public batch twins.
+
+batch_fn!(
+    /// Batch [`xyz8::encode_normal_xyz8`].
+    encode_normal_xyz8, encode_normal_xyz8_with, "normal::encode_normal_xyz8",
+    (), Vec3 => u32,
+    scalar: xyz8::encode_normal_xyz8,
+    lane: xyz8_encode_lane,
+);
+batch_fn!(
+    /// Batch [`xyz8::decode_normal_xyz8`].
+    decode_normal_xyz8, decode_normal_xyz8_with, "normal::decode_normal_xyz8",
+    (), u32 => Vec3,
+    scalar: xyz8::decode_normal_xyz8,
+    lane: xyz8_decode_lane,
+);
+batch_fn!(
+    /// Batch [`xyz8::encode_normal_xyz8_unorm`].
+    encode_normal_xyz8_unorm, encode_normal_xyz8_unorm_with, "normal::encode_normal_xyz8_unorm",
+    (), Vec3 => [f32; 4],
+    scalar: xyz8::encode_normal_xyz8_unorm,
+    lane: xyz8_encode_unorm,
+);
+batch_fn!(
+    /// Batch [`xyz8::decode_normal_xyz8_unorm`].
+    decode_normal_xyz8_unorm, decode_normal_xyz8_unorm_with, "normal::decode_normal_xyz8_unorm",
+    (), [f32; 4] => Vec3,
+    scalar: xyz8::decode_normal_xyz8_unorm,
+    lane: xyz8_decode_unorm,
+);
+
+batch_fn!(
+    /// Batch [`xy_fp16::encode_normal_xy_fp16`].
+    encode_normal_xy_fp16, encode_normal_xy_fp16_with, "normal::encode_normal_xy_fp16",
+    (), Vec3 => u32,
+    scalar: xy_fp16::encode_normal_xy_fp16,
+    lane: xy_fp16_encode_lane,
+);
+batch_fn!(
+    /// Batch [`xy_fp16::decode_normal_xy_fp16`].
+    decode_normal_xy_fp16, decode_normal_xy_fp16_with, "normal::decode_normal_xy_fp16",
+    (), u32 => Vec3,
+    scalar: xy_fp16::decode_normal_xy_fp16,
+    lane: xy_fp16_decode_lane,
+);
+batch_fn!(
+    /// Batch [`xy_fp16::encode_normal_xy_fp16_unorm`].
+    encode_normal_xy_fp16_unorm, encode_normal_xy_fp16_unorm_with,
+    "normal::encode_normal_xy_fp16_unorm",
+    (), Vec3 => [f32; 4],
+    scalar: xy_fp16::encode_normal_xy_fp16_unorm,
+    lane: xy_fp16_encode_unorm,
+);
+batch_fn!(
+    /// Batch [`xy_fp16::decode_normal_xy_fp16_unorm`].
+    decode_normal_xy_fp16_unorm, decode_normal_xy_fp16_unorm_with,
+    "normal::decode_normal_xy_fp16_unorm",
+    (), [f32; 4] => Vec3,
+    scalar: xy_fp16::decode_normal_xy_fp16_unorm,
+    lane: xy_fp16_decode_unorm,
+);
+
+batch_fn!(
+    /// Batch [`oct::encode_precise`] with `bits` bits per axis (**panics** unless
+    /// `1 ≤ bits ≤ 16`, as [`oct::max_code`]).
+    encode_oct_precise, encode_oct_precise_with, "normal::encode_oct_precise",
+    (bits: u32), Vec3 => u32,
+    scalar: |n| oct::encode_precise(n, bits),
+    lane: {
+        let m = oct::max_code(bits);
+        move |n| oct_precise_lane(n, bits, m)
+    },
+);
+batch_fn!(
+    /// Batch [`oct::encode_round`] with `bits` bits per axis (**panics** unless
+    /// `1 ≤ bits ≤ 16`).
+    encode_oct_round, encode_oct_round_with, "normal::encode_oct_round",
+    (bits: u32), Vec3 => u32,
+    scalar: |n| oct::encode_round(n, bits),
+    lane: {
+        let m = oct::max_code(bits);
+        move |n| oct_round_lane(n, bits, m)
+    },
+);
+batch_fn!(
+    /// Batch [`oct::decode`] with `bits` bits per axis (**panics** unless `1 ≤ bits ≤ 16`).
+    decode_oct, decode_oct_with, "normal::decode_oct",
+    (bits: u32), u32 => Vec3,
+    scalar: |p| oct::decode(p, bits),
+    lane: {
+        let m = oct::max_code(bits);
+        move |p| oct_decode_lane(p, bits, m)
+    },
+);
+
+macro_rules! oct_size {
+    ($bits:literal, $enc:ident, $enc_w:ident, $fast:ident, $fast_w:ident, $dec:ident, $dec_w:ident,
+     $eu:ident, $eu_w:ident, $du:ident, $du_w:ident) => {
+        batch_fn!(
+            #[doc = concat!("Batch [`oct::", stringify!($enc), "`].")]
+            $enc, $enc_w, concat!("normal::", stringify!($enc)),
+            (), Vec3 => u32,
+            scalar: oct::$enc,
+            lane: oct_precise_fixed::<$bits>,
+        );
+        batch_fn!(
+            #[doc = concat!("Batch [`oct::", stringify!($fast), "`].")]
+            $fast, $fast_w, concat!("normal::", stringify!($fast)),
+            (), Vec3 => u32,
+            scalar: oct::$fast,
+            lane: oct_round_fixed::<$bits>,
+        );
+        batch_fn!(
+            #[doc = concat!("Batch [`oct::", stringify!($dec), "`].")]
+            $dec, $dec_w, concat!("normal::", stringify!($dec)),
+            (), u32 => Vec3,
+            scalar: oct::$dec,
+            lane: oct_decode_fixed::<$bits>,
+        );
+        batch_fn!(
+            #[doc = concat!("Batch [`oct::", stringify!($eu), "`].")]
+            $eu, $eu_w, concat!("normal::", stringify!($eu)),
+            (), Vec3 => [f32; 4],
+            scalar: oct::$eu,
+            lane: oct_precise_unorm::<$bits>,
+        );
+        batch_fn!(
+            #[doc = concat!("Batch [`oct::", stringify!($du), "`].")]
+            $du, $du_w, concat!("normal::", stringify!($du)),
+            (), [f32; 4] => Vec3,
+            scalar: oct::$du,
+            lane: oct_decode_unorm::<$bits>,
+        );
+    };
+}
+
+oct_size!(
+    8,
+    encode_normal_oct16,
+    encode_normal_oct16_with,
+    encode_normal_oct16_fast,
+    encode_normal_oct16_fast_with,
+    decode_normal_oct16,
+    decode_normal_oct16_with,
+    encode_normal_oct16_unorm,
+    encode_normal_oct16_unorm_with,
+    decode_normal_oct16_unorm,
+    decode_normal_oct16_unorm_with
+);
+oct_size!(
+    12,
+    encode_normal_oct24,
+    encode_normal_oct24_with,
+    encode_normal_oct24_fast,
+    encode_normal_oct24_fast_with,
+    decode_normal_oct24,
+    decode_normal_oct24_with,
+    encode_normal_oct24_unorm,
+    encode_normal_oct24_unorm_with,
+    decode_normal_oct24_unorm,
+    decode_normal_oct24_unorm_with
+);
+oct_size!(
+    16,
+    encode_normal_oct32,
+    encode_normal_oct32_with,
+    encode_normal_oct32_fast,
+    encode_normal_oct32_fast_with,
+    decode_normal_oct32,
+    decode_normal_oct32_with,
+    encode_normal_oct32_unorm,
+    encode_normal_oct32_unorm_with,
+    decode_normal_oct32_unorm,
+    decode_normal_oct32_unorm_with
+);
+
+batch_fn!(
+    /// Batch [`hemioct::encode_normal_hemioct24`].
+    encode_normal_hemioct24, encode_normal_hemioct24_with, "normal::encode_normal_hemioct24",
+    (), Vec3 => u32,
+    scalar: hemioct::encode_normal_hemioct24,
+    lane: hemioct_precise_lane,
+);
+batch_fn!(
+    /// Batch [`hemioct::encode_normal_hemioct24_fast`].
+    encode_normal_hemioct24_fast, encode_normal_hemioct24_fast_with,
+    "normal::encode_normal_hemioct24_fast",
+    (), Vec3 => u32,
+    scalar: hemioct::encode_normal_hemioct24_fast,
+    lane: hemioct_round_lane,
+);
+batch_fn!(
+    /// Batch [`hemioct::decode_normal_hemioct24`].
+    decode_normal_hemioct24, decode_normal_hemioct24_with, "normal::decode_normal_hemioct24",
+    (), u32 => Vec3,
+    scalar: hemioct::decode_normal_hemioct24,
+    lane: hemioct_decode_lane,
+);
+batch_fn!(
+    /// Batch [`hemioct::encode_normal_hemioct24_unorm`].
+    encode_normal_hemioct24_unorm, encode_normal_hemioct24_unorm_with,
+    "normal::encode_normal_hemioct24_unorm",
+    (), Vec3 => [f32; 4],
+    scalar: hemioct::encode_normal_hemioct24_unorm,
+    lane: hemioct_encode_unorm,
+);
+batch_fn!(
+    /// Batch [`hemioct::decode_normal_hemioct24_unorm`].
+    decode_normal_hemioct24_unorm, decode_normal_hemioct24_unorm_with,
+    "normal::decode_normal_hemioct24_unorm",
+    (), [f32; 4] => Vec3,
+    scalar: hemioct::decode_normal_hemioct24_unorm,
+    lane: hemioct_decode_unorm,
+);

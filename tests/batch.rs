@@ -1,0 +1,654 @@
+//! `src/batch/`: every batch twin equals its scalar twin bit for bit, on every compiled level
+//! this CPU has (scalar, SSE2, AVX2 where detected; NEON on aarch64) and through the plain
+//! (detected-level, rayon-split) form:
+//! - decoders with at most 24 input bits: every code (plus the ignored high bits set);
+//! - 32-bit decoders: the scalar suites' stratified sample (`stratified_codes32`);
+//! - encoders: the 2^24 spherical-Fibonacci directions, the adversarial set, the bad inputs
+//!   and a grid of special values (NaN, ±Inf, ±0, subnormals, extremes);
+//! - the slice contract (mismatched lengths panic) and unavailable levels panic.
+//!
+//! Pure CPU; each comparison streams in chunks of 2^18 so memory stays small. Also: the
+//! README's ratio block is the one `bash .ci/bench` wrote into `docs/batch_bench.md`.
+
+mod common;
+
+use glam::Vec3;
+use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br};
+use prepass::depth24 as d24;
+use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
+use prepass::precision::inputs::{ChannelError, sign_pattern, unorm8_channel};
+use prepass::sweep::normal::{
+    adversarial_directions, bad_inputs, fibonacci_directions, stratified_codes32,
+};
+use std::fmt::Debug;
+use std::sync::OnceLock;
+
+const CHUNK: usize = 1 << 18;
+
+/// A value compared by its bits (so `-0.0 ≠ +0.0` and NaN payloads count).
+trait Bits: Copy + Debug {
+    fn bits(self) -> [u32; 4];
+}
+impl Bits for u32 {
+    fn bits(self) -> [u32; 4] {
+        [self, 0, 0, 0]
+    }
+}
+impl Bits for f32 {
+    fn bits(self) -> [u32; 4] {
+        [self.to_bits(), 0, 0, 0]
+    }
+}
+impl Bits for Vec3 {
+    fn bits(self) -> [u32; 4] {
+        [self.x.to_bits(), self.y.to_bits(), self.z.to_bits(), 0]
+    }
+}
+impl Bits for [f32; 4] {
+    fn bits(self) -> [u32; 4] {
+        self.map(f32::to_bits)
+    }
+}
+
+/// The levels under test: every one this CPU has. On x86_64 SSE2 must be among them, and AVX2
+/// whenever the CPU reports it, so a run cannot pass on the scalar fallback alone.
+fn levels() -> &'static [Level] {
+    static L: OnceLock<Vec<Level>> = OnceLock::new();
+    L.get_or_init(|| {
+        let l = Level::all_available();
+        #[cfg(target_arch = "x86_64")]
+        {
+            assert!(l.contains(&Level::Sse2), "x86_64 without SSE2 level: {l:?}");
+            if std::is_x86_feature_detected!("avx2") {
+                assert!(
+                    l.contains(&Level::Avx2),
+                    "AVX2 detected but not offered: {l:?}"
+                );
+            }
+        }
+        #[cfg(target_arch = "aarch64")]
+        assert!(
+            l.contains(&Level::Neon),
+            "aarch64 without NEON level: {l:?}"
+        );
+        eprintln!(
+            "batch levels under test: {l:?} (detected: {})",
+            Level::detected()
+        );
+        l
+    })
+}
+
+/// Compare `with(level)` for every SIMD level this CPU has, and `plain`, against `scalar` on
+/// `inputs`; on a difference, name the first differing input with its bits and both outputs.
+/// ([`Level::Scalar`] is the scalar twin itself, so it is not compared with itself.)
+fn check<I: Bits, O: Bits + Default>(
+    name: &str,
+    inputs: &[I],
+    scalar: impl Fn(I) -> O,
+    with: impl Fn(Level, &[I], &mut [O]),
+    plain: impl Fn(&[I], &mut [O]),
+) {
+    assert!(!inputs.is_empty(), "{name}: no inputs");
+    // The plain form over the whole input at once, so rayon's split runs on long inputs.
+    let mut all = vec![O::default(); inputs.len()];
+    plain(inputs, &mut all);
+    let mut want = vec![O::default(); CHUNK.min(inputs.len())];
+    let mut got = want.clone();
+    for (c, chunk) in inputs.chunks(CHUNK).enumerate() {
+        let want = &mut want[..chunk.len()];
+        let got = &mut got[..chunk.len()];
+        for (w, &x) in want.iter_mut().zip(chunk) {
+            *w = scalar(x);
+        }
+        let run = |form: &str, got: &[O]| {
+            if let Some(i) = (0..chunk.len()).find(|&i| got[i].bits() != want[i].bits()) {
+                panic!(
+                    "{name} [{form}]: input #{} {:?} (bits {:08x?}): batch {:?} (bits {:08x?}) \
+                     but scalar twin {:?} (bits {:08x?})",
+                    c * CHUNK + i,
+                    chunk[i],
+                    chunk[i].bits(),
+                    got[i],
+                    got[i].bits(),
+                    want[i],
+                    want[i].bits()
+                );
+            }
+        };
+        for &level in levels().iter().filter(|&&l| l != Level::Scalar) {
+            got.fill(O::default());
+            with(level, chunk, got);
+            run(&level.to_string(), got);
+        }
+        run("plain", &all[c * CHUNK..c * CHUNK + chunk.len()]);
+    }
+}
+
+/// `check` with the batch twin's two forms named once.
+macro_rules! check {
+    ($inputs:expr, $scalar:expr, $module:ident :: $f:ident, $fw:ident $(, $arg:expr)*) => {
+        check(
+            concat!(stringify!($module), "::", stringify!($f)),
+            $inputs,
+            $scalar,
+            |l, s, d| $module::$fw(l, $($arg,)* s, d),
+            |s, d| $module::$f($($arg,)* s, d),
+        )
+    };
+}
+
+/// The special values of one component: NaNs of both signs and a signalling one, ±Inf, ±0,
+/// subnormals, the smallest normal, ±1, ±f32::MAX, a value that scales to subnormal beside a
+/// large one.
+fn special_components() -> Vec<f32> {
+    [
+        0x7fc0_0000u32,
+        0xffc0_0001,
+        0x7f80_0001,
+        0x7f80_0000,
+        0xff80_0000,
+        0,
+        0x8000_0000,
+        1,
+        0x8000_0001,
+        0x007f_ffff,
+        0x0080_0000,
+        0x3f80_0000,
+        0xbf80_0000,
+        0x7f7f_ffff,
+        0xff7f_ffff,
+        0x0100_0000,
+        0x3f00_0001,
+        0xc2f6_e979,
+    ]
+    .map(f32::from_bits)
+    .to_vec()
+}
+
+/// The encoders' inputs: 2^24 Fibonacci directions, the adversarial set, the bad inputs, every
+/// triple of special components, and the Fibonacci directions scaled by huge and tiny powers.
+fn encoder_inputs() -> &'static [Vec3] {
+    static V: OnceLock<Vec<Vec3>> = OnceLock::new();
+    V.get_or_init(|| {
+        let mut v: Vec<Vec3> = fibonacci_directions(1 << 24)
+            .into_iter()
+            .chain(adversarial_directions())
+            .chain(bad_inputs().into_iter().map(|(b, _)| b))
+            .map(Vec3::from_array)
+            .collect();
+        let s = special_components();
+        for &x in &s {
+            for &y in &s {
+                for &z in &s {
+                    v.push(Vec3::new(x, y, z));
+                }
+            }
+        }
+        let scaled: Vec<Vec3> = v
+            .iter()
+            .step_by(251)
+            .flat_map(|&d| [d * 1e30, d * 3e-39, d * -7.5])
+            .collect();
+        v.extend(scaled);
+        v
+    })
+}
+
+/// Every 24-bit code, then the same codes with the ignored high byte set from a hash.
+fn codes24() -> Vec<u32> {
+    (0..1u32 << 24)
+        .chain(
+            (0..1u32 << 24)
+                .step_by(7)
+                .map(|c| c | (sign_pattern(c, false) << 29) | 1 << 24),
+        )
+        .collect()
+}
+
+fn stratified() -> &'static [u32] {
+    static S: OnceLock<Vec<u32>> = OnceLock::new();
+    S.get_or_init(stratified_codes32)
+}
+
+/// Sampled rgba8unorm channels of `codes`: exact or ±3 ULP (WGSL's `unpack4x8unorm`
+/// allowance; a hash of the code picks which), each channel pushed up or down by the sweeps'
+/// sign pattern; plus out-of-range and NaN channels.
+fn unorm_channels(codes: &[u32]) -> Vec<[f32; 4]> {
+    let mut v = Vec::with_capacity(codes.len() + 64);
+    for &p in codes {
+        let error = if p.wrapping_mul(0x9e37_79b9) >> 31 == 0 {
+            ChannelError::Exact
+        } else {
+            ChannelError::Ulps(3)
+        };
+        let s = sign_pattern(p, false) | (sign_pattern(p, true) << 3);
+        v.push([0, 1, 2, 3].map(|k| unorm8_channel((p >> (8 * k)) & 0xff, error, s >> k & 1 == 1)));
+    }
+    let s = special_components();
+    for (i, &x) in s.iter().enumerate() {
+        v.push([x, s[(i + 1) % s.len()], s[(i + 5) % s.len()], 1.5]);
+        v.push([0.5, x, -0.25, x]);
+    }
+    v
+}
+
+#[test]
+fn dispatch_levels_cover_the_simd_paths() {
+    let l = levels();
+    assert!(l.contains(&Level::Scalar));
+    assert!(l.contains(&Level::detected()), "{l:?}");
+    assert_eq!(
+        *l.last().unwrap(),
+        Level::detected(),
+        "detected must be the best available"
+    );
+}
+
+#[test]
+#[should_panic(expected = "3 inputs but 4 outputs")]
+fn mismatched_lengths_panic() {
+    bn::encode_normal_oct32(&[Vec3::Z; 3], &mut [0u32; 4]);
+}
+
+#[test]
+#[should_panic(expected = "is not available")]
+fn unavailable_level_panics() {
+    let missing = Level::ALL
+        .into_iter()
+        .find(|l| !l.available())
+        .expect("no CPU has both SSE2 and NEON levels");
+    bd::pack_depth24_with(missing, &[1], &mut [0]);
+}
+
+#[test]
+fn depth24_all_codes_and_stratified() {
+    let mut codes = codes24();
+    codes.extend_from_slice(stratified());
+    check!(
+        &codes,
+        d24::pack_depth24,
+        bd::pack_depth24,
+        pack_depth24_with
+    );
+    check!(
+        &codes,
+        d24::depth24_from_packed,
+        bd::depth24_from_packed,
+        depth24_from_packed_with
+    );
+    check!(
+        &codes,
+        d24::hyperbolic_depth_from_depth24,
+        bd::hyperbolic_depth_from_depth24,
+        hyperbolic_depth_from_depth24_with
+    );
+    check!(
+        &codes,
+        d24::unpack4x8unorm,
+        bd::unpack4x8unorm,
+        unpack4x8unorm_with
+    );
+    let rgb: Vec<Vec3> =
+        unorm_channels(&(0..1u32 << 24).map(d24::pack_depth24).collect::<Vec<_>>())
+            .into_iter()
+            .map(|c| Vec3::new(c[0], c[1], c[2]))
+            .collect();
+    check!(
+        &rgb,
+        d24::depth24_from_rgb8,
+        bd::depth24_from_rgb8,
+        depth24_from_rgb8_with
+    );
+}
+
+#[test]
+fn normal_decoders_every_24_bit_code() {
+    let codes = codes24();
+    check!(
+        &codes,
+        xyz8::decode_normal_xyz8,
+        bn::decode_normal_xyz8,
+        decode_normal_xyz8_with
+    );
+    check!(
+        &codes,
+        oct::decode_normal_oct16,
+        bn::decode_normal_oct16,
+        decode_normal_oct16_with
+    );
+    check!(
+        &codes,
+        oct::decode_normal_oct24,
+        bn::decode_normal_oct24,
+        decode_normal_oct24_with
+    );
+    check!(
+        &codes,
+        hemioct::decode_normal_hemioct24,
+        bn::decode_normal_hemioct24,
+        decode_normal_hemioct24_with
+    );
+    // The generic decoder at every size: exhaustive up to 2^20 codes, else every 61st code.
+    for bits in 1..=16u32 {
+        let n = 1u64 << (2 * bits);
+        let step = if n <= 1 << 20 { 1 } else { 61 };
+        let c: Vec<u32> = (0..n).step_by(step).map(|p| p as u32).collect();
+        check(
+            &format!("normal::decode_oct({bits})"),
+            &c,
+            |p| oct::decode(p, bits),
+            |l, s, d| bn::decode_oct_with(l, bits, s, d),
+            |s, d| bn::decode_oct(bits, s, d),
+        );
+    }
+}
+
+#[test]
+fn normal_unorm_decoders_every_24_bit_code() {
+    let ch = unorm_channels(&(0..1u32 << 24).collect::<Vec<_>>());
+    check!(
+        &ch,
+        xyz8::decode_normal_xyz8_unorm,
+        bn::decode_normal_xyz8_unorm,
+        decode_normal_xyz8_unorm_with
+    );
+    check!(
+        &ch,
+        oct::decode_normal_oct16_unorm,
+        bn::decode_normal_oct16_unorm,
+        decode_normal_oct16_unorm_with
+    );
+    check!(
+        &ch,
+        oct::decode_normal_oct24_unorm,
+        bn::decode_normal_oct24_unorm,
+        decode_normal_oct24_unorm_with
+    );
+    check!(
+        &ch,
+        hemioct::decode_normal_hemioct24_unorm,
+        bn::decode_normal_hemioct24_unorm,
+        decode_normal_hemioct24_unorm_with
+    );
+}
+
+#[test]
+fn normal_decoders_32_bit_stratified() {
+    let codes = stratified();
+    check!(
+        codes,
+        oct::decode_normal_oct32,
+        bn::decode_normal_oct32,
+        decode_normal_oct32_with
+    );
+    check!(
+        codes,
+        xy_fp16::decode_normal_xy_fp16,
+        bn::decode_normal_xy_fp16,
+        decode_normal_xy_fp16_with
+    );
+    // The render-target forms on every 4th code of the sample (2^24 + ~2^18 codes).
+    let ch = unorm_channels(&codes.iter().copied().step_by(4).collect::<Vec<_>>());
+    check!(
+        &ch,
+        oct::decode_normal_oct32_unorm,
+        bn::decode_normal_oct32_unorm,
+        decode_normal_oct32_unorm_with
+    );
+    check!(
+        &ch,
+        xy_fp16::decode_normal_xy_fp16_unorm,
+        bn::decode_normal_xy_fp16_unorm,
+        decode_normal_xy_fp16_unorm_with
+    );
+}
+
+#[test]
+fn normal_precise_encoders() {
+    let v = encoder_inputs();
+    check!(
+        v,
+        oct::encode_normal_oct16,
+        bn::encode_normal_oct16,
+        encode_normal_oct16_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct24,
+        bn::encode_normal_oct24,
+        encode_normal_oct24_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct32,
+        bn::encode_normal_oct32,
+        encode_normal_oct32_with
+    );
+    check!(
+        v,
+        hemioct::encode_normal_hemioct24,
+        bn::encode_normal_hemioct24,
+        encode_normal_hemioct24_with
+    );
+}
+
+#[test]
+fn normal_rounding_encoders() {
+    let v = encoder_inputs();
+    check!(
+        v,
+        xyz8::encode_normal_xyz8,
+        bn::encode_normal_xyz8,
+        encode_normal_xyz8_with
+    );
+    check!(
+        v,
+        xy_fp16::encode_normal_xy_fp16,
+        bn::encode_normal_xy_fp16,
+        encode_normal_xy_fp16_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct16_fast,
+        bn::encode_normal_oct16_fast,
+        encode_normal_oct16_fast_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct24_fast,
+        bn::encode_normal_oct24_fast,
+        encode_normal_oct24_fast_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct32_fast,
+        bn::encode_normal_oct32_fast,
+        encode_normal_oct32_fast_with
+    );
+    check!(
+        v,
+        hemioct::encode_normal_hemioct24_fast,
+        bn::encode_normal_hemioct24_fast,
+        encode_normal_hemioct24_fast_with
+    );
+}
+
+/// The render-target encoders and the generic octahedral encoders at every size, on every 16th
+/// encoder input (the per-size encoders above cover all of them; these add one unpack, or
+/// another `bits`, to the same lanes).
+#[test]
+fn normal_unorm_and_generic_encoders() {
+    let v: Vec<Vec3> = encoder_inputs().iter().copied().step_by(16).collect();
+    let v = &v[..];
+    check!(
+        v,
+        xyz8::encode_normal_xyz8_unorm,
+        bn::encode_normal_xyz8_unorm,
+        encode_normal_xyz8_unorm_with
+    );
+    check!(
+        v,
+        xy_fp16::encode_normal_xy_fp16_unorm,
+        bn::encode_normal_xy_fp16_unorm,
+        encode_normal_xy_fp16_unorm_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct16_unorm,
+        bn::encode_normal_oct16_unorm,
+        encode_normal_oct16_unorm_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct24_unorm,
+        bn::encode_normal_oct24_unorm,
+        encode_normal_oct24_unorm_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct32_unorm,
+        bn::encode_normal_oct32_unorm,
+        encode_normal_oct32_unorm_with
+    );
+    check!(
+        v,
+        hemioct::encode_normal_hemioct24_unorm,
+        bn::encode_normal_hemioct24_unorm,
+        encode_normal_hemioct24_unorm_with
+    );
+    let w: Vec<Vec3> = v.iter().copied().step_by(8).collect();
+    for bits in 1..=16u32 {
+        check(
+            &format!("normal::encode_oct_precise({bits})"),
+            &w,
+            |n| oct::encode_precise(n, bits),
+            |l, s, d| bn::encode_oct_precise_with(l, bits, s, d),
+            |s, d| bn::encode_oct_precise(bits, s, d),
+        );
+        check(
+            &format!("normal::encode_oct_round({bits})"),
+            &w,
+            |n| oct::encode_round(n, bits),
+            |l, s, d| bn::encode_oct_round_with(l, bits, s, d),
+            |s, d| bn::encode_oct_round(bits, s, d),
+        );
+    }
+}
+
+/// The ranges the roughness tests use, every power-of-two class's edges, the degenerate ones
+/// and general ranges.
+fn max_powers() -> Vec<f32> {
+    let mut m: Vec<f32> = (1..=127).map(|l| f32::from_bits((127 + l) << 23)).collect();
+    m.extend([
+        f32::INFINITY,
+        f32::MAX,
+        f32::NAN,
+        1.0,
+        0.5,
+        -8.0,
+        0.0,
+        f32::NEG_INFINITY,
+        1000.0,
+        100.5,
+        3e6,
+        f32::from_bits(0x3f80_0001),
+        1.5e38,
+    ]);
+    m
+}
+
+#[test]
+fn roughness_decode_every_code() {
+    let codes: Vec<u32> = (0..1024).chain([u32::MAX, 1 << 31, 256, 0xffff]).collect();
+    for m in max_powers() {
+        check(
+            &format!("roughness::decode_log_roughness(max {m:e})"),
+            &codes,
+            |k| prepass::roughness::decode_log_roughness(k, m),
+            |l, s, d| br::decode_log_roughness_with(l, m, s, d),
+            |s, d| br::decode_log_roughness(m, s, d),
+        );
+    }
+}
+
+/// The power-of-two encoder is a different evaluation of the same exact function (its
+/// candidate comes from a polynomial, `src/batch/roughness.rs`), so it is checked densely:
+/// every `f32` in `[1, 2]` at range 2 (`L = 1`, where the candidate's error in codes is
+/// largest; the error depends only on the significand), every 3rd `f32` in `[1, 8192]` at
+/// the tests' range 8192, every 61st `f32` in `[1, 2^127]` at range 2^127; and for every range every
+/// 64th pattern of the stratified 32-bit sample read as `f32` (NaNs, negatives, subnormals and
+/// huge powers among them).
+#[test]
+fn roughness_encode() {
+    let span = |lo: f32, hi: f32, step: usize| -> Vec<f32> {
+        (lo.to_bits()..=hi.to_bits())
+            .step_by(step)
+            .map(f32::from_bits)
+            .collect()
+    };
+    for (max, powers) in [
+        (2.0, span(1.0, 2.0, 1)),
+        (8192.0, span(1.0, 8192.0, 3)),
+        (
+            f32::from_bits(0x7f00_0000),
+            span(1.0, f32::from_bits(0x7f00_0000), 5),
+        ),
+    ] {
+        check(
+            &format!("roughness::encode_log_roughness(max {max:e}, dense)"),
+            &powers,
+            |p| prepass::roughness::encode_log_roughness(p, max),
+            |l, s, d| br::encode_log_roughness_with(l, max, s, d),
+            |s, d| br::encode_log_roughness(max, s, d),
+        );
+    }
+    let sparse: Vec<f32> = stratified()
+        .iter()
+        .step_by(64)
+        .map(|&b| f32::from_bits(b))
+        .collect();
+    for m in max_powers().into_iter().step_by(3) {
+        check(
+            &format!("roughness::encode_log_roughness(max {m:e})"),
+            &sparse,
+            |p| prepass::roughness::encode_log_roughness(p, m),
+            |l, s, d| br::encode_log_roughness_with(l, m, s, d),
+            |s, d| br::encode_log_roughness(m, s, d),
+        );
+    }
+}
+
+/// The README's `batch-bench` block holds the ratio lines of the run recorded in
+/// `docs/batch_bench.md` (the overflow-checks-off summary, the first `text` block), with that
+/// run's date and machine. Timings cannot be checked bit for bit; this checks the README shows
+/// one run's lines, as `bash .ci/bench` wrote them (it regenerates both).
+#[test]
+fn readme_ratio_block() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/batch_bench.md");
+    let doc =
+        std::fs::read_to_string(path).expect("docs/batch_bench.md missing: run `bash .ci/bench`");
+    let measured = doc
+        .lines()
+        .find_map(|l| l.strip_prefix("Measured: "))
+        .expect("docs/batch_bench.md has no `Measured:` line: run `bash .ci/bench`");
+    let ratios: Vec<&str> = doc
+        .lines()
+        .skip_while(|l| *l != "```text")
+        .skip(1)
+        .take_while(|l| *l != "```")
+        .filter(|l| l.starts_with("ratio "))
+        .collect();
+    assert_eq!(
+        ratios.len(),
+        9,
+        "docs/batch_bench.md: expected one ratio line per codec (oct16/24/32, _fast) and operation, got {ratios:?}"
+    );
+    let body = format!(
+        "From `bash .ci/bench`, {} ([docs/batch_bench.md](docs/batch_bench.md) has the rates, \
+         the copy cap and the overflow checks' cost):\n\n```text\n{}\n```\n",
+        measured.trim_end_matches('.'),
+        ratios.join("\n")
+    );
+    common::publish("README.md", "batch-bench", &body);
+}
