@@ -55,14 +55,19 @@ fn light_volume_sphere_needs_depth_fail(center: vec3<f32>, radius: f32, near_cor
         || !light_volume_finite(near_corner_distance) || radius < 0.0 || near_corner_distance < 0.0) {
         return 1u;
     }
+    // A reach beyond f32 (r + rho overflows) touches every finite centre.
+    let sum = radius + near_corner_distance;
+    if (!light_volume_finite(sum)) {
+        return 1u;
+    }
     // Scale by the largest magnitude so the squares cannot overflow.
     let a = abs(center);
-    let s = max(max(a.x, max(a.y, a.z)), radius + near_corner_distance);
+    let s = max(max(a.x, max(a.y, a.z)), sum);
     if (s == 0.0 || bitcast<u32>(s) < 0x00800000u) {
         return 1u;
     }
     let c = center / s;
-    let reach = (radius + near_corner_distance) / s;
+    let reach = sum / s;
     return select(0u, 1u, dot(c, c) <= reach * reach * (1.0 + 16.0 * LIGHT_VOLUME_U));
 }
 

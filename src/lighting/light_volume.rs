@@ -71,6 +71,7 @@ pub fn light_volume_near_corner_distance(
 
 /// 1 when a sphere volume (view-space `center`, `radius`) may touch the eye's `ρ`-ball (use
 /// depth-fail), 0 when depth-pass is safe: `|c|² ≤ (r + ρ)²·(1 + 16u)` after scaling.
+/// `r + ρ` beyond f32's range (finite inputs whose sum overflows) → 1.
 pub fn light_volume_sphere_needs_depth_fail(
     center: Vec3,
     radius: f32,
@@ -84,15 +85,18 @@ pub fn light_volume_sphere_needs_depth_fail(
     {
         return 1;
     }
-    let s = center
-        .abs()
-        .max_element()
-        .max(radius + near_corner_distance);
+    // A reach beyond f32 (r + ρ overflows) touches every finite centre (found by the fuzz
+    // target `lighting`: r = 3.39e38, ρ = f32::MAX used to give 0).
+    let sum = radius + near_corner_distance;
+    if !light_volume_finite(sum) {
+        return 1;
+    }
+    let s = center.abs().max_element().max(sum);
     if s == 0.0 || s.to_bits() < 0x0080_0000 {
         return 1;
     }
     let c = center / s;
-    let reach = (radius + near_corner_distance) / s;
+    let reach = sum / s;
     u32::from(c.dot(c) <= reach * reach * (1.0 + 16.0 * LIGHT_VOLUME_U))
 }
 
