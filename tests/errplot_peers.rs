@@ -181,11 +181,7 @@ fn depth_points() -> Vec<Point> {
         (
             prepass::wgsl::LINEAR_DEPTH,
             "view_z_from_reversed_depth",
-            vec![
-                col,
-                Arg::splat_f32(near),
-                Arg::splat_f32(f32::INFINITY),
-            ],
+            vec![col, Arg::splat_f32(near), Arg::splat_f32(f32::INFINITY)],
             false,
             "view_z_from_reversed_depth".to_string(),
         ),

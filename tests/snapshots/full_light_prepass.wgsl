@@ -23,14 +23,19 @@ fn light_volume_sphere_needs_depth_fail(center: vec3<f32>, radius: f32, near_cor
         || !light_volume_finite(near_corner_distance) || radius < 0.0 || near_corner_distance < 0.0) {
         return 1u;
     }
+    // A reach beyond f32 (r + rho overflows) touches every finite centre.
+    let sum = radius + near_corner_distance;
+    if (!light_volume_finite(sum)) {
+        return 1u;
+    }
     // Scale by the largest magnitude so the squares cannot overflow.
     let a = abs(center);
-    let s = max(max(a.x, max(a.y, a.z)), radius + near_corner_distance);
+    let s = max(max(a.x, max(a.y, a.z)), sum);
     if (s == 0.0 || bitcast<u32>(s) < 0x00800000u) {
         return 1u;
     }
     let c = center / s;
-    let reach = (radius + near_corner_distance) / s;
+    let reach = sum / s;
     return select(0u, 1u, dot(c, c) <= reach * reach * (1.0 + 16.0 * LIGHT_VOLUME_U));
 }
 
@@ -241,15 +246,19 @@ fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
 
 // Spot cone factor: 0 outside cos_outer, 1 inside cos_inner, linear in the cosine between.
 // cos_angle is the cosine between the spot axis and the direction from the light to the surface.
-// Bad input: NaN/Inf → 0; cos_inner <= cos_outer gives a hard edge at cos_outer.
+// Bad input: NaN/Inf → 0; cosines outside [-1, 1] are clamped to it first (so no difference
+// overflows); cos_inner <= cos_outer gives a hard edge at cos_outer.
 fn lpp_spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
     if (!lpp_finite(cos_angle) || !lpp_finite(cos_outer) || !lpp_finite(cos_inner)) {
         return 0.0;
     }
-    if (cos_inner <= cos_outer) {
-        return select(0.0, 1.0, cos_angle >= cos_outer);
+    let c = clamp(cos_angle, -1.0, 1.0);
+    let outer = clamp(cos_outer, -1.0, 1.0);
+    let inner = clamp(cos_inner, -1.0, 1.0);
+    if (inner <= outer) {
+        return select(0.0, 1.0, c >= outer);
     }
-    return clamp((cos_angle - cos_outer) / (cos_inner - cos_outer), 0.0, 1.0);
+    return clamp((c - outer) / (inner - outer), 0.0, 1.0);
 }
 
 // N·L·att (the diffuse weight) and the specular cosine (N·H for Blinn-Phong, R·V for Phong),
