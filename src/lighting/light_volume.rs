@@ -123,6 +123,27 @@ pub fn light_volume_cone_needs_depth_fail(
     {
         return 1;
     }
+    // One power of two scales every length so the largest lies in [1, 4): squares then neither
+    // underflow nor overflow (lengths near 1e-22 used to lose the apex: found by the fuzz target
+    // `lighting`), and wherever they did not the decision is unchanged (each step is homogeneous
+    // in the lengths, and power-of-two scaling is exact).
+    let big = apex
+        .abs()
+        .max_element()
+        .max(h)
+        .max(h * k)
+        .max(near_corner_distance);
+    if big == 0.0 || !light_volume_finite(big) {
+        return 1; // the apex at the eye, or h·tan beyond f32
+    }
+    let sc = f32::from_bits((254 - ((big.to_bits() >> 23) & 0xff)).max(1) << 23);
+    cone_scaled(apex * sc, axis, h * sc, k, near_corner_distance * sc)
+}
+
+/// [`light_volume_cone_needs_depth_fail`] on lengths already scaled to `[1, 4)` (the WGSL's
+/// `light_volume_cone_scaled`).
+fn cone_scaled(apex: Vec3, axis: Vec3, h: f32, k: f32, near_corner_distance: f32) -> u32 {
+    let am = axis.abs().max_element();
     let a = axis / am;
     let d = a * (1.0 / a.dot(a).sqrt());
     let p = -apex;
