@@ -322,6 +322,14 @@ fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
              and the timings vary between runs by more than the closest gaps.",
         );
     }
+    if ctx.opts.quick {
+        ctx.line("");
+        ctx.line(
+            "Quick runs leave the `_fast` and hemi-octahedral variants out of the cost table, so \
+             out of this table too; `tests/errplot_peers.rs` checks the SPIR-V-count dominance \
+             of every shipped function and the README lists each dominated one with its reason.",
+        );
+    }
     ctx.line("");
     ctx.line(
         "| family | shipped function | dominated on SPIR-V count by | dominated on GPU ns by |",
