@@ -61,3 +61,81 @@ for (n, fa) in PROJ + [(PZ, f(1.0)), (f(1.0), f(1.0)), (f(2.0), f(1.0)), (INF, I
         write("builders", 0, words(n, fa) + bytes([conv]))
 for b in range(0, 128, 5):
     write("builders", 1, bytes([b]) + words(0xFFFFFFFF, 0x12345678) + bytes([7]))
+
+# decoders (appended entries, in fuzz/src/decoders.rs order): 4 decode_normal_xyz8, 5 _xyz8_unorm,
+# 6 decode_normal_xy_fp16, 7 _xy_fp16_unorm, 8 decode_normal_oct16, 9 _oct16_unorm,
+# 10 decode_normal_oct24, 11 _oct24_unorm, 12 decode_normal_oct32, 13 _oct32_unorm,
+# 14 oct::decode (bits byte, code), 15 decode_normal_hemioct24, 16 _hemioct24_unorm,
+# 17 decode_log_roughness (code, max_power), 18 the roughness texel extractors
+NCODES = CODES + [0x7F7F, 0x8080, 0x7FF7FF, 0x7FFF7FFF, 0x3C003C00, 0x7E007E00, 0xFC00FC00]
+for c in NCODES:
+    for e in (4, 6, 8, 10, 12, 15, 18):
+        write("decoders", e, words(c))
+    for bits in (0, 7, 11, 15):
+        write("decoders", 14, bytes([bits]) + words(c))
+CHANNELS = [(NAN, NAN, NAN, NAN), (INF, NINF, f(0.5), SUB), (f(0.49 / 255), f(254.51 / 255), f(1.0), PZ),
+            (f(2.0), f(-1.0), NZ, SNAN)]
+for ch in CHANNELS:
+    for e in (5, 7, 9, 11, 13, 16):
+        write("decoders", e, words(*ch))
+for c in (0, 200, 255, 256, 0xFFFFFFFF):
+    for m in (f(8192.0), f(1000.0), NAN, NINF, INF, SUB, f(1.0), 0x7F7FFFFF):
+        write("decoders", 17, words(c, m))
+# encoders (appended): 3 encode_normal_xyz8, 4 _unorm, 5 xy_fp16, 6 _unorm, 7 oct16, 8 oct16_fast,
+# 9 oct16_unorm, 10 oct24, 11 oct24_fast, 12 oct24_unorm, 13 oct32, 14 oct32_fast, 15 oct32_unorm,
+# 16 oct::encode_precise/encode_round (bits byte, vector), 17 hemioct24, 18 hemioct24_fast,
+# 19 hemioct24_unorm, 20 normal::sanitize, 21 encode_log_roughness (power, power, max_power),
+# 22 pack_normal_xyz8_log_roughness (normal, code)
+VECS = [(NAN, PZ, f(1.0)), (PZ, PZ, PZ), (NZ, NZ, NZ), (SUB, NSUB, SUBMAX), (INF, f(1.0), PZ),
+        (INF, NINF, f(5.0)), (0x7F7FFFFF, 0x7F7FFFFF, 0xFF7FFFFF), (f(0.6), f(-0.8), NZ),
+        (f(1.0), f(1.0), f(-1e-30)), (f(3.0), SUB, f(-4.0)), (f(0.0), f(-1.0), f(1e-7))]
+for v in VECS:
+    for e in list(range(3, 16)) + [17, 18, 19, 20]:
+        write("encoders", e, words(*v))
+    for bits in (0, 7, 11, 15):
+        write("encoders", 16, bytes([bits]) + words(*v))
+for (p, m) in [(NAN, f(8192.0)), (INF, f(1000.0)), (f(-100.0), f(8192.0)), (SUB, f(8192.0)),
+               (f(1e9), f(8192.0)), (0x7F7FFFFF, INF), (f(100.0), NAN), (f(100.0), f(0.5)),
+               (f(8192.0), f(8192.0)), (f(1.0), f(8192.0))]:
+    write("encoders", 21, words(p, f(2.0), m))
+for (n, c) in [(0xFF123456, 0x3E7), (0x80, 0xFFFFFFFF), (0, 0), (0xFFFFFFFF, 255)]:
+    write("encoders", 22, words(n, c))
+# lighting (fuzz/src/lighting.rs order): 0 lpp_direction, 1 lpp_pow_cosine, 2 point attenuation,
+# 3 spot attenuation, 4 lpp_cosines, 5 blinn-phong light, 6 phong light, 7 point light, 8 spot
+# light, 9 two-buffer specular, 10 reconstruct specular, 11 clamp colour, 12 combine / luminance,
+# 13 aggregate accumulate, 14 aggregate direction / position / diffuse, 15 near-corner distance,
+# 16 depth-fail tests, 17 window depth / sphere depth bounds (centre, radius, projection, t)
+UNIT = (PZ, PZ, f(1.0))
+for v in VECS:
+    write("lighting", 0, words(*v))
+    write("lighting", 11, words(*v))
+for (x, y) in [(NAN, f(8.0)), (f(1.5), f(8.0)), (INF, f(8.0)), (NINF, f(8.0)), (PZ, PZ),
+               (f(0.5), PZ), (SUB, f(1.0)), (f(0.5), NAN), (f(0.5), INF), (f(0.5), f(-3.0))]:
+    write("lighting", 1, words(x, y))
+    write("lighting", 2, words(x, y))
+    write("lighting", 3, words(x, y, f(0.9)))
+for v in VECS[:6]:
+    for e in (4, 5, 6, 9):
+        write("lighting", e, words(*UNIT, *UNIT, *v, f(1.0), f(1.0), f(1.0), f(1.0), f(8.0)))
+        write("lighting", e, words(*v, *UNIT, *UNIT, f(1.0), f(1.0), f(1.0), f(1.0), f(8.0)))
+    write("lighting", 7, words(*UNIT, *UNIT, *v, f(1.0), f(1.0), f(1.0), f(2.0), f(8.0)))
+    write("lighting", 8, words(*UNIT, *UNIT, *v, f(1.0), f(1.0), f(1.0), f(2.0), PZ, PZ, f(-1.0), f(0.5), f(0.9), f(8.0)))
+for light in [(f(1.0), f(1.0), f(1.0), f(0.5)), (PZ, PZ, PZ, f(1.0)), (NAN, f(1.0), f(1.0), f(1.0)),
+              (f(65504.0), INF, f(1.0), f(1.0)), (f(1.0), f(1.0), f(1.0), f(9.0)), (SUB, SUB, SUB, SUB)]:
+    for m in (f(8.0), NAN, INF, PZ):
+        write("lighting", 10, words(*light, m))
+        write("lighting", 12, words(f(1.0), f(1.0), f(1.0), f(1.0), f(1.0), f(1.0), *light, m, *UNIT, *UNIT))
+for v in VECS[:8]:
+    write("lighting", 13, words(PZ, PZ, PZ, PZ, PZ, PZ, PZ, *v, f(1.0), PZ, PZ, PZ, f(1.0), f(1.0), f(1.0), *UNIT))
+    write("lighting", 14, words(*v, f(1.0), PZ, PZ, PZ, *UNIT, *UNIT, f(1.0), f(1.0), f(1.0)))
+for (n, tx, ty) in [(f(0.1), f(1.0), f(0.75)), (NAN, f(1.0), f(1.0)), (f(-1.0), f(1.0), f(1.0)),
+                    (PZ, f(1e30), f(1.0)), (INF, PZ, PZ)]:
+    write("lighting", 15, words(n, tx, ty))
+for (c, r, rho) in [((PZ, PZ, f(-10.0)), f(1.0), f(0.2)), ((PZ, PZ, f(-1.0)), f(1.0), f(0.2)),
+                    ((NAN, PZ, PZ), f(1.0), f(0.2)), ((PZ, PZ, PZ), PZ, PZ), ((f(1e30), PZ, PZ), f(1e30), f(1.0))]:
+    write("lighting", 16, words(*c, r, rho, PZ, PZ, f(-2.0), PZ, PZ, f(-1.0), f(5.0), f(0.5)))
+for (n, fa) in PROJ:
+    for (cz, r) in [(f(10.0), f(1.0)), (f(0.05), f(0.01)), (f(1e9), f(1.0)), (NAN, f(1.0)),
+                    (f(5.0), f(-1.0)), (0x7F7FFFFF, 0x7F7FFFFF)]:
+        for conv in (0, 1):
+            write("lighting", 17, words(cz, r, n, fa) + bytes([conv]) + words(0x80000000))

@@ -198,3 +198,146 @@ fn render_target_forms_match_the_code_path() {
         oct::decode_normal_oct16,
     );
 }
+
+/// The precise encoder before issue 13 made it straight-line (a loop over the four candidates
+/// with a running best, and a branching lattice), kept verbatim as the reference the shipped
+/// twin must equal bit for bit. The WGSL equals the twin (the round-trip tests above, and
+/// `tests/conforming.rs` under emulation), so the WGSL's output is unchanged too.
+mod loop_reference {
+    use glam::{IVec3, UVec2, Vec3};
+    use prepass::normal::oct::{continuous, max_code};
+
+    pub fn lattice(uv: UVec2, bits: u32) -> IVec3 {
+        let m = max_code(bits) as i32;
+        let a = 2 * uv.x as i32 - m;
+        let b = 2 * uv.y as i32 - m;
+        let z = m - a.abs() - b.abs();
+        if z >= 0 {
+            IVec3::new(a, b, z)
+        } else {
+            IVec3::new((m - b.abs()) * a.signum(), (m - a.abs()) * b.signum(), z)
+        }
+    }
+
+    fn sin2(s: Vec3, uv: UVec2, bits: u32) -> f32 {
+        let d = lattice(uv, bits);
+        let ad = d.abs().as_uvec3();
+        let len2 = (ad.x * ad.x + ad.y * ad.y + ad.z * ad.z) as f32;
+        let d = d.as_vec3();
+        let x = Vec3::new(
+            s.y * d.z - s.z * d.y,
+            s.z * d.x - s.x * d.z,
+            s.x * d.y - s.y * d.x,
+        );
+        // The crate's dot: (x·x + y·y) + z·z, each operation rounded, no fusion.
+        ((x.x * x.x + x.y * x.y) + x.z * x.z) / len2
+    }
+
+    pub fn encode_precise(n: Vec3, bits: u32) -> u32 {
+        let m = max_code(bits);
+        let s = prepass::normal::sanitize(n).unwrap_or(Vec3::Z);
+        let c = continuous(s, bits);
+        let base = UVec2::new(
+            (c.x.floor() as u32).min(m - 1),
+            (c.y.floor() as u32).min(m - 1),
+        );
+        let mut best = base;
+        let mut best_s2 = sin2(s, base, bits);
+        for k in 1..4u32 {
+            let cand = base + UVec2::new(k & 1, k >> 1);
+            let s2 = sin2(s, cand, bits);
+            if s2 < best_s2 {
+                best = cand;
+                best_s2 = s2;
+            }
+        }
+        best.x | (best.y << bits)
+    }
+}
+
+/// SplitMix64 (Steele, Lea, Flood 2014): a fixed, seeded stream of 64-bit words.
+fn splitmix(state: &mut u64) -> u64 {
+    *state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    let mut z = *state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// Issue 13's cheaper precise encoder (straight-line selection, branch-free lattice) returns the
+/// old loop's code for every input tried: the 2^24 Fibonacci directions, the adversarial set,
+/// the bad inputs, 2^22 random vectors in the cube [−1, 1]^3 and 2^22 vectors of random f32
+/// bit patterns (every exponent, NaN and infinities included), at 8, 12 and 16 bits; and its
+/// lattice equals the old one on every code of 8 and 12 bits and the stratified 32-bit codes.
+/// CPU only (no adapter): the twins.
+#[test]
+fn straight_line_precise_encoder_equals_the_loop_it_replaced() {
+    let mut rng = 0x13_u64;
+    let mut cube = Vec::with_capacity(1 << 22);
+    let mut raw = Vec::with_capacity(1 << 22);
+    for _ in 0..1 << 22 {
+        let w = [splitmix(&mut rng), splitmix(&mut rng)];
+        let unit = |x: u64| (x >> 40) as f32 / (1u64 << 23) as f32 - 1.0;
+        cube.push([unit(w[0]), unit(w[0] << 24), unit(w[1])]);
+        raw.push([w[0] as u32, (w[0] >> 32) as u32, w[1] as u32].map(f32::from_bits));
+    }
+    let bad: Vec<[f32; 3]> = bad_inputs().iter().map(|c| c.0).collect();
+    let sets: [(&str, &[[f32; 3]]); 5] = [
+        ("fibonacci 2^24", fibonacci()),
+        ("adversarial", &adversarial_directions()),
+        ("bad inputs", &bad),
+        ("random cube 2^22", &cube),
+        ("random bits 2^22", &raw),
+    ];
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    for bits in [8, 12, 16] {
+        for (set, inputs) in sets {
+            let chunk = inputs.len().div_ceil(threads).max(1);
+            let differ: Vec<usize> = std::thread::scope(|sc| {
+                let handles: Vec<_> = inputs
+                    .chunks(chunk)
+                    .enumerate()
+                    .map(|(k, part)| {
+                        sc.spawn(move || {
+                            part.iter()
+                                .enumerate()
+                                .filter(|&(_, &d)| {
+                                    let v = glam::Vec3::from(d);
+                                    oct::encode_precise(v, bits)
+                                        != loop_reference::encode_precise(v, bits)
+                                })
+                                .map(|(i, _)| k * chunk + i)
+                                .collect::<Vec<_>>()
+                        })
+                    })
+                    .collect();
+                handles
+                    .into_iter()
+                    .flat_map(|h| h.join().unwrap())
+                    .collect()
+            });
+            assert!(
+                differ.is_empty(),
+                "{bits} bits, {set}: {} inputs encode differently, first {:?} ({:?})",
+                differ.len(),
+                differ.first(),
+                differ.first().map(|&i| inputs[i])
+            );
+        }
+    }
+    for (bits, codes) in [
+        (8, (0..1u32 << 16).collect::<Vec<_>>()),
+        (12, (0..1u32 << 24).collect()),
+        (16, stratified_codes32()),
+    ] {
+        let m = oct::max_code(bits);
+        for p in codes {
+            let uv = glam::UVec2::new(p & m, (p >> bits) & m);
+            assert_eq!(
+                oct::lattice(uv, bits),
+                loop_reference::lattice(uv, bits),
+                "{bits} bits, code {p:#x}"
+            );
+        }
+    }
+}

@@ -55,14 +55,19 @@ fn light_volume_sphere_needs_depth_fail(center: vec3<f32>, radius: f32, near_cor
         || !light_volume_finite(near_corner_distance) || radius < 0.0 || near_corner_distance < 0.0) {
         return 1u;
     }
+    // A reach beyond f32 (r + rho overflows) touches every finite centre.
+    let sum = radius + near_corner_distance;
+    if (!light_volume_finite(sum)) {
+        return 1u;
+    }
     // Scale by the largest magnitude so the squares cannot overflow.
     let a = abs(center);
-    let s = max(max(a.x, max(a.y, a.z)), radius + near_corner_distance);
+    let s = max(max(a.x, max(a.y, a.z)), sum);
     if (s == 0.0 || bitcast<u32>(s) < 0x00800000u) {
         return 1u;
     }
     let c = center / s;
-    let reach = (radius + near_corner_distance) / s;
+    let reach = sum / s;
     return select(0u, 1u, dot(c, c) <= reach * reach * (1.0 + 16.0 * LIGHT_VOLUME_U));
 }
 
@@ -83,6 +88,23 @@ fn light_volume_cone_needs_depth_fail(apex: vec3<f32>, axis: vec3<f32>, range_ta
         || k < 0.0 || near_corner_distance < 0.0 || bitcast<u32>(am) < 0x00800000u) {
         return 1u;
     }
+    // One power of two scales every length so the largest lies in [1, 4): squares then neither
+    // underflow nor overflow, and wherever they did not the decision is unchanged (each step is
+    // homogeneous in the lengths, and power-of-two scaling is exact).
+    let ap = abs(apex);
+    let big = max(max(max(ap.x, ap.y), max(ap.z, h)), max(h * k, near_corner_distance));
+    if (big == 0.0 || !light_volume_finite(big)) {
+        return 1u; // the apex at the eye, or h·tan beyond f32
+    }
+    let sc = bitcast<f32>(max(254u - ((bitcast<u32>(big) >> 23u) & 0xffu), 1u) << 23u);
+    return light_volume_cone_scaled(apex * sc, axis, h * sc, k, near_corner_distance * sc);
+}
+
+// The cone test of light_volume_cone_needs_depth_fail on lengths already scaled to [1, 4).
+fn light_volume_cone_scaled(apex: vec3<f32>, axis: vec3<f32>, h: f32, k: f32,
+                            near_corner_distance: f32) -> u32 {
+    let aa = abs(axis);
+    let am = max(aa.x, max(aa.y, aa.z));
     let d = (axis / am) * inverseSqrt(dot(axis / am, axis / am));
     let p = -apex; // the eye relative to the apex
     let t = dot(p, d);

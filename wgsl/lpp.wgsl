@@ -86,15 +86,19 @@ fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
 
 // Spot cone factor: 0 outside cos_outer, 1 inside cos_inner, linear in the cosine between.
 // cos_angle is the cosine between the spot axis and the direction from the light to the surface.
-// Bad input: NaN/Inf → 0; cos_inner <= cos_outer gives a hard edge at cos_outer.
+// Bad input: NaN/Inf → 0; cosines outside [-1, 1] are clamped to it first (so no difference
+// overflows); cos_inner <= cos_outer gives a hard edge at cos_outer.
 fn lpp_spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
     if (!lpp_finite(cos_angle) || !lpp_finite(cos_outer) || !lpp_finite(cos_inner)) {
         return 0.0;
     }
-    if (cos_inner <= cos_outer) {
-        return select(0.0, 1.0, cos_angle >= cos_outer);
+    let c = clamp(cos_angle, -1.0, 1.0);
+    let outer = clamp(cos_outer, -1.0, 1.0);
+    let inner = clamp(cos_inner, -1.0, 1.0);
+    if (inner <= outer) {
+        return select(0.0, 1.0, c >= outer);
     }
-    return clamp((cos_angle - cos_outer) / (cos_inner - cos_outer), 0.0, 1.0);
+    return clamp((c - outer) / (inner - outer), 0.0, 1.0);
 }
 
 // N·L·att (the diffuse weight) and the specular cosine (N·H for Blinn-Phong, R·V for Phong),

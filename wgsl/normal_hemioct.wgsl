@@ -61,27 +61,32 @@ fn hemioct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
 fn hemioct_sin2(s: vec3<f32>, uv: vec2<u32>, m: u32) -> f32 {
     let d = hemioct_lattice(uv, m);
     let ad = vec3<u32>(abs(d));
-    let len2 = f32(ad.x * ad.x + ad.y * ad.y + ad.z * ad.z);
+    let sq = ad * ad;
+    let len2 = f32(sq.x + sq.y + sq.z);
     let x = cross(s, vec3<f32>(d));
     return dot(x, x) / len2;
 }
 
 // Precise: the best of the four codes around the continuous coordinates, tried in the order
-// (0,0), (1,0), (0,1), (1,1), a later one winning only if strictly closer.
+// (0,0), (1,0), (0,1), (1,1), a later one winning only if strictly closer. Straight-line (no
+// loop, no variables): each later candidate replaces the best so far through a select.
 fn encode_normal_hemioct24(n: vec3<f32>) -> u32 {
     let m = 4095u;
     let s = hemioct_sanitize(n);
-    let base = min(vec2<u32>(floor(hemioct_continuous(s, m))), vec2<u32>(m - 1u));
-    var best = base;
-    var best_s2 = hemioct_sin2(s, base, m);
-    for (var k = 1u; k < 4u; k++) {
-        let cand = base + vec2<u32>(k & 1u, k >> 1u);
-        let s2 = hemioct_sin2(s, cand, m);
-        if (s2 < best_s2) {
-            best = cand;
-            best_s2 = s2;
-        }
-    }
+    let c00 = min(vec2<u32>(floor(hemioct_continuous(s, m))), vec2<u32>(m - 1u));
+    let c10 = c00 + vec2<u32>(1u, 0u);
+    let c01 = c00 + vec2<u32>(0u, 1u);
+    let c11 = c00 + vec2<u32>(1u);
+    let s00 = hemioct_sin2(s, c00, m);
+    let s10 = hemioct_sin2(s, c10, m);
+    let t10 = s10 < s00;
+    let b1 = select(c00, c10, t10);
+    let s1 = select(s00, s10, t10);
+    let s01 = hemioct_sin2(s, c01, m);
+    let t01 = s01 < s1;
+    let b2 = select(b1, c01, t01);
+    let s2 = select(s1, s01, t01);
+    let best = select(b2, c11, hemioct_sin2(s, c11, m) < s2);
     return best.x | (best.y << 12u);
 }
 

@@ -63,16 +63,15 @@ fn oct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
 }
 
 // The exact integer direction code (u, v) stands for (see the header); its L1 norm is M.
+// Branch-free: the fold is a select between exact integer vectors.
 fn oct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
     let mi = i32(m);
-    let a = 2 * i32(uv.x) - mi;
-    let b = 2 * i32(uv.y) - mi;
-    let z = mi - abs(a) - abs(b);
-    if (z >= 0) {
-        return vec3<i32>(a, b, z);
-    }
-    // a and b are odd (M is odd), never zero, so sign() is +-1.
-    return vec3<i32>((mi - abs(b)) * sign(a), (mi - abs(a)) * sign(b), z);
+    let ab = 2 * vec2<i32>(uv) - vec2<i32>(mi);
+    let aab = abs(ab);
+    let z = mi - aab.x - aab.y;
+    // Folded when z < 0: then a and b are odd (M is odd), never zero, so sign() is +-1.
+    let folded = (vec2<i32>(mi) - aab.yx) * sign(ab);
+    return vec3<i32>(select(ab, folded, z < 0), z);
 }
 
 // sin^2 of the angle between s and the direction of code uv: |s x D|^2 / |D|^2, up to the common
@@ -81,28 +80,33 @@ fn oct_sin2(s: vec3<f32>, uv: vec2<u32>, m: u32) -> f32 {
     let d = oct_lattice(uv, m);
     let ad = vec3<u32>(abs(d));
     // |D|^2 <= M^2 < 2^32: exact in u32, one rounding to f32.
-    let len2 = f32(ad.x * ad.x + ad.y * ad.y + ad.z * ad.z);
+    let sq = ad * ad;
+    let len2 = f32(sq.x + sq.y + sq.z);
     let x = cross(s, vec3<f32>(d));
     return dot(x, x) / len2;
 }
 
 // The survey's precise encoder: of the four codes around the continuous coordinates (floor and
 // floor + 1 per axis), the one whose decoded direction is closest to s. Candidates are tried in
-// the order (0,0), (1,0), (0,1), (1,1); a later one wins only if strictly closer.
+// the order (0,0), (1,0), (0,1), (1,1); a later one wins only if strictly closer. Straight-line
+// (no loop, no variables): each later candidate replaces the best so far through a select.
 fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
     let m = (1u << bits) - 1u;
     let s = oct_sanitize(n).xyz;
-    let base = min(vec2<u32>(floor(oct_continuous(s, m))), vec2<u32>(m - 1u));
-    var best = base;
-    var best_s2 = oct_sin2(s, base, m);
-    for (var k = 1u; k < 4u; k++) {
-        let cand = base + vec2<u32>(k & 1u, k >> 1u);
-        let s2 = oct_sin2(s, cand, m);
-        if (s2 < best_s2) {
-            best = cand;
-            best_s2 = s2;
-        }
-    }
+    let c00 = min(vec2<u32>(floor(oct_continuous(s, m))), vec2<u32>(m - 1u));
+    let c10 = c00 + vec2<u32>(1u, 0u);
+    let c01 = c00 + vec2<u32>(0u, 1u);
+    let c11 = c00 + vec2<u32>(1u);
+    let s00 = oct_sin2(s, c00, m);
+    let s10 = oct_sin2(s, c10, m);
+    let t10 = s10 < s00;
+    let b1 = select(c00, c10, t10);
+    let s1 = select(s00, s10, t10);
+    let s01 = oct_sin2(s, c01, m);
+    let t01 = s01 < s1;
+    let b2 = select(b1, c01, t01);
+    let s2 = select(s1, s01, t01);
+    let best = select(b2, c11, oct_sin2(s, c11, m) < s2);
     return best.x | (best.y << bits);
 }
 

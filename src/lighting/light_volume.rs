@@ -71,6 +71,7 @@ pub fn light_volume_near_corner_distance(
 
 /// 1 when a sphere volume (view-space `center`, `radius`) may touch the eye's `ρ`-ball (use
 /// depth-fail), 0 when depth-pass is safe: `|c|² ≤ (r + ρ)²·(1 + 16u)` after scaling.
+/// `r + ρ` beyond f32's range (finite inputs whose sum overflows) → 1.
 pub fn light_volume_sphere_needs_depth_fail(
     center: Vec3,
     radius: f32,
@@ -84,15 +85,18 @@ pub fn light_volume_sphere_needs_depth_fail(
     {
         return 1;
     }
-    let s = center
-        .abs()
-        .max_element()
-        .max(radius + near_corner_distance);
+    // A reach beyond f32 (r + ρ overflows) touches every finite centre (found by the fuzz
+    // target `lighting`: r = 3.39e38, ρ = f32::MAX used to give 0).
+    let sum = radius + near_corner_distance;
+    if !light_volume_finite(sum) {
+        return 1;
+    }
+    let s = center.abs().max_element().max(sum);
     if s == 0.0 || s.to_bits() < 0x0080_0000 {
         return 1;
     }
     let c = center / s;
-    let reach = (radius + near_corner_distance) / s;
+    let reach = sum / s;
     u32::from(c.dot(c) <= reach * reach * (1.0 + 16.0 * LIGHT_VOLUME_U))
 }
 
@@ -119,6 +123,27 @@ pub fn light_volume_cone_needs_depth_fail(
     {
         return 1;
     }
+    // One power of two scales every length so the largest lies in [1, 4): squares then neither
+    // underflow nor overflow (lengths near 1e-22 used to lose the apex: found by the fuzz target
+    // `lighting`), and wherever they did not the decision is unchanged (each step is homogeneous
+    // in the lengths, and power-of-two scaling is exact).
+    let big = apex
+        .abs()
+        .max_element()
+        .max(h)
+        .max(h * k)
+        .max(near_corner_distance);
+    if big == 0.0 || !light_volume_finite(big) {
+        return 1; // the apex at the eye, or h·tan beyond f32
+    }
+    let sc = f32::from_bits((254 - ((big.to_bits() >> 23) & 0xff)).max(1) << 23);
+    cone_scaled(apex * sc, axis, h * sc, k, near_corner_distance * sc)
+}
+
+/// [`light_volume_cone_needs_depth_fail`] on lengths already scaled to `[1, 4)` (the WGSL's
+/// `light_volume_cone_scaled`).
+fn cone_scaled(apex: Vec3, axis: Vec3, h: f32, k: f32, near_corner_distance: f32) -> u32 {
+    let am = axis.abs().max_element();
     let a = axis / am;
     let d = a * (1.0 / a.dot(a).sqrt());
     let p = -apex;

@@ -88,15 +88,20 @@ pub fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
 }
 
 /// Spot cone factor: 0 below `cos_outer`, 1 above `cos_inner`, linear in the cosine between;
-/// `cos_inner ≤ cos_outer` gives a hard edge. NaN/Inf → 0.
+/// `cos_inner ≤ cos_outer` gives a hard edge. NaN/Inf → 0; cosines outside `[−1, 1]` are
+/// clamped to it first, so no difference overflows (finite cosines of ±3e38 gave NaN: found by
+/// the fuzz target `lighting`).
 pub fn lpp_spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
     if !lpp_finite(cos_angle) || !lpp_finite(cos_outer) || !lpp_finite(cos_inner) {
         return 0.0;
     }
-    if cos_inner <= cos_outer {
-        return if cos_angle >= cos_outer { 1.0 } else { 0.0 };
+    let c = cos_angle.clamp(-1.0, 1.0);
+    let outer = cos_outer.clamp(-1.0, 1.0);
+    let inner = cos_inner.clamp(-1.0, 1.0);
+    if inner <= outer {
+        return if c >= outer { 1.0 } else { 0.0 };
     }
-    ((cos_angle - cos_outer) / (cos_inner - cos_outer)).clamp(0.0, 1.0)
+    ((c - outer) / (inner - outer)).clamp(0.0, 1.0)
 }
 
 /// `(N·L, specular cosine)`: `N·H` (Blinn-Phong) or `R·V` (Phong), each clamped to `[0, 1]`;

@@ -29,6 +29,14 @@
 //! is normalised (or, for the scale-free octahedral map, needs no normalising).
 //! Decoders accept every bit pattern and return a finite unit vector.
 
+/// How far a decoded vector's length may be from 1: WGSL's `normalize` is `v·inverseSqrt(v·v)`
+/// with `inverseSqrt` 2 ULP, the dot product's 3 roundings (≤ 1.5 ULP relative to `v·v`, so
+/// ≤ 0.75 ULP on the length), and the final multiply 0.5 ULP per component: ≤ 3.25·2^-23,
+/// rounded up to 4·2^-23 (lavapipe's measured worst is listed in the README). The Rust twins'
+/// `v / sqrt(v·v)`, each step correctly rounded, stay inside it too. Used by the adapter suites
+/// (`prepass::sweep::normal` re-exports it) and the fuzz targets.
+pub const UNIT_TOLERANCE: f64 = 4.0 / 8_388_608.0;
+
 pub mod hemioct;
 pub mod oct;
 pub mod xy_fp16;

@@ -15,7 +15,7 @@
 //! cuts the maximum error by about a third at every size.
 
 use super::{normalize, sanitize};
-use glam::{IVec3, UVec2, Vec2, Vec3};
+use glam::{IVec2, IVec3, UVec2, Vec2, Vec3};
 
 /// `M = 2^bits − 1`, the largest code per axis.
 ///
@@ -50,16 +50,16 @@ pub fn continuous(s: Vec3, bits: u32) -> Vec2 {
 }
 
 /// The exact integer vector code `(u, v)` stands for (L1 norm `M`; see the module docs).
+/// Branch-free like the WGSL: the fold is a select between exact integer vectors.
 pub fn lattice(uv: UVec2, bits: u32) -> IVec3 {
     let m = max_code(bits) as i32;
-    let a = 2 * uv.x as i32 - m;
-    let b = 2 * uv.y as i32 - m;
-    let z = m - a.abs() - b.abs();
-    if z >= 0 {
-        IVec3::new(a, b, z)
-    } else {
-        IVec3::new((m - b.abs()) * a.signum(), (m - a.abs()) * b.signum(), z)
-    }
+    let ab = IVec2::new(2 * uv.x as i32 - m, 2 * uv.y as i32 - m);
+    let aab = ab.abs();
+    let z = m - aab.x - aab.y;
+    // Folded when z < 0: then a and b are odd (M is odd), never zero, so signum is ±1.
+    let folded = (IVec2::splat(m) - IVec2::new(aab.y, aab.x)) * ab.signum();
+    let xy = if z < 0 { folded } else { ab };
+    xy.extend(z)
 }
 
 /// `|s × D|² / |D|²` as the WGSL's `oct_sin2` computes it: the precise encoder's score
@@ -67,7 +67,8 @@ pub fn lattice(uv: UVec2, bits: u32) -> IVec3 {
 fn sin2(s: Vec3, uv: UVec2, bits: u32) -> f32 {
     let d = lattice(uv, bits);
     let ad = d.abs().as_uvec3();
-    let len2 = (ad.x * ad.x + ad.y * ad.y + ad.z * ad.z) as f32;
+    let sq = ad * ad;
+    let len2 = (sq.x + sq.y + sq.z) as f32;
     let d = d.as_vec3();
     let x = Vec3::new(
         s.y * d.z - s.z * d.y,
@@ -98,21 +99,20 @@ pub fn encode_precise(n: Vec3, bits: u32) -> u32 {
     let m = max_code(bits);
     let s = sanitize(n).unwrap_or(Vec3::Z);
     let c = continuous(s, bits);
-    let base = UVec2::new(
+    let c00 = UVec2::new(
         (c.x.floor() as u32).min(m - 1),
         (c.y.floor() as u32).min(m - 1),
     );
-    let mut best = base;
-    let mut best_s2 = sin2(s, base, bits);
-    for k in 1..4u32 {
-        let cand = base + UVec2::new(k & 1, k >> 1);
+    // As the WGSL's select chain: each later candidate replaces the best only if strictly
+    // smaller, in the order (0,0), (1,0), (0,1), (1,1).
+    let mut best = (c00, sin2(s, c00, bits));
+    for cand in [c00 + UVec2::X, c00 + UVec2::Y, c00 + UVec2::ONE] {
         let s2 = sin2(s, cand, bits);
-        if s2 < best_s2 {
-            best = cand;
-            best_s2 = s2;
+        if s2 < best.1 {
+            best = (cand, s2);
         }
     }
-    best.x | (best.y << bits)
+    best.0.x | (best.0.y << bits)
 }
 
 /// The rounding encoder: each continuous coordinate rounded to the nearest code (half to even).

@@ -87,6 +87,10 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
         "light_volume_finite3",
         "private to light_volume.wgsl: finiteness test on bits, exercised by the NaN/Inf rows",
     ),
+    (
+        "light_volume_cone_scaled",
+        "private to light_volume.wgsl: body of light_volume_cone_needs_depth_fail, with its rows",
+    ),
 ];
 
 #[rustfmt::skip]
@@ -103,9 +107,11 @@ pub const ROWS: &[Row] = &[
     Row { func: "light_volume_sphere_needs_depth_fail", case: "negative radius", args: &[V::Vec3([0.0, 0.0, 10.0]), V::F32(-1.0), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },
     Row { func: "light_volume_sphere_needs_depth_fail", case: "negative near-corner distance", args: &[V::Vec3([0.0, 0.0, 10.0]), V::F32(1.0), V::F32(-0.1)], expect: V::U32(1), why: "depth-fail" },
     Row { func: "light_volume_sphere_needs_depth_fail", case: "zero vector, zero radius", args: &[V::Vec3([0.0; 3]), V::F32(0.0), V::F32(0.0)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "light_volume_sphere_needs_depth_fail", case: "out of range: r + ρ overflows", args: &[V::Vec3([0.0, 0.0, 0.5]), V::F32(3.3895363e38), V::F32(f32::MAX)], expect: V::U32(1), why: "depth-fail: the reach covers every finite centre" },
     Row { func: "light_volume_sphere_needs_depth_fail", case: "subnormal", args: &[V::Vec3([SUB_MAX, 0.0, 0.0]), V::F32(0.0), V::F32(0.0)], expect: V::U32(1), why: "depth-fail, flushed or not" },
     Row { func: "light_volume_sphere_needs_depth_fail", case: "huge centre (c·c would overflow)", args: &[V::Vec3([0.0, 0.0, 3e38]), V::F32(1.0), V::F32(0.1)], expect: V::U32(0), why: "scaled first: far away, depth-pass" },
     Row { func: "light_volume_cone_needs_depth_fail", case: "NaN apex", args: &[V::Vec3([NAN, 0.0, 100.0]), V::Vec3(ZN), V::Vec2([10.0, 0.5]), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },
+    Row { func: "light_volume_cone_needs_depth_fail", case: "tiny lengths (squares would underflow), apex at ρ", args: &[V::Vec3([1.2830058e-22, 0.0, 0.0]), V::Vec3(ZN), V::Vec2([0.0, 0.0]), V::F32(1.2830058e-22)], expect: V::U32(1), why: "scaled first: the apex is within ρ, depth-fail" },
     Row { func: "light_volume_cone_needs_depth_fail", case: "zero-length axis", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3([0.0; 3]), V::Vec2([10.0, 0.5]), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },
     Row { func: "light_volume_cone_needs_depth_fail", case: "subnormal axis", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3([0.0, SUB_MAX, 0.0]), V::Vec2([10.0, 0.5]), V::F32(0.1)], expect: V::U32(1), why: "depth-fail, flushed or not" },
     Row { func: "light_volume_cone_needs_depth_fail", case: "+Inf length", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3(ZN), V::Vec2([INF, 0.5]), V::F32(0.1)], expect: V::U32(1), why: "depth-fail" },

@@ -23,14 +23,19 @@ fn light_volume_sphere_needs_depth_fail(center: vec3<f32>, radius: f32, near_cor
         || !light_volume_finite(near_corner_distance) || radius < 0.0 || near_corner_distance < 0.0) {
         return 1u;
     }
+    // A reach beyond f32 (r + rho overflows) touches every finite centre.
+    let sum = radius + near_corner_distance;
+    if (!light_volume_finite(sum)) {
+        return 1u;
+    }
     // Scale by the largest magnitude so the squares cannot overflow.
     let a = abs(center);
-    let s = max(max(a.x, max(a.y, a.z)), radius + near_corner_distance);
+    let s = max(max(a.x, max(a.y, a.z)), sum);
     if (s == 0.0 || bitcast<u32>(s) < 0x00800000u) {
         return 1u;
     }
     let c = center / s;
-    let reach = (radius + near_corner_distance) / s;
+    let reach = sum / s;
     return select(0u, 1u, dot(c, c) <= reach * reach * (1.0 + 16.0 * LIGHT_VOLUME_U));
 }
 
@@ -51,6 +56,23 @@ fn light_volume_cone_needs_depth_fail(apex: vec3<f32>, axis: vec3<f32>, range_ta
         || k < 0.0 || near_corner_distance < 0.0 || bitcast<u32>(am) < 0x00800000u) {
         return 1u;
     }
+    // One power of two scales every length so the largest lies in [1, 4): squares then neither
+    // underflow nor overflow, and wherever they did not the decision is unchanged (each step is
+    // homogeneous in the lengths, and power-of-two scaling is exact).
+    let ap = abs(apex);
+    let big = max(max(max(ap.x, ap.y), max(ap.z, h)), max(h * k, near_corner_distance));
+    if (big == 0.0 || !light_volume_finite(big)) {
+        return 1u; // the apex at the eye, or h·tan beyond f32
+    }
+    let sc = bitcast<f32>(max(254u - ((bitcast<u32>(big) >> 23u) & 0xffu), 1u) << 23u);
+    return light_volume_cone_scaled(apex * sc, axis, h * sc, k, near_corner_distance * sc);
+}
+
+// The cone test of light_volume_cone_needs_depth_fail on lengths already scaled to [1, 4).
+fn light_volume_cone_scaled(apex: vec3<f32>, axis: vec3<f32>, h: f32, k: f32,
+                            near_corner_distance: f32) -> u32 {
+    let aa = abs(axis);
+    let am = max(aa.x, max(aa.y, aa.z));
     let d = (axis / am) * inverseSqrt(dot(axis / am, axis / am));
     let p = -apex; // the eye relative to the apex
     let t = dot(p, d);
@@ -241,15 +263,19 @@ fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
 
 // Spot cone factor: 0 outside cos_outer, 1 inside cos_inner, linear in the cosine between.
 // cos_angle is the cosine between the spot axis and the direction from the light to the surface.
-// Bad input: NaN/Inf → 0; cos_inner <= cos_outer gives a hard edge at cos_outer.
+// Bad input: NaN/Inf → 0; cosines outside [-1, 1] are clamped to it first (so no difference
+// overflows); cos_inner <= cos_outer gives a hard edge at cos_outer.
 fn lpp_spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
     if (!lpp_finite(cos_angle) || !lpp_finite(cos_outer) || !lpp_finite(cos_inner)) {
         return 0.0;
     }
-    if (cos_inner <= cos_outer) {
-        return select(0.0, 1.0, cos_angle >= cos_outer);
+    let c = clamp(cos_angle, -1.0, 1.0);
+    let outer = clamp(cos_outer, -1.0, 1.0);
+    let inner = clamp(cos_inner, -1.0, 1.0);
+    if (inner <= outer) {
+        return select(0.0, 1.0, c >= outer);
     }
-    return clamp((cos_angle - cos_outer) / (cos_inner - cos_outer), 0.0, 1.0);
+    return clamp((c - outer) / (inner - outer), 0.0, 1.0);
 }
 
 // N·L·att (the diffuse weight) and the specular cosine (N·H for Blinn-Phong, R·V for Phong),
@@ -392,16 +418,15 @@ fn oct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
 }
 
 // The exact integer direction code (u, v) stands for (see the header); its L1 norm is M.
+// Branch-free: the fold is a select between exact integer vectors.
 fn oct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
     let mi = i32(m);
-    let a = 2 * i32(uv.x) - mi;
-    let b = 2 * i32(uv.y) - mi;
-    let z = mi - abs(a) - abs(b);
-    if (z >= 0) {
-        return vec3<i32>(a, b, z);
-    }
-    // a and b are odd (M is odd), never zero, so sign() is +-1.
-    return vec3<i32>((mi - abs(b)) * sign(a), (mi - abs(a)) * sign(b), z);
+    let ab = 2 * vec2<i32>(uv) - vec2<i32>(mi);
+    let aab = abs(ab);
+    let z = mi - aab.x - aab.y;
+    // Folded when z < 0: then a and b are odd (M is odd), never zero, so sign() is +-1.
+    let folded = (vec2<i32>(mi) - aab.yx) * sign(ab);
+    return vec3<i32>(select(ab, folded, z < 0), z);
 }
 
 // sin^2 of the angle between s and the direction of code uv: |s x D|^2 / |D|^2, up to the common
@@ -410,28 +435,33 @@ fn oct_sin2(s: vec3<f32>, uv: vec2<u32>, m: u32) -> f32 {
     let d = oct_lattice(uv, m);
     let ad = vec3<u32>(abs(d));
     // |D|^2 <= M^2 < 2^32: exact in u32, one rounding to f32.
-    let len2 = f32(ad.x * ad.x + ad.y * ad.y + ad.z * ad.z);
+    let sq = ad * ad;
+    let len2 = f32(sq.x + sq.y + sq.z);
     let x = cross(s, vec3<f32>(d));
     return dot(x, x) / len2;
 }
 
 // The survey's precise encoder: of the four codes around the continuous coordinates (floor and
 // floor + 1 per axis), the one whose decoded direction is closest to s. Candidates are tried in
-// the order (0,0), (1,0), (0,1), (1,1); a later one wins only if strictly closer.
+// the order (0,0), (1,0), (0,1), (1,1); a later one wins only if strictly closer. Straight-line
+// (no loop, no variables): each later candidate replaces the best so far through a select.
 fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
     let m = (1u << bits) - 1u;
     let s = oct_sanitize(n).xyz;
-    let base = min(vec2<u32>(floor(oct_continuous(s, m))), vec2<u32>(m - 1u));
-    var best = base;
-    var best_s2 = oct_sin2(s, base, m);
-    for (var k = 1u; k < 4u; k++) {
-        let cand = base + vec2<u32>(k & 1u, k >> 1u);
-        let s2 = oct_sin2(s, cand, m);
-        if (s2 < best_s2) {
-            best = cand;
-            best_s2 = s2;
-        }
-    }
+    let c00 = min(vec2<u32>(floor(oct_continuous(s, m))), vec2<u32>(m - 1u));
+    let c10 = c00 + vec2<u32>(1u, 0u);
+    let c01 = c00 + vec2<u32>(0u, 1u);
+    let c11 = c00 + vec2<u32>(1u);
+    let s00 = oct_sin2(s, c00, m);
+    let s10 = oct_sin2(s, c10, m);
+    let t10 = s10 < s00;
+    let b1 = select(c00, c10, t10);
+    let s1 = select(s00, s10, t10);
+    let s01 = oct_sin2(s, c01, m);
+    let t01 = s01 < s1;
+    let b2 = select(b1, c01, t01);
+    let s2 = select(s1, s01, t01);
+    let best = select(b2, c11, oct_sin2(s, c11, m) < s2);
     return best.x | (best.y << bits);
 }
 

@@ -10,6 +10,7 @@
 //! - SPIR-V instructions: [`prepass::wgsl::spirv_instruction_count`] (callees included).
 
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
+use crate::peers::{self, Point};
 use crate::plot::{Chart, Labelled, Scatter};
 use crate::variant::{TimedArg, TwinTimer, Variant, twin_timer};
 use prepass::harness::{Arg, MIN_TIMED_INVOCATIONS, TimingMethod};
@@ -138,7 +139,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     ctx.line("| family | variant | bits | max error | mean error | RMS error | unit | error measured | GPU ns/eval | GPU gross ns | CPU ns/call | SPIR-V instr. |");
     ctx.line("|---|---|---|---|---|---|---|---|---|---|---|---|");
     let mut csv = String::from(
-        "family,variant,bits,unit,max_error,mean_error,rms_error,error_measured,gpu_ns_per_eval,gpu_gross_ns_per_eval,gpu_timing_method,cpu_ns_per_call,spirv_instructions\n",
+        "family,variant,bits,unit,max_error,mean_error,rms_error,error_measured,gpu_ns_per_eval,gpu_gross_ns_per_eval,gpu_timing_method,cpu_ns_per_call,spirv_instructions,peer\n",
     );
     let opt = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v}"));
     for (v, c) in variants.iter().zip(&costs) {
@@ -166,7 +167,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         ));
         let _ = writeln!(
             csv,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             csv_field(v.family),
             csv_field(&v.name),
             v.bits,
@@ -180,6 +181,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             method.map_or(String::new(), |m| format!("{m}")),
             opt(c.cpu_ns),
             c.spirv.map_or(String::new(), |s| s.to_string()),
+            v.name.starts_with(peers::PREFIX),
         );
     }
     ctx.line("");
@@ -228,6 +230,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
                 let y = v.error?.max;
                 let x = pick(c)?;
                 Some(Labelled {
+                    peer: v.name.starts_with(peers::PREFIX),
                     label: if y == 0.0 {
                         format!("{} (max error 0, drawn at {})", v.name, num(floor))
                     } else {
@@ -268,5 +271,86 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             &format!("Pareto: {family}"),
         )?;
     }
+    dominance_section(ctx, &variants, &costs);
     Ok(())
+}
+
+/// The dominance check: for each shipped variant of a family with peers, the peers with no more
+/// bits, max error ≤ and cost ≤ (one strictly less), on SPIR-V count and on GPU ns.
+fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
+    let with_peers: Vec<&str> = variants
+        .iter()
+        .filter(|v| v.name.starts_with(peers::PREFIX))
+        .map(|v| v.family)
+        .collect();
+    if with_peers.is_empty() {
+        return;
+    }
+    let points = |cost: fn(&Costs) -> Option<f64>| -> Vec<Point> {
+        variants
+            .iter()
+            .zip(costs)
+            .filter(|(v, _)| with_peers.contains(&v.family))
+            .filter_map(|(v, c)| {
+                Some(Point {
+                    family: v.family.to_string(),
+                    name: v.name.clone(),
+                    bits: v.bits,
+                    max_error: v.error?.max,
+                    max_error_upper: v.error_upper.map(|e| e.max),
+                    upper_only: v.upper_only,
+                    cost: cost(c)?,
+                })
+            })
+            .collect()
+    };
+    let spirv = peers::dominance(&points(|c| c.spirv.map(|s| s as f64)));
+    let gpu = peers::dominance(&points(|c| c.gpu_ns));
+    ctx.line("### Does a peer dominate a shipped function?");
+    ctx.line("");
+    ctx.line(
+        "A peer dominates a shipped function of its family when it stores no more bits, its max \
+         error is no larger and its cost no larger, one of the two strictly smaller; a \
+         hemisphere-only encoding is compared with the peer's error over z ≥ 0. Cost: SPIR-V \
+         instructions (static, device-independent) and GPU ns/eval (net).",
+    );
+    if ctx.gpu().is_some_and(|g| g.is_software()) {
+        ctx.line("");
+        ctx.line(
+            "**GPU ns here come from a software adapter: they are CPU timings of the shaders and \
+             say nothing about a GPU**; the GPU-ns column ranks the functions on this CPU only, \
+             and the timings vary between runs by more than the closest gaps.",
+        );
+    }
+    if ctx.opts.quick {
+        ctx.line("");
+        ctx.line(
+            "Quick runs leave the `_fast` and hemi-octahedral variants out of the cost table, so \
+             out of this table too; `tests/errplot_peers.rs` checks the SPIR-V-count dominance \
+             of every shipped function and the README lists each dominated one with its reason.",
+        );
+    }
+    ctx.line("");
+    ctx.line(
+        "| family | shipped function | dominated on SPIR-V count by | dominated on GPU ns by |",
+    );
+    ctx.line("|---|---|---|---|");
+    for v in variants
+        .iter()
+        .filter(|v| with_peers.contains(&v.family) && peers::is_shipped(&v.name))
+    {
+        let find = |list: &[(String, Vec<String>)]| match list.iter().find(|(n, _)| *n == v.name) {
+            None => NEEDS_ADAPTER.to_string(),
+            Some((_, d)) if d.is_empty() => "none".to_string(),
+            Some((_, d)) => d.join(", "),
+        };
+        ctx.line(format!(
+            "| {} | `{}` | {} | {} |",
+            v.family,
+            v.name,
+            find(&spirv),
+            find(&gpu)
+        ));
+    }
+    ctx.line("");
 }

@@ -93,6 +93,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             bits: 24,
             error: ctx.gpu().map(|_| stats),
             error_from: format!("adapter: 2^24 codes × {} channel cases", cases.len()),
+            upper_only: false,
+            error_upper: None,
             wgsl: Some(Wgsl {
                 source: src.clone(),
                 function: f.into(),
@@ -188,6 +190,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             } else {
                 "adapter: all 2^24 codes".into()
             },
+            upper_only: false,
+            error_upper: None,
             wgsl: Some(Wgsl {
                 source: src.clone(),
                 function: f.into(),

@@ -65,7 +65,8 @@ pub const CSV_FILES: &[(&str, &str, &str)] = &[
          mean_error, rms_error (empty when they need an adapter), error_measured (where, over \
          what), gpu_ns_per_eval (net of the empty-kernel baseline), gpu_gross_ns_per_eval, \
          gpu_timing_method, cpu_ns_per_call (Rust twin, net of an empty loop), \
-         spirv_instructions (naga SPIR-V, callees included)",
+         spirv_instructions (naga SPIR-V, callees included), peer (true for a baseline from \
+         another project, `tests/baselines/peer_*.wgsl`; its variant starts with `peer:`)",
     ),
 ];
 

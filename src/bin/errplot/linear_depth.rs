@@ -3,6 +3,7 @@
 //! cost-table variants.
 
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
+use crate::peers;
 use crate::plot::{Chart, LineChart, Series};
 use crate::variant::{TimedArg, Variant, Wgsl, twin_timer};
 use prepass::depth24::DEPTH24_MAX;
@@ -252,6 +253,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             bits: 24,
             error: Some(stats),
             error_from: format!("{place}: all 2^24 codes, near {NEAR} m"),
+            upper_only: false,
+            error_upper: None,
             wgsl: Some(Wgsl {
                 source: src.clone(),
                 function: function.into(),
@@ -260,6 +263,128 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             twin: Some(twin),
         });
     }
+    peer_variants(ctx, near, far, &tile)
+}
+
+/// The depth peers, on the adapter: LYGIA's two forms in the D24 family above; Bevy's
+/// `−near/d` beside the shipped reversed-Z forms with an infinite far plane, in a family of its
+/// own (float depths from [`peers::reversed_depths`]). No Rust twins for the peers.
+fn peer_variants(ctx: &mut Ctx, near: f32, far: f32, tile: &[u32]) -> Result<(), String> {
+    let Some(g) = ctx.gpu() else {
+        return Ok(());
+    };
+    let mut pushes = Vec::new();
+    for p in &peers::DEPTH24_PEERS {
+        let stats = peers::depth24_errors(g, p, near, far)?;
+        pushes.push(Variant {
+            family: "view distance from a standard-Z D24 code, far/near 1e5",
+            unit: "relative",
+            name: format!("{}{}", peers::PREFIX, p.name),
+            bits: 24,
+            error: Some(stats),
+            error_from: format!("adapter: all 2^24 codes, near {NEAR} m"),
+            upper_only: false,
+            error_upper: None,
+            wgsl: Some(Wgsl {
+                source: peers::LYGIA.into(),
+                function: p.function.into(),
+                args: vec![
+                    TimedArg::Column(tile.to_vec()),
+                    TimedArg::Splat([near.to_bits(), 0, 0, 0]),
+                    TimedArg::Splat([far.to_bits(), 0, 0, 0]),
+                ],
+            }),
+            twin: None,
+        });
+    }
+    // Reversed-Z, infinite far: the shipped forms and Bevy's on the same float depths.
+    let family = "view distance from a reversed-Z f32 depth, infinite far";
+    let z = peers::reversed_depths(1 << 20);
+    let z_tile: Vec<u32> = z.iter().step_by(16).map(|x| x.to_bits()).collect();
+    let inf = f32::INFINITY;
+    let k = [near, 1.0, 0.0];
+    let z_col = Arg::column(&z);
+    let shipped: [(&str, Vec<Arg>, Vec<TimedArg>); 2] = [
+        (
+            "view_z_from_reversed_depth",
+            vec![z_col, Arg::splat_f32(near), Arg::splat_f32(inf)],
+            vec![
+                TimedArg::Column(z_tile.clone()),
+                TimedArg::Splat([near.to_bits(), 0, 0, 0]),
+                TimedArg::Splat([inf.to_bits(), 0, 0, 0]),
+            ],
+        ),
+        (
+            "view_z_from_reversed_depth_consts",
+            vec![z_col, Arg::splat_vec(&k)],
+            vec![
+                TimedArg::Column(z_tile.clone()),
+                TimedArg::Splat([near.to_bits(), 1f32.to_bits(), 0, 0]),
+            ],
+        ),
+    ];
+    for (function, args, timed) in shipped {
+        let out = g
+            .kernel(prepass::wgsl::LINEAR_DEPTH, function)
+            .and_then(|kern| kern.run(&args, z.len() as u64))
+            .map_err(|e| format!("{function}: {e}"))?;
+        let twin: crate::variant::TwinTimer = if function == "view_z_from_reversed_depth" {
+            twin_timer(
+                z_tile.iter().map(|&b| f32::from_bits(b)).collect(),
+                move |x| ld::view_z_from_reversed_depth(x, near, inf),
+            )
+        } else {
+            let kc = prepass::projection::ReversedDepthConsts {
+                near,
+                one_minus_near_over_far: 1.0,
+                near_over_far: 0.0,
+            };
+            twin_timer(
+                z_tile.iter().map(|&b| f32::from_bits(b)).collect(),
+                move |x| ld::view_z_from_reversed_depth_consts(x, kc),
+            )
+        };
+        pushes.push(Variant {
+            family,
+            unit: "relative",
+            name: function.into(),
+            bits: 0,
+            error: Some(peers::reversed_errors(&z, out.as_f32(), near, false)),
+            error_from: format!("adapter: 2^20 depths in [2^-20, 1], near {NEAR} m"),
+            upper_only: false,
+            error_upper: None,
+            wgsl: Some(Wgsl {
+                source: prepass::wgsl::LINEAR_DEPTH.into(),
+                function: function.into(),
+                args: timed,
+            }),
+            twin: Some(twin),
+        });
+    }
+    let out = g
+        .kernel(peers::BEVY, "peer_bevy_view_z_reversed_infinite")
+        .and_then(|kern| kern.run(&[z_col, Arg::splat_f32(near)], z.len() as u64))
+        .map_err(|e| format!("peer_bevy_view_z_reversed_infinite: {e}"))?;
+    pushes.push(Variant {
+        family,
+        unit: "relative",
+        name: format!("{}bevy −near/d (negated)", peers::PREFIX),
+        bits: 0,
+        error: Some(peers::reversed_errors(&z, out.as_f32(), near, true)),
+        error_from: format!("adapter: 2^20 depths in [2^-20, 1], near {NEAR} m"),
+        upper_only: false,
+        error_upper: None,
+        wgsl: Some(Wgsl {
+            source: peers::BEVY.into(),
+            function: "peer_bevy_view_z_reversed_infinite".into(),
+            args: vec![
+                TimedArg::Column(z_tile),
+                TimedArg::Splat([near.to_bits(), 0, 0, 0]),
+            ],
+        }),
+        twin: None,
+    });
+    ctx.variants.extend(pushes);
     Ok(())
 }
 

@@ -27,6 +27,7 @@ mod files;
 mod linear_depth;
 mod lpp;
 mod normal;
+mod peers;
 mod plot;
 mod roughness;
 mod variant;

@@ -3,6 +3,7 @@
 //! and each encoder and decoder as a cost-table variant.
 
 use crate::ctx::{Ctx, num};
+use crate::peers;
 use crate::plot::{Bin, Chart, ErrorImage, Histogram};
 use crate::variant::{TimedArg, Variant, Wgsl, twin_timer};
 use glam::Vec3;
@@ -202,6 +203,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             bits: codec.bits,
             error: Some(s),
             error_from: format!("{place}: {n} Fibonacci directions, round trip"),
+            upper_only,
+            error_upper: None,
             wgsl: Some(Wgsl {
                 source: codec.source.into(),
                 function: codec.encode.into(),
@@ -219,6 +222,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             bits: codec.bits,
             error: Some(s),
             error_from: format!("{place}: {n} Fibonacci directions, round trip"),
+            upper_only,
+            error_upper: None,
             wgsl: Some(Wgsl {
                 source: codec.source.into(),
                 function: codec.decode.into(),
@@ -226,6 +231,81 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             }),
             twin: Some(twin_timer(codes, dec)),
         });
+    }
+    peer_variants(ctx, &dirs, &tile_dirs)
+}
+
+/// The peer codecs (`crate::peers::NORMAL_PEERS`) on the same directions, on the adapter: a
+/// table, and each encoder and decoder as a cost-table variant (no Rust twin: CPU ns "—").
+fn peer_variants(ctx: &mut Ctx, dirs: &[[f32; 3]], tile_dirs: &[[f32; 3]]) -> Result<(), String> {
+    let n = dirs.len();
+    ctx.line("### Peers on the same directions");
+    ctx.line("");
+    let Some(g) = ctx.gpu() else {
+        ctx.line(format!(
+            "The peers (`tests/baselines/peer_*.wgsl`) have no Rust twin: {}.",
+            crate::ctx::NEEDS_ADAPTER
+        ));
+        ctx.line("");
+        return Ok(());
+    };
+    let mut rows = Vec::new();
+    for p in &peers::NORMAL_PEERS {
+        let rt = peers::normal_round_trip(g, p, dirs)?;
+        let timing = peers::normal_round_trip(g, p, tile_dirs)?.codes;
+        rows.push((p, rt, timing));
+    }
+    ctx.line(format!(
+        "Baselines from other projects, re-implemented in WGSL from their descriptions \
+         (`tests/baselines/peer_*.wgsl`), encoded and decoded on the adapter over the same {n} \
+         Fibonacci directions. Their rows in the cost table start with `{}`.",
+        peers::PREFIX
+    ));
+    ctx.line("");
+    ctx.line("| peer | bits | mean error (°) | max error (°) | max error, z ≥ 0 (°) |");
+    ctx.line("|---|---|---|---|---|");
+    for (p, rt, _) in &rows {
+        ctx.line(format!(
+            "| {} | {} | {} | {} | {} |",
+            p.name,
+            p.bits,
+            num(rt.error.mean()),
+            num(rt.error.max),
+            num(rt.error_upper.max)
+        ));
+    }
+    ctx.line("");
+    let dir_words: Vec<u32> = tile_dirs.iter().flatten().map(|x| x.to_bits()).collect();
+    for (p, rt, timing) in rows {
+        for (family, function, args) in [
+            (
+                "normal encoding: encode",
+                p.encode,
+                vec![TimedArg::Column(dir_words.clone())],
+            ),
+            (
+                "normal encoding: decode",
+                p.decode,
+                vec![TimedArg::Column(timing.clone())],
+            ),
+        ] {
+            ctx.variants.push(Variant {
+                family,
+                unit: "degrees",
+                name: format!("{}{}", peers::PREFIX, p.name),
+                bits: p.bits,
+                error: Some(rt.error),
+                error_from: format!("adapter: {n} Fibonacci directions, round trip"),
+                upper_only: false,
+                error_upper: Some(rt.error_upper),
+                wgsl: Some(Wgsl {
+                    source: p.source.into(),
+                    function: function.into(),
+                    args,
+                }),
+                twin: None,
+            });
+        }
     }
     Ok(())
 }

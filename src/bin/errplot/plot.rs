@@ -57,6 +57,9 @@ pub struct LineChart {
 /// One point of a scatter chart, with a label drawn beside it.
 #[derive(Clone, Debug)]
 pub struct Labelled {
+    /// A peer (a baseline from another project): drawn as a cross, shipped points as filled
+    /// shapes.
+    pub peer: bool,
     /// Text beside the point.
     pub label: String,
     /// Position.
@@ -285,27 +288,26 @@ fn scatter<DB: DrawingBackend>(c: &Scatter, root: &DrawingArea<DB, Shift>) -> Dr
         .x_label_formatter(&tick)
         .y_label_formatter(&tick)
         .draw()?;
-    // Markers differ in shape as well as colour: variants with equal cost and error coincide.
-    for (k, p) in c.points.iter().enumerate() {
+    // Every point has its own (colour, marker) pair: shipped points are filled shapes, the
+    // colour cycling fastest and the shape changing after each round of colours; peers are
+    // crosses (× then +), numbered separately. Variants with equal cost and error coincide,
+    // so the sizes also differ.
+    let (mut shipped, mut peers) = (0usize, 0usize);
+    for p in &c.points {
         if !(p.x > 0.0 && p.y > 0.0 && p.x.is_finite() && p.y.is_finite()) {
             continue;
         }
-        let col = colour(k);
-        let size = 12 - 2 * (k % 4) as i32;
-        let marker = move |(x, y): (f64, f64), style: ShapeStyle| {
-            EmptyElement::at((x, y)) + Rectangle::new([(-size, -size), (size, size)], style)
-        };
-        let style = if k % 2 == 0 {
-            col.filled()
-        } else {
-            col.stroke_width(3)
-        };
+        let k = if p.peer { &mut peers } else { &mut shipped };
+        let (col, shape) = marker_style(*k, p.peer);
+        // Sizes step down with the index, so coinciding points stay visible around each other.
+        let size = 13 - 2 * (*k % 4) as i32;
+        *k += 1;
         chart
-            .draw_series(std::iter::once(marker((p.x, p.y), style)))?
+            .draw_series(std::iter::once(
+                Marker::new(shape, size, col).at((p.x, p.y)),
+            ))?
             .label(&p.label)
-            .legend(move |(x, y)| {
-                EmptyElement::at((x + 8, y)) + Rectangle::new([(-6, -6), (6, 6)], style)
-            });
+            .legend(move |(x, y)| Marker::new(shape, 6, col).at((x + 8, y)));
     }
     chart
         .configure_series_labels()
@@ -316,6 +318,106 @@ fn scatter<DB: DrawingBackend>(c: &Scatter, root: &DrawingArea<DB, Shift>) -> Dr
         .draw()?;
     Ok(())
 }
+
+/// Marker shapes of the scatter charts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Shape {
+    Square,
+    Circle,
+    Triangle,
+    Diamond,
+    Cross,
+    Plus,
+}
+
+/// The colour and shape of the `k`-th shipped point or the `k`-th peer: the colour cycles
+/// through the palette's eight, the shape steps after each cycle, so no two points of one chart
+/// share both (for up to 32 shipped points and 16 peers).
+fn marker_style(k: usize, peer: bool) -> (RGBColor, Shape) {
+    const SHIPPED: [Shape; 4] = [
+        Shape::Square,
+        Shape::Circle,
+        Shape::Triangle,
+        Shape::Diamond,
+    ];
+    const PEER: [Shape; 2] = [Shape::Cross, Shape::Plus];
+    let shape = if peer {
+        PEER[(k / 8) % PEER.len()]
+    } else {
+        SHIPPED[(k / 8) % SHIPPED.len()]
+    };
+    (colour(k), shape)
+}
+
+/// One marker of a scatter chart, centred on its coordinate.
+struct Marker {
+    shape: Shape,
+    size: i32,
+    colour: RGBColor,
+}
+
+impl Marker {
+    fn new(shape: Shape, size: i32, colour: RGBColor) -> Self {
+        Marker {
+            shape,
+            size,
+            colour,
+        }
+    }
+
+    /// The marker as one element type for every shape (so the chart and its legend take it
+    /// alike): a filled polygon plus two strokes; crosses have a one-pixel polygon, filled shapes
+    /// stroke their own outline.
+    fn at<C: Clone, DB: DrawingBackend>(self, at: C) -> MarkerElement<C, DB> {
+        let (s, col) = (self.size, self.colour);
+        let fill: Vec<(i32, i32)> = match self.shape {
+            Shape::Square => vec![(-s, -s), (s, -s), (s, s), (-s, s)],
+            Shape::Circle => (0..16)
+                .map(|k| {
+                    let t = f64::from(k) / 16.0 * std::f64::consts::TAU;
+                    (
+                        (f64::from(s) * t.cos()) as i32,
+                        (f64::from(s) * t.sin()) as i32,
+                    )
+                })
+                .collect(),
+            Shape::Triangle => vec![(0, -s), (s, s), (-s, s)],
+            Shape::Diamond => vec![(0, -s), (s, 0), (0, s), (-s, 0)],
+            Shape::Cross | Shape::Plus => vec![(0, 0)],
+        };
+        let (a, b) = match self.shape {
+            Shape::Cross => (vec![(-s, -s), (s, s)], vec![(-s, s), (s, -s)]),
+            Shape::Plus => (vec![(-s, 0), (s, 0)], vec![(0, -s), (0, s)]),
+            _ => {
+                let mut outline = fill.clone();
+                outline.push(fill[0]);
+                (outline, vec![(0, 0)])
+            }
+        };
+        let width = if matches!(self.shape, Shape::Cross | Shape::Plus) {
+            3
+        } else {
+            1
+        };
+        EmptyElement::at(at)
+            + Polygon::new(fill, col.filled())
+            + PathElement::new(a, col.stroke_width(width))
+            + PathElement::new(b, col.stroke_width(width))
+    }
+}
+
+/// What [`Marker::at`] builds.
+type MarkerElement<C, DB> = plotters::element::ComposedElement<
+    C,
+    DB,
+    Polygon<(i32, i32)>,
+    plotters::element::ComposedElement<
+        (i32, i32),
+        DB,
+        PathElement<(i32, i32)>,
+        PathElement<(i32, i32)>,
+    >,
+>;
 
 /// Viridis-like ramp: dark blue (low) through green to yellow (high).
 fn ramp(t: f64) -> RGBColor {

@@ -130,6 +130,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             bits: 8,
             error: Some(r.relative),
             error_from: format!("adapter: every f32 power in [1, {max_power}]"),
+            upper_only: false,
+            error_upper: None,
             wgsl: Some(Wgsl {
                 source,
                 function: function.into(),

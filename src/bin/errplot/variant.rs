@@ -51,7 +51,8 @@ pub struct Variant {
     pub family: &'static str,
     /// Unit of the error columns.
     pub unit: &'static str,
-    /// Function name.
+    /// Function name; a peer's (a baseline from another project, `tests/baselines/peer_*.wgsl`)
+    /// starts with [`crate::peers::PREFIX`].
     pub name: String,
     /// Bits stored per value (the encoding's size), or 0 when it stores nothing.
     pub bits: u32,
@@ -59,6 +60,11 @@ pub struct Variant {
     pub error: Option<ErrorStats>,
     /// Where and over what the error was measured.
     pub error_from: String,
+    /// The error counts directions with z ≥ 0 only (hemisphere-only normal encodings).
+    pub upper_only: bool,
+    /// Peers of normal codecs: their error over z ≥ 0, for the dominance check against an
+    /// `upper_only` variant (see [`crate::peers::dominates`]).
+    pub error_upper: Option<ErrorStats>,
     /// The WGSL to time and count (None for CPU-only variants).
     pub wgsl: Option<Wgsl>,
     /// The Rust twin's timer, if the variant has a twin.

@@ -26,11 +26,7 @@ pub struct RoundTrip {
     pub decoded: Vec<[f32; 3]>,
 }
 
-/// How far a decoded vector's length may be from 1: WGSL's `normalize` is `v·inverseSqrt(v·v)`
-/// with `inverseSqrt` 2 ULP, the dot product's 3 roundings (≤ 1.5 ULP relative to `v·v`, so
-/// ≤ 0.75 ULP on the length), and the final multiply 0.5 ULP per component: ≤ 3.25·2^-23,
-/// rounded up to 4·2^-23 (lavapipe's measured worst is listed in the README).
-pub const UNIT_TOLERANCE: f64 = 4.0 / 8_388_608.0;
+pub use crate::normal::UNIT_TOLERANCE;
 
 pub(super) fn is_unit(v: [f32; 3]) -> bool {
     let l = widen3(v).iter().map(|x| x * x).sum::<f64>().sqrt();

@@ -1,0 +1,236 @@
+//! [`DECODERS`]: any bytes in, a valid result out — depth codes, normal codes (every encoding,
+//! bit size and render-target form), log roughness.
+
+use crate::normal::{assert_unit, unorm_bytes};
+use crate::{Entry, Input};
+use glam::Vec3;
+use prepass::assert_within_abs;
+use prepass::depth24::{self, DEPTH24_MAX};
+use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
+use prepass::roughness;
+
+/// The documented per-channel rule of `depth24_from_rgb8`, stated independently: NaN → 0,
+/// otherwise a byte nearest `255·clamp(c, 0, 1)`. The function rounds the f32 product, which is
+/// within half an f32 ULP below 256 (2^-17) of the exact one, so a product just above a half
+/// may round to a tie and go to the even byte (found by this target: 0.99803925 → 254).
+#[track_caller]
+fn assert_channel(c: f32, byte: u32, context: std::fmt::Arguments<'_>) {
+    if c.is_nan() {
+        assert_eq!(byte, 0, "{context}: a NaN channel gives byte 0");
+        return;
+    }
+    let x = f64::from(c.clamp(0.0, 1.0)) * 255.0;
+    assert_within_abs!(
+        f64::from(byte),
+        x,
+        0.5 + 2f64.powi(-17),
+        "assert_channel: half a byte + the f32 product's half ULP below 256 (2^-17)",
+        "{context}"
+    );
+}
+
+/// Decoders: any bytes in, a valid result out.
+pub const DECODERS: &[Entry] = &[
+    Entry {
+        name: "depth24::depth24_from_rgb8",
+        check: |i| {
+            let rgb = i.vec3();
+            let d = depth24::depth24_from_rgb8(rgb);
+            assert!(d <= DEPTH24_MAX, "{rgb:?} → {d:#x}");
+            let bytes = [d >> 16, (d >> 8) & 0xff, d & 0xff];
+            for (c, b) in rgb.to_array().into_iter().zip(bytes) {
+                assert_channel(
+                    c,
+                    b,
+                    format_args!("{rgb:?} → {d:#x}: channel {c:?} gave byte {b}"),
+                );
+            }
+        },
+    },
+    Entry {
+        name: "depth24::depth24_from_packed",
+        check: |i| {
+            let p = i.u32();
+            let d = depth24::depth24_from_packed(p);
+            let b = p.to_le_bytes().map(u32::from);
+            assert_eq!(d, b[0] << 16 | b[1] << 8 | b[2], "{p:#x}");
+        },
+    },
+    Entry {
+        name: "depth24::hyperbolic_depth_from_depth24",
+        check: |i| {
+            let d = i.u32();
+            let z = depth24::hyperbolic_depth_from_depth24(d);
+            assert!((0.0..=1.0).contains(&z), "{d:#x} → {z:?}");
+            assert_eq!(
+                depth24::exact::nearest_code(z),
+                Some(d.min(DEPTH24_MAX)),
+                "{d:#x}"
+            );
+        },
+    },
+    Entry {
+        name: "depth24::unpack4x8unorm",
+        check: |i| {
+            let p = i.u32();
+            let c = depth24::unpack4x8unorm(p);
+            for (x, b) in c.into_iter().zip(p.to_le_bytes()) {
+                assert!((0.0..=1.0).contains(&x), "{p:#x} → {c:?}");
+                assert_eq!((x * 255.0).round() as u8, b, "{p:#x} → {c:?}");
+            }
+        },
+    },
+    Entry {
+        name: "normal::xyz8::decode_normal_xyz8",
+        check: |i| {
+            let p = i.u32();
+            let v = xyz8::decode_normal_xyz8(p);
+            assert_unit(v, format_args!("{p:#x}"));
+            assert_eq!(
+                v,
+                xyz8::decode_normal_xyz8(p & 0xff_ffff),
+                "{p:#x}: byte 3 ignored"
+            );
+        },
+    },
+    Entry {
+        name: "normal::xyz8::decode_normal_xyz8_unorm",
+        check: |i| unorm_decoder(i, xyz8::decode_normal_xyz8_unorm, xyz8::decode_normal_xyz8),
+    },
+    Entry {
+        name: "normal::xy_fp16::decode_normal_xy_fp16",
+        check: |i| {
+            let p = i.u32();
+            assert_unit(xy_fp16::decode_normal_xy_fp16(p), format_args!("{p:#x}"));
+        },
+    },
+    Entry {
+        name: "normal::xy_fp16::decode_normal_xy_fp16_unorm",
+        check: |i| {
+            unorm_decoder(
+                i,
+                xy_fp16::decode_normal_xy_fp16_unorm,
+                xy_fp16::decode_normal_xy_fp16,
+            )
+        },
+    },
+    Entry {
+        name: "normal::oct::decode_normal_oct16",
+        check: |i| code_decoder(i, oct::decode_normal_oct16, 16),
+    },
+    Entry {
+        name: "normal::oct::decode_normal_oct16_unorm",
+        check: |i| {
+            // The rg8unorm form: channels 2 and 3 do not exist (the Rust form takes them as 0).
+            let c = [i.f32(), i.f32(), 0.0, 0.0];
+            let v = oct::decode_normal_oct16_unorm(c);
+            assert_unit(v, format_args!("{c:?}"));
+            assert_eq!(v, oct::decode_normal_oct16(unorm_bytes(c)), "{c:?}");
+        },
+    },
+    Entry {
+        name: "normal::oct::decode_normal_oct24",
+        check: |i| code_decoder(i, oct::decode_normal_oct24, 24),
+    },
+    Entry {
+        name: "normal::oct::decode_normal_oct24_unorm",
+        check: |i| unorm_decoder(i, oct::decode_normal_oct24_unorm, oct::decode_normal_oct24),
+    },
+    Entry {
+        name: "normal::oct::decode_normal_oct32",
+        check: |i| code_decoder(i, oct::decode_normal_oct32, 32),
+    },
+    Entry {
+        name: "normal::oct::decode_normal_oct32_unorm",
+        check: |i| unorm_decoder(i, oct::decode_normal_oct32_unorm, oct::decode_normal_oct32),
+    },
+    Entry {
+        name: "normal::oct::decode (1..=16 bits per axis)",
+        check: |i| {
+            let bits = u32::from(i.u8() % 16) + 1;
+            let p = i.u32();
+            let v = oct::decode(p, bits);
+            assert_unit(v, format_args!("{p:#x}, {bits} bits"));
+            let mask = (1u64 << (2 * bits)) - 1;
+            assert_eq!(
+                v,
+                oct::decode(p & mask as u32, bits),
+                "{p:#x}: high bits ignored"
+            );
+        },
+    },
+    Entry {
+        name: "normal::hemioct::decode_normal_hemioct24",
+        check: |i| code_decoder(i, hemioct::decode_normal_hemioct24, 24),
+    },
+    Entry {
+        name: "normal::hemioct::decode_normal_hemioct24_unorm",
+        check: |i| {
+            unorm_decoder(
+                i,
+                hemioct::decode_normal_hemioct24_unorm,
+                hemioct::decode_normal_hemioct24,
+            )
+        },
+    },
+    Entry {
+        name: "roughness::decode_log_roughness",
+        check: |i| {
+            let (code, max_power) = (i.u32(), i.f32());
+            let p = roughness::decode_log_roughness(code, max_power);
+            // Documented: a power in [1, max_power] (max_power acts as 2^127 from 2^127 up,
+            // a degenerate range gives 1); codes above 255 decode as 255.
+            assert!(
+                p.is_finite() && p >= 1.0,
+                "{code:#x}, {max_power:?} → {p:?}"
+            );
+            let top = if max_power >= 2f32.powi(127) {
+                2f32.powi(127)
+            } else {
+                max_power
+            };
+            assert!(p <= top.max(1.0), "{code:#x}, {max_power:?} → {p:?}");
+            assert_eq!(
+                p.to_bits(),
+                roughness::decode_log_roughness(code.min(255), max_power).to_bits(),
+                "{code:#x}"
+            );
+        },
+    },
+    Entry {
+        name: "roughness::{normal_xyz8_from_log_roughness_texel, log_roughness_code_from_texel}",
+        check: |i| {
+            let t = i.u32();
+            assert_eq!(
+                roughness::normal_xyz8_from_log_roughness_texel(t),
+                t & 0xff_ffff
+            );
+            assert_eq!(roughness::log_roughness_code_from_texel(t), t >> 24);
+        },
+    },
+];
+
+/// A code decoder with `bits` bits of code: a finite unit vector for every pattern, the bits
+/// above the code ignored.
+#[track_caller]
+fn code_decoder(i: &mut Input, decode: fn(u32) -> Vec3, bits: u32) {
+    let p = i.u32();
+    let v = decode(p);
+    assert_unit(v, format_args!("{p:#x}"));
+    if bits < 32 {
+        assert_eq!(
+            v,
+            decode(p & ((1 << bits) - 1)),
+            "{p:#x}: high bits ignored"
+        );
+    }
+}
+
+/// A render-target decoder: the code decoder of the channels' bytes (`unorm_bytes`).
+#[track_caller]
+fn unorm_decoder(i: &mut Input, decode_unorm: fn([f32; 4]) -> Vec3, decode: fn(u32) -> Vec3) {
+    let c = [i.f32(), i.f32(), i.f32(), i.f32()];
+    let v = decode_unorm(c);
+    assert_unit(v, format_args!("{c:?}"));
+    assert_eq!(v, decode(unorm_bytes(c)), "{c:?}");
+}

@@ -1,0 +1,99 @@
+//! [`DIFFERENTIAL`]: the Rust twins against their exact references, within the documented
+//! bound.
+
+use crate::{Entry, projection};
+use glam::Vec3;
+use prepass::assert_within;
+use prepass::depth24::{self, DEPTH24_MAX};
+use prepass::linear_depth as ld;
+use prepass::precision::metrics::ulp_error;
+use prepass::projection::DepthConvention;
+
+/// The documented error of a linear-depth twin against its exact f64 distance: within `bound`
+/// ULP (`from` names the bound), or `+Inf` exactly where the exact distance is beyond f32's
+/// range.
+#[track_caller]
+fn assert_distance(got: f32, exact: f64, bound: f64, from: &str, context: std::fmt::Arguments<'_>) {
+    if (exact as f32).is_infinite() {
+        assert_eq!(got, f32::INFINITY, "{context}: beyond f32's range");
+        return;
+    }
+    assert_within!(ulp_error(got, exact), bound, from, "{context}");
+}
+
+/// Rust twins against their exact references, within the documented bound.
+pub const DIFFERENTIAL: &[Entry] = &[
+    Entry {
+        name: "depth24::hyperbolic_depth_from_depth24 vs exact::hyperbolic_depth",
+        check: |i| {
+            let d = i.u32();
+            let got = depth24::hyperbolic_depth_from_depth24(d);
+            let err = ulp_error(got, depth24::exact::hyperbolic_depth(d));
+            assert_within!(
+                err,
+                0.5,
+                "documented: correctly rounded, ≤ 0.5 ULP",
+                "{d:#x} → {got:?}"
+            );
+        },
+    },
+    Entry {
+        name: "depth24::depth24_from_rgb8 within ±0.49/255 vs exact code",
+        check: |i| {
+            let code = i.u32() & DEPTH24_MAX;
+            // Each channel moved by up to ±0.49 of a byte step (a signed byte scaled to ±0.49):
+            // the documented exactness region.
+            let bytes = [code >> 16, (code >> 8) & 0xff, code & 0xff];
+            let rgb = bytes.map(|b| {
+                let off = f64::from(i.u8() as i8) / 128.0 * 0.49;
+                ((f64::from(b) + off) / 255.0) as f32
+            });
+            let got = depth24::depth24_from_rgb8(Vec3::from(rgb));
+            assert_eq!(got, code, "{rgb:?}");
+        },
+    },
+    Entry {
+        name: "linear_depth::view_z_from_depth24 vs exact (linear_depth::bounds::DEPTH24_CORRECTLY_ROUNDED: the Rust twin rounds correctly)",
+        check: |i| {
+            let d = i.u32();
+            let Ok(p) = projection(i) else { return };
+            let got = ld::view_z_from_depth24(d, p.near(), p.far());
+            let e = ld::exact::view_z_from_depth24(d, p.near(), p.far());
+            assert_distance(
+                got,
+                e,
+                ld::bounds::DEPTH24_CORRECTLY_ROUNDED,
+                "linear_depth::bounds::DEPTH24_CORRECTLY_ROUNDED",
+                format_args!("{d:#x} {p:?}: {got} vs {e}"),
+            );
+        },
+    },
+    Entry {
+        name: "linear_depth::view_z_from_depth / _reversed_ vs exact (linear_depth::bounds::FLOAT_CORRECTLY_ROUNDED)",
+        check: |i| {
+            let z = i.f32();
+            let Ok(p) = projection(i) else { return };
+            if z.is_nan() {
+                return; // NaN → NaN is a decoder property, not an error bound
+            }
+            let (n, f) = (p.near(), p.far());
+            let (got, e) = match p.convention() {
+                DepthConvention::Standard => (
+                    ld::view_z_from_depth(z, n, f),
+                    ld::exact::view_z_from_depth(z, n, f),
+                ),
+                DepthConvention::Reversed => (
+                    ld::view_z_from_reversed_depth(z, n, f),
+                    ld::exact::view_z_from_reversed_depth(z, n, f),
+                ),
+            };
+            assert_distance(
+                got,
+                e,
+                ld::bounds::FLOAT_CORRECTLY_ROUNDED,
+                "linear_depth::bounds::FLOAT_CORRECTLY_ROUNDED",
+                format_args!("{z:?} {p:?}: {got} vs {e}"),
+            );
+        },
+    },
+];

@@ -1,0 +1,256 @@
+//! [`ENCODERS`]: any bit patterns in (NaN, infinities, subnormals included), no panic, the
+//! documented output — depth codes, normal codes (every encoding and bit size, precise and
+//! rounding, render-target forms), log roughness.
+
+use crate::Entry;
+use crate::normal::check_encoder;
+use glam::Vec3;
+use prepass::assert_within_abs;
+use prepass::depth24::{self, DEPTH24_MAX};
+use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
+use prepass::roughness;
+
+/// Encoders: any bit patterns in, no panic, the documented output.
+pub const ENCODERS: &[Entry] = &[
+    Entry {
+        name: "depth24::pack_depth24",
+        check: |i| {
+            let d = i.u32();
+            let p = depth24::pack_depth24(d);
+            let code = d.min(DEPTH24_MAX);
+            assert_eq!(p >> 24, 0, "{d:#x}: alpha byte must be 0");
+            assert_eq!(depth24::depth24_from_packed(p), code, "{d:#x}");
+            let [r, g, b, _] = depth24::unpack4x8unorm(p);
+            assert_eq!(
+                depth24::depth24_from_rgb8(Vec3::new(r, g, b)),
+                code,
+                "{d:#x}"
+            );
+        },
+    },
+    Entry {
+        name: "depth24::exact::nearest_code",
+        check: |i| {
+            let x = i.f32();
+            match depth24::exact::nearest_code(x) {
+                None => assert!(!(0.0..=1.0).contains(&x), "{x:?} has a code"),
+                Some(c) => {
+                    assert!(
+                        (0.0..=1.0).contains(&x) && c <= DEPTH24_MAX,
+                        "{x:?} → {c:#x}"
+                    );
+                    // x·(2^24 − 1) is exact in f64 (24 × 24 significand bits).
+                    let t = f64::from(x) * f64::from(DEPTH24_MAX);
+                    assert_within_abs!(
+                        f64::from(c),
+                        t,
+                        0.5,
+                        "the nearest code: half a code of the exact x·(2^24 − 1)",
+                        "{x:?} → {c:#x}"
+                    );
+                }
+            }
+        },
+    },
+    Entry {
+        name: "depth24::exact::hyperbolic_depth",
+        check: |i| {
+            let d = i.u32();
+            let z = depth24::exact::hyperbolic_depth(d);
+            assert!((0.0..=1.0).contains(&z), "{d:#x} → {z:?}");
+        },
+    },
+    Entry {
+        name: "normal::xyz8::encode_normal_xyz8",
+        check: |i| check_encoder(i.vec3(), xyz8::encode_normal_xyz8, 24),
+    },
+    Entry {
+        name: "normal::xyz8::encode_normal_xyz8_unorm",
+        check: |i| {
+            unorm_form(
+                i.vec3(),
+                xyz8::encode_normal_xyz8_unorm,
+                xyz8::encode_normal_xyz8,
+            )
+        },
+    },
+    Entry {
+        name: "normal::xy_fp16::encode_normal_xy_fp16",
+        check: |i| check_encoder(i.vec3(), xy_fp16::encode_normal_xy_fp16, 32),
+    },
+    Entry {
+        name: "normal::xy_fp16::encode_normal_xy_fp16_unorm",
+        check: |i| {
+            unorm_form(
+                i.vec3(),
+                xy_fp16::encode_normal_xy_fp16_unorm,
+                xy_fp16::encode_normal_xy_fp16,
+            )
+        },
+    },
+    Entry {
+        name: "normal::oct::encode_normal_oct16",
+        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct16, 16),
+    },
+    Entry {
+        name: "normal::oct::encode_normal_oct16_fast",
+        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct16_fast, 16),
+    },
+    Entry {
+        name: "normal::oct::encode_normal_oct16_unorm",
+        check: |i| {
+            unorm_form(
+                i.vec3(),
+                oct::encode_normal_oct16_unorm,
+                oct::encode_normal_oct16,
+            )
+        },
+    },
+    Entry {
+        name: "normal::oct::encode_normal_oct24",
+        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct24, 24),
+    },
+    Entry {
+        name: "normal::oct::encode_normal_oct24_fast",
+        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct24_fast, 24),
+    },
+    Entry {
+        name: "normal::oct::encode_normal_oct24_unorm",
+        check: |i| {
+            unorm_form(
+                i.vec3(),
+                oct::encode_normal_oct24_unorm,
+                oct::encode_normal_oct24,
+            )
+        },
+    },
+    Entry {
+        name: "normal::oct::encode_normal_oct32",
+        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct32, 32),
+    },
+    Entry {
+        name: "normal::oct::encode_normal_oct32_fast",
+        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct32_fast, 32),
+    },
+    Entry {
+        name: "normal::oct::encode_normal_oct32_unorm",
+        check: |i| {
+            unorm_form(
+                i.vec3(),
+                oct::encode_normal_oct32_unorm,
+                oct::encode_normal_oct32,
+            )
+        },
+    },
+    Entry {
+        name: "normal::oct::{encode_precise, encode_round} (1..=16 bits per axis)",
+        check: |i| {
+            let bits = u32::from(i.u8() % 16) + 1;
+            let n = i.vec3();
+            // Non-capturing closures cannot take `bits`: one entry per bit size is 16 entries,
+            // so the sizes are checked through the generic functions directly.
+            for (what, code, z, n2, signs) in [
+                (
+                    "encode_precise",
+                    oct::encode_precise(n, bits),
+                    oct::encode_precise(Vec3::Z, bits),
+                    oct::encode_precise(n * 2.0, bits),
+                    oct::encode_precise(crate::normal::signs(n), bits),
+                ),
+                (
+                    "encode_round",
+                    oct::encode_round(n, bits),
+                    oct::encode_round(Vec3::Z, bits),
+                    oct::encode_round(n * 2.0, bits),
+                    oct::encode_round(crate::normal::signs(n), bits),
+                ),
+            ] {
+                crate::normal::check_code(n, code, z, n2, signs, 2 * bits, what);
+            }
+        },
+    },
+    Entry {
+        name: "normal::hemioct::encode_normal_hemioct24",
+        check: |i| check_encoder(i.vec3(), hemioct::encode_normal_hemioct24, 24),
+    },
+    Entry {
+        name: "normal::hemioct::encode_normal_hemioct24_fast",
+        check: |i| check_encoder(i.vec3(), hemioct::encode_normal_hemioct24_fast, 24),
+    },
+    Entry {
+        name: "normal::hemioct::encode_normal_hemioct24_unorm",
+        check: |i| {
+            unorm_form(
+                i.vec3(),
+                hemioct::encode_normal_hemioct24_unorm,
+                hemioct::encode_normal_hemioct24,
+            )
+        },
+    },
+    Entry {
+        name: "normal::sanitize",
+        check: |i| {
+            let n = i.vec3();
+            let degenerate =
+                n.is_nan() || n.to_array().iter().all(|c| !c.is_normal() && c.is_finite());
+            match prepass::normal::sanitize(n) {
+                None => assert!(degenerate, "{n:?} is a valid direction"),
+                Some(s) => {
+                    assert!(!degenerate, "{n:?} → {s:?}");
+                    let m = s.abs().max_element();
+                    assert!((1.0..4.0).contains(&m), "{n:?} → {s:?}: largest component");
+                    assert!(
+                        s.to_array().iter().all(|c| *c == 0.0 || c.is_normal()),
+                        "{n:?} → {s:?}: subnormal left"
+                    );
+                }
+            }
+        },
+    },
+    Entry {
+        name: "roughness::encode_log_roughness",
+        check: |i| {
+            let (a, b, max_power) = (i.f32(), i.f32(), i.f32());
+            let code = roughness::encode_log_roughness(a, max_power);
+            assert!(code <= 255, "{a:?}, {max_power:?} → {code}");
+            let valid_range = !matches!(roughness::range(max_power), roughness::Range::Degenerate);
+            if a.is_nan() || !valid_range || a <= 1.0 {
+                assert_eq!(
+                    code, 0,
+                    "{a:?}, {max_power:?}: NaN, ≤ 1 or a degenerate range"
+                );
+            } else if a >= max_power.min(2f32.powi(127)) {
+                assert_eq!(code, 255, "{a:?}, {max_power:?}: ≥ max_power");
+            }
+            // Monotonic in the power.
+            if !a.is_nan() && !b.is_nan() {
+                let (lo, hi) = if a <= b { (a, b) } else { (b, a) };
+                assert!(
+                    roughness::encode_log_roughness(lo, max_power)
+                        <= roughness::encode_log_roughness(hi, max_power),
+                    "{lo:?} ≤ {hi:?} with {max_power:?}"
+                );
+            }
+        },
+    },
+    Entry {
+        name: "roughness::pack_normal_xyz8_log_roughness",
+        check: |i| {
+            let (normal, code) = (i.u32(), i.u32());
+            let t = roughness::pack_normal_xyz8_log_roughness(normal, code);
+            assert_eq!(t & 0xff_ffff, normal & 0xff_ffff, "{normal:#x} {code:#x}");
+            assert_eq!(t >> 24, code.min(255), "{normal:#x} {code:#x}");
+            assert_eq!(
+                roughness::normal_xyz8_from_log_roughness_texel(t),
+                normal & 0xff_ffff
+            );
+            assert_eq!(roughness::log_roughness_code_from_texel(t), code.min(255));
+        },
+    },
+];
+
+/// A render-target encoder: the unorm8 channels of its code's bytes.
+#[track_caller]
+fn unorm_form(n: Vec3, enc_unorm: fn(Vec3) -> [f32; 4], enc: fn(Vec3) -> u32) {
+    assert_eq!(enc_unorm(n), depth24::unpack4x8unorm(enc(n)), "{n:?}");
+}
