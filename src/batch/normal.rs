@@ -325,15 +325,7 @@ fn xy_fp16_encode_lane(n: Vec3) -> u32 {
 
 #[inline(always)]
 fn xy_fp16_decode_lane(p: u32) -> Vec3 {
-    let h = Vec2::new(f16_to_f32(p & 0xffff), f16_to_f32(p >> 16));
-    let h = Vec2::new(
-        if h.x.is_nan() { 0.0 } else { h.x },
-        if h.y.is_nan() { 0.0 } else { h.y },
-    );
-    let xy = h.clamp(Vec2::splat(-1.0), Vec2::splat(1.0));
-    let s = xy.x * xy.x + xy.y * xy.y;
-    let z2 = (1.0 - s).max(0.0);
-    Vec3::new(xy.x, xy.y, z2.sqrt()) / (s + z2).sqrt()
+    xy_fp16::decode_halves(Vec2::new(f16_to_f32(p & 0xffff), f16_to_f32(p >> 16)))
 }
 
 /// [`crate::depth24::unpack4x8unorm`]: `byte/255` per byte, byte 0 first.

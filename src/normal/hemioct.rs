@@ -47,16 +47,7 @@ pub fn lattice(uv: UVec2) -> IVec3 {
 }
 
 fn sin2(s: Vec3, uv: UVec2) -> f32 {
-    let d = lattice(uv);
-    let ad = d.abs().as_uvec3();
-    let len2 = (ad.x * ad.x + ad.y * ad.y + ad.z * ad.z) as f32;
-    let d = d.as_vec3();
-    let x = Vec3::new(
-        s.y * d.z - s.z * d.y,
-        s.z * d.x - s.x * d.z,
-        s.x * d.y - s.y * d.x,
-    );
-    super::dot(x, x) / len2
+    super::sin2_to(s, lattice(uv))
 }
 
 /// Precise hemi-octahedral encoder (the best of the four neighbour codes, as

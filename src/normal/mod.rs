@@ -117,6 +117,23 @@ pub(crate) fn normalize(v: Vec3) -> Vec3 {
     v / dot(v, v).sqrt()
 }
 
+/// The precise encoders' score of a candidate code with exact integer direction `d`:
+/// `|s × D|² / |D|²` (sin² of the angle between `s` and `D`, times `|s|²`), as the WGSL
+/// computes it: `|D|²` exact in integers, then one conversion; the cross product and `dot`
+/// rounded per operation.
+pub(crate) fn sin2_to(s: Vec3, d: glam::IVec3) -> f32 {
+    let ad = d.abs().as_uvec3();
+    let sq = ad * ad;
+    let len2 = (sq.x + sq.y + sq.z) as f32;
+    let d = d.as_vec3();
+    let x = Vec3::new(
+        s.y * d.z - s.z * d.y,
+        s.z * d.x - s.x * d.z,
+        s.x * d.y - s.y * d.x,
+    );
+    dot(x, x) / len2
+}
+
 /// Exact `f64` helpers shared by the encodings' references.
 pub mod exact {
     /// `v / |v|` in f64 (`None` for the zero vector).

@@ -65,17 +65,7 @@ pub fn lattice(uv: UVec2, bits: u32) -> IVec3 {
 /// `|s × D|² / |D|²` as the WGSL's `oct_sin2` computes it: the precise encoder's score
 /// (sin² of the angle to the code's direction, times `|s|²`).
 fn sin2(s: Vec3, uv: UVec2, bits: u32) -> f32 {
-    let d = lattice(uv, bits);
-    let ad = d.abs().as_uvec3();
-    let sq = ad * ad;
-    let len2 = (sq.x + sq.y + sq.z) as f32;
-    let d = d.as_vec3();
-    let x = Vec3::new(
-        s.y * d.z - s.z * d.y,
-        s.z * d.x - s.x * d.z,
-        s.x * d.y - s.y * d.x,
-    );
-    super::dot(x, x) / len2
+    super::sin2_to(s, lattice(uv, bits))
 }
 
 /// The survey's precise encoder with `bits` bits per axis (1..=16; panics otherwise, see

@@ -60,7 +60,13 @@ pub fn encode_normal_xy_fp16(n: Vec3) -> u32 {
 /// and out-of-range halves are clamped to `[−1, 1]`, and `x² + y² > 1` gives `z = 0` before
 /// normalising.
 pub fn decode_normal_xy_fp16(p: u32) -> Vec3 {
-    let h = unpack2x16float(p);
+    decode_halves(unpack2x16float(p))
+}
+
+/// [`decode_normal_xy_fp16`] from the two unpacked halves (shared with `prepass::batch`, which
+/// unpacks them its own way).
+#[inline(always)]
+pub(crate) fn decode_halves(h: Vec2) -> Vec3 {
     let h = Vec2::new(
         if h.x.is_nan() { 0.0 } else { h.x },
         if h.y.is_nan() { 0.0 } else { h.y },

@@ -314,6 +314,28 @@ fn tex_entry(binding: u32, ms: bool, depth: bool) -> wgpu::BindGroupLayoutEntry 
     }
 }
 
+/// A bind group of `views` at bindings 0, 1, … of `layout`.
+fn texture_group<'a>(
+    d: &wgpu::Device,
+    label: &str,
+    layout: &wgpu::BindGroupLayout,
+    views: impl IntoIterator<Item = &'a wgpu::TextureView>,
+) -> wgpu::BindGroup {
+    let entries: Vec<_> = views
+        .into_iter()
+        .enumerate()
+        .map(|(i, v)| wgpu::BindGroupEntry {
+            binding: i as u32,
+            resource: wgpu::BindingResource::TextureView(v),
+        })
+        .collect();
+    d.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: Some(label),
+        layout,
+        entries: &entries,
+    })
+}
+
 fn buffer_entry(
     binding: u32,
     visibility: wgpu::ShaderStages,
@@ -643,36 +665,14 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
         label: Some("gbuffer"),
         entries: &g1_entries,
     });
-    let g1 = d.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("gbuffer"),
-        layout: &g1_layout,
-        entries: &g1_views
-            .iter()
-            .enumerate()
-            .map(|(i, v)| wgpu::BindGroupEntry {
-                binding: i as u32,
-                resource: wgpu::BindingResource::TextureView(v),
-            })
-            .collect::<Vec<_>>(),
-    });
+    let g1 = texture_group(d, "gbuffer", &g1_layout, g1_views.iter().copied());
     let g2_layout = d.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("light buffers"),
         entries: &(0..light_count(cfg) as u32)
             .map(|i| tex_entry(i, ms, false))
             .collect::<Vec<_>>(),
     });
-    let g2 = d.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("light buffers"),
-        layout: &g2_layout,
-        entries: &lviews
-            .iter()
-            .enumerate()
-            .map(|(i, v)| wgpu::BindGroupEntry {
-                binding: i as u32,
-                resource: wgpu::BindingResource::TextureView(v),
-            })
-            .collect::<Vec<_>>(),
-    });
+    let g2 = texture_group(d, "light buffers", &g2_layout, &lviews);
     let empty = d.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
         label: Some("empty"),
         entries: &[],
