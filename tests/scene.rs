@@ -320,6 +320,34 @@ fn the_full_scene_is_smaller_than_its_files() {
     assert!(wgsl.len() <= hand);
 }
 
+/// What a scene's module holds, one `file kind name` line per item in composed order. The
+/// snapshot is this manifest, not the module's text: every item is copied verbatim from its file
+/// (`compose`), so the text would only repeat the shipped files, while a change in what a scene
+/// pulls in — the thing a reviewer must see — shows as a changed line here.
+fn manifest(s: &Scene) -> String {
+    let lib = Library::shipped().unwrap();
+    let roots = s.roots().unwrap();
+    let keep = lib.closure(roots.iter().copied()).unwrap();
+    let mut out = String::from("# file kind name, in composed order (tests/scene.rs)\n");
+    let mut composed = String::from("// Composed by prepass::scene from the shipped WGSL files.\n");
+    let mut file = "";
+    for item in lib.items().iter().filter(|i| keep.contains(&i.name)) {
+        out.push_str(&format!("{} {} {}\n", item.file, item.kind, item.name));
+        if item.file != file {
+            file = item.file;
+            composed.push_str(&format!("\n// ---- from wgsl/{file} ----\n"));
+        }
+        composed.push_str(&format!("\n{}\n", item.text));
+    }
+    // The manifest stands for the text only if the text is exactly these items, verbatim.
+    assert_eq!(
+        s.wgsl().unwrap(),
+        composed,
+        "the composed module is not its manifest's items copied verbatim"
+    );
+    out
+}
+
 #[test]
 fn composed_modules_match_their_snapshots() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/snapshots");
@@ -344,8 +372,8 @@ fn composed_modules_match_their_snapshots() {
     ];
     let update = std::env::var_os("UPDATE_SNAPSHOTS").is_some();
     for (name, s) in named {
-        let got = s.wgsl().unwrap();
-        let path = dir.join(format!("{name}.wgsl"));
+        let got = manifest(&s);
+        let path = dir.join(format!("{name}.txt"));
         if update {
             std::fs::write(&path, &got).unwrap();
             continue;
@@ -358,7 +386,7 @@ fn composed_modules_match_their_snapshots() {
         });
         assert_eq!(
             got, want,
-            "{name}: composed output changed (UPDATE_SNAPSHOTS=1 if intended)"
+            "{name}: the items the scene composes changed (UPDATE_SNAPSHOTS=1 if intended)"
         );
     }
 }
