@@ -7,22 +7,12 @@ mod common;
 
 use common::gpu;
 use glam::Vec3;
-use prepass::normal::xy_fp16;
+use prepass::normal::{F32_SLACK_DEG, xy_fp16};
 use prepass::sweep::normal::{
     UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, fibonacci_directions,
     killzone_myth, round_trip, stratified_codes32,
 };
 use prepass::{assert_at_least, assert_within, assert_within_abs};
-
-/// Worst case for z ≥ 0: the halves are within δ = 2^-12 of x, y (half an f16 ULP at [0.5, 1);
-/// less below), so `x'² + y'²` is within ε = 2δ(|x| + |y|) + 2δ² ≤ 2^-11·√2 + 2^-23 of `x² + y²`
-/// and the rebuilt `z` within `√ε` of `z` (|√a − √b| ≤ √|a − b|). The decoded point is then
-/// within `d = √(2δ² + ε)` of the unit input: angle ≤ asin(d) (1.506°).
-fn worst_case_upper_deg() -> f64 {
-    let delta = 2f64.powi(-12);
-    let eps = 2f64.powi(-11) * 2f64.sqrt() + 2.0 * delta * delta;
-    (2.0 * delta * delta + eps).sqrt().asin().to_degrees()
-}
 
 #[test]
 fn round_trip_upper_hemisphere_and_the_mirror_below() {
@@ -36,16 +26,15 @@ fn round_trip_upper_hemisphere_and_the_mirror_below() {
             "xy fp16 {set}: z >= 0 mean {:.6}° max {:.6}° (bound {:.4}°); all mean {:.3}° max {:.3}°",
             rt.error_upper.mean(),
             rt.error_upper.max,
-            worst_case_upper_deg(),
+            xy_fp16::max_angle_upper_deg(),
             rt.error.mean(),
             rt.error.max
         );
         common::assert_round_trip_matches_twins(set, &rt);
-        // Bound: worst_case_upper_deg plus f32 slack (a few 2^-24 rad ≈ 1e-5°).
         assert_within!(
             rt.error_upper.max,
-            worst_case_upper_deg() + 1e-5,
-            "worst_case_upper_deg() + f32 slack, a few 2^-24 rad ≈ 1e-5°",
+            xy_fp16::max_angle_upper_deg() + F32_SLACK_DEG,
+            "normal::xy_fp16::max_angle_upper_deg() + normal::F32_SLACK_DEG",
             "{set}: z >= 0 max degrees at input {}",
             rt.error_upper.argmax
         );
@@ -65,8 +54,8 @@ fn round_trip_upper_hemisphere_and_the_mirror_below() {
             assert_within_abs!(
                 got,
                 want,
-                worst_case_upper_deg() + 1e-5,
-                "comment above: the mirror's 2·asin(|z|), moved ≤ the upper bound + 1e-5°",
+                xy_fp16::max_angle_upper_deg() + F32_SLACK_DEG,
+                "the mirror's 2·asin(|z|), moved ≤ max_angle_upper_deg() + F32_SLACK_DEG (normal::xy_fp16)",
                 "{v:?}: degrees"
             );
         }
@@ -102,8 +91,8 @@ fn perspective_myth_negative_z_is_visible_and_decodes_mirrored() {
         let corner_px = (2f64.sqrt() * t * 15.0 / 16.0).atan().to_degrees();
         assert_within!(
             m.worst_error_deg,
-            m.worst_error_analytic_deg + worst_case_upper_deg(),
-            "comment above: the screen corner's 2θ + worst_case_upper_deg",
+            m.worst_error_analytic_deg + xy_fp16::max_angle_upper_deg(),
+            "comment above: the screen corner's 2θ + xy_fp16::max_angle_upper_deg()",
             "fov {fov}°: worst sampled error, degrees"
         );
         assert_at_least!(

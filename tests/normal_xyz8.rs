@@ -8,18 +8,11 @@ use common::gpu;
 use glam::Vec3;
 use prepass::assert_within;
 use prepass::harness::Arg;
-use prepass::normal::xyz8;
+use prepass::normal::{F32_SLACK_DEG, xyz8};
 use prepass::sweep::normal::{
     adversarial_directions, bad_inputs, codec, decode_codes, decode_range, fibonacci_directions,
     round_trip,
 };
-
-/// The worst case of rounding each coordinate to the byte grid: each decoded coordinate
-/// `(2b − 255)/255` is within half a step, 1/255, of the unit input's, so the decoded point is
-/// within `√3/255` of the input and the angle is at most `asin(√3/255)` (0.3892°).
-fn worst_case_deg() -> f64 {
-    (3f64.sqrt() / 255.0).asin().to_degrees()
-}
 
 #[test]
 fn round_trip_meets_target_and_twin_is_bit_identical() {
@@ -34,7 +27,7 @@ fn round_trip_meets_target_and_twin_is_bit_identical() {
             "xyz8 {set}: mean {:.6}° max {:.6}° (target {mean_t} / {max_t}, bound {:.4}°)",
             rt.error.mean(),
             rt.error.max,
-            worst_case_deg()
+            xyz8::max_angle_deg()
         );
         common::assert_round_trip_matches_twins(set, &rt);
         assert_eq!(rt.error.nan_count, 0);
@@ -42,11 +35,10 @@ fn round_trip_meets_target_and_twin_is_bit_identical() {
             rt.codes.iter().all(|p| p >> 24 == 0),
             "byte 3 must stay zero"
         );
-        // Bound: asin(√3/255) plus the f32 input/normalisation slack (a few 2^-24 rad ≈ 1e-5°).
         assert_within!(
             rt.error.max,
-            worst_case_deg() + 1e-5,
-            "worst_case_deg(), asin(√3/255), + f32 slack (a few 2^-24 rad ≈ 1e-5°)",
+            xyz8::max_angle_deg() + F32_SLACK_DEG,
+            "normal::xyz8::max_angle_deg(), asin(√3/255), + normal::F32_SLACK_DEG",
             "{set}: max degrees at input {}",
             rt.error.argmax
         );

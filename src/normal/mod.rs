@@ -29,6 +29,11 @@
 //! is normalised (or, for the scale-free octahedral map, needs no normalising).
 //! Decoders accept every bit pattern and return a finite unit vector.
 
+/// Slack added to a derived angular bound when it is compared with a measured f32 round trip,
+/// in degrees: the f32 input is normalised, encoded and decoded with a few roundings of
+/// `2^-24` rad each, which a bound derived in exact arithmetic leaves out (`1e-5°` ≈ 10·2^-24 rad).
+pub const F32_SLACK_DEG: f64 = 1e-5;
+
 /// How far a decoded vector's length may be from 1: WGSL's `normalize` is `v·inverseSqrt(v·v)`
 /// with `inverseSqrt` 2 ULP, the dot product's 3 roundings (≤ 1.5 ULP relative to `v·v`, so
 /// ≤ 0.75 ULP on the length), and the final multiply 0.5 ULP per component: ≤ 3.25·2^-23,

@@ -91,9 +91,28 @@ pub fn decode_normal_xy_fp16_unorm(c: [f32; 4]) -> Vec3 {
     decode_normal_xy_fp16(super::xyz8::unorm_bytes(c))
 }
 
+/// The worst angular error of an xy FP16 round trip for `z ≥ 0`, in degrees, derived: the halves
+/// are within `δ = 2^-12` of x, y (half an f16 ULP on [0.5, 1), less below), so `x'² + y'²` is
+/// within `ε = 2δ(|x| + |y|) + 2δ² ≤ 2^-11·√2 + 2δ²` of `x² + y²` and the rebuilt `z` within `√ε`
+/// of `z` (`|√a − √b| ≤ √|a − b|`). The decoded point is then within `d = √(2δ² + ε)` of the
+/// unit input: angle ≤ `asin(d)` (1.506°). For `z < 0` the decode is the mirror image, error
+/// `2·asin(|z|)`, moved by at most this bound. Measured round trips are checked against this plus
+/// [`super::F32_SLACK_DEG`].
+pub fn max_angle_upper_deg() -> f64 {
+    let delta = 2f64.powi(-12);
+    let eps = 2f64.powi(-11) * 2f64.sqrt() + 2.0 * delta * delta;
+    (2.0 * delta * delta + eps).sqrt().asin().to_degrees()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The figure the docs quote is the formula's.
+    #[test]
+    fn max_angle_upper_deg_is_the_documented_figure() {
+        assert_eq!(format!("{:.3}", max_angle_upper_deg()), "1.506");
+    }
 
     #[test]
     fn halves_round_trip_and_bad_halves_decode_to_unit_vectors() {

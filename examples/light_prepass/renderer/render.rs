@@ -336,6 +336,23 @@ fn texture_group<'a>(
     })
 }
 
+/// A colour attachment cleared to `clear` and stored (resolved into `resolve` when given).
+fn cleared<'a>(
+    view: &'a wgpu::TextureView,
+    resolve: Option<&'a wgpu::TextureView>,
+    clear: wgpu::Color,
+) -> Option<wgpu::RenderPassColorAttachment<'a>> {
+    Some(wgpu::RenderPassColorAttachment {
+        view,
+        depth_slice: None,
+        resolve_target: resolve,
+        ops: wgpu::Operations {
+            load: wgpu::LoadOp::Clear(clear),
+            store: wgpu::StoreOp::Store,
+        },
+    })
+}
+
 fn buffer_entry(
     binding: u32,
     visibility: wgpu::ShaderStages,
@@ -892,17 +909,7 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
             let colour: Vec<_> = gviews
                 .iter()
                 .zip(&gtargets)
-                .map(|(v, t)| {
-                    Some(wgpu::RenderPassColorAttachment {
-                        view: v,
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(t.clear),
-                            store: wgpu::StoreOp::Store,
-                        },
-                    })
-                })
+                .map(|(v, t)| cleared(v, None, t.clear))
                 .collect();
             let mut pass = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("(a) G-buffer"),
@@ -931,17 +938,7 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
         {
             let colour: Vec<_> = lviews
                 .iter()
-                .map(|v| {
-                    Some(wgpu::RenderPassColorAttachment {
-                        view: v,
-                        depth_slice: None,
-                        resolve_target: None,
-                        ops: wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT),
-                            store: wgpu::StoreOp::Store,
-                        },
-                    })
-                })
+                .map(|v| cleared(v, None, wgpu::Color::TRANSPARENT))
                 .collect();
             // The depth buffer is read-only here, so the D32F layout can sample it as well.
             let mut pass = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
@@ -979,15 +976,7 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
             };
             let mut pass = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
                 label: Some("(c) composite"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view,
-                    depth_slice: None,
-                    resolve_target,
-                    ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(sky),
-                        store: wgpu::StoreOp::Store,
-                    },
-                })],
+                color_attachments: &[cleared(view, resolve_target, sky)],
                 depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
                     view: &depth_view,
                     depth_ops: None,

@@ -196,10 +196,11 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         let codes: Vec<u32> = tile_dirs.iter().map(|&d| enc(Vec3::from(d))).collect();
         let dir_words: Vec<u32> = tile_dirs.iter().flatten().map(|x| x.to_bits()).collect();
         let tile_vecs: Vec<Vec3> = tile_dirs.iter().map(|&d| Vec3::from(d)).collect();
-        ctx.variants.push(Variant {
-            family: "normal encoding: encode",
+        // Encoder and decoder share the round trip's error; each is timed on its own input.
+        let variant = |family, function: &str, args, twin| Variant {
+            family,
             unit: "degrees",
-            name: codec.encode.into(),
+            name: function.into(),
             bits: codec.bits,
             error: Some(s),
             error_from: format!("{place}: {n} Fibonacci directions, round trip"),
@@ -207,30 +208,28 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             error_upper: None,
             wgsl: Some(Wgsl {
                 source: codec.source.into(),
-                function: codec.encode.into(),
-                args: vec![TimedArg::Column(dir_words)],
+                function: function.into(),
+                args: vec![TimedArg::Column(args)],
             }),
-            twin: Some(twin_timer(tile_vecs, enc)),
-        });
+            twin: Some(twin),
+        };
+        let encode = variant(
+            "normal encoding: encode",
+            codec.encode,
+            dir_words,
+            twin_timer(tile_vecs, enc),
+        );
+        ctx.variants.push(encode);
         if codec.name.contains("fast") {
             continue; // a `_fast` encoding shares its precise sibling's decoder
         }
-        ctx.variants.push(Variant {
-            family: "normal encoding: decode",
-            unit: "degrees",
-            name: codec.decode.into(),
-            bits: codec.bits,
-            error: Some(s),
-            error_from: format!("{place}: {n} Fibonacci directions, round trip"),
-            upper_only,
-            error_upper: None,
-            wgsl: Some(Wgsl {
-                source: codec.source.into(),
-                function: codec.decode.into(),
-                args: vec![TimedArg::Column(codes.clone())],
-            }),
-            twin: Some(twin_timer(codes, dec)),
-        });
+        let decode = variant(
+            "normal encoding: decode",
+            codec.decode,
+            codes.clone(),
+            twin_timer(codes, dec),
+        );
+        ctx.variants.push(decode);
     }
     peer_variants(ctx, &dirs, &tile_dirs)
 }

@@ -4,6 +4,7 @@
 //! PNGs render the same on a fresh machine with no fonts installed.
 
 use plotters::coord::Shift;
+use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 
@@ -202,6 +203,27 @@ fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
 
 type DrawResult<DB> = Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
 
+/// The axes, labels and grid of a chart whose both axes are logarithmic, ticks in [`tick`]'s form.
+fn log_log_mesh<DB: DrawingBackend, X, Y>(
+    chart: &mut ChartContext<'_, DB, Cartesian2d<X, Y>>,
+    x_label: &str,
+    y_label: &str,
+) -> DrawResult<DB>
+where
+    X: Ranged<ValueType = f64> + ValueFormatter<f64>,
+    Y: Ranged<ValueType = f64> + ValueFormatter<f64>,
+{
+    chart
+        .configure_mesh()
+        .x_desc(x_label)
+        .y_desc(y_label)
+        .label_style((FAMILY, 14))
+        .axis_desc_style((FAMILY, 16))
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
+        .draw()
+}
+
 /// Powers of ten around the positive values, so log axes start and end on decades.
 fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) = values
@@ -227,15 +249,7 @@ fn lines<DB: DrawingBackend>(c: &LineChart, root: &DrawingArea<DB, Shift>) -> Dr
         .x_label_area_size(50)
         .y_label_area_size(80)
         .build_cartesian_2d((xs.0..xs.1).log_scale(), (ys.0..ys.1).log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc(&c.x_label)
-        .y_desc(&c.y_label)
-        .label_style((FAMILY, 14))
-        .axis_desc_style((FAMILY, 16))
-        .x_label_formatter(&tick)
-        .y_label_formatter(&tick)
-        .draw()?;
+    log_log_mesh(&mut chart, &c.x_label, &c.y_label)?;
     let n = c.series.len();
     for (k, s) in c.series.iter().enumerate() {
         let col = colour(k);
@@ -279,15 +293,7 @@ fn scatter<DB: DrawingBackend>(c: &Scatter, root: &DrawingArea<DB, Shift>) -> Dr
                 .log_scale()
                 .with_key_points(log_ticks(ys.0, ys.1)),
         )?;
-    chart
-        .configure_mesh()
-        .x_desc(&c.x_label)
-        .y_desc(&c.y_label)
-        .label_style((FAMILY, 14))
-        .axis_desc_style((FAMILY, 16))
-        .x_label_formatter(&tick)
-        .y_label_formatter(&tick)
-        .draw()?;
+    log_log_mesh(&mut chart, &c.x_label, &c.y_label)?;
     // Every point has its own (colour, marker) pair: shipped points are filled shapes, the
     // colour cycling fastest and the shape changing after each round of colours; peers are
     // crosses (× then +), numbered separately. Variants with equal cost and error coincide,
