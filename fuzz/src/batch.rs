@@ -6,6 +6,7 @@
 //! batch twin at every level this CPU has and in its plain (detected-level) form, and asserts
 //! every output has the scalar twin's bits.
 
+use crate::normal::oct_bits;
 use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br};
@@ -97,7 +98,13 @@ fn same<I: Bits, O: Bits>(
     compare("plain", &got);
 }
 
-/// An entry for a batch twin without parameters.
+/// An [`Entry`] comparing a batch twin with its scalar twin through [`same`]:
+/// - `entry!(In, scalar, module::f, f_with)`: a twin without parameters, named
+///   `batch::<module>::<f>`, fed a `Vec<In>` from [`inputs`];
+/// - `entry!(In, scalar, module::f, f_with; name, read)`: a twin taking one parameter, named
+///   `batch::<name>::<f>`. The parameter is read first by `read` (`fn(&mut Input) -> P`), then
+///   the inputs; the batch twin takes it first (`f_with(level, p, src, dst)`), the scalar twin
+///   last (`scalar(x, p)`).
 macro_rules! entry {
     ($in:ty, $scalar:path, $module:ident :: $f:ident, $fw:ident) => {
         Entry {
@@ -110,6 +117,22 @@ macro_rules! entry {
                     $scalar,
                     |l, s, d| $module::$fw(l, s, d),
                     |s, d| $module::$f(s, d),
+                );
+            },
+        }
+    };
+    ($in:ty, $scalar:path, $module:ident :: $f:ident, $fw:ident; $name:ident, $read:expr) => {
+        Entry {
+            name: concat!("batch::", stringify!($name), "::", stringify!($f)),
+            check: |i| {
+                let p = $read(i);
+                let src: Vec<$in> = inputs(i);
+                same(
+                    stringify!($f),
+                    &src,
+                    |x| $scalar(x, p),
+                    |l, s, d| $module::$fw(l, p, s, d),
+                    |s, d| $module::$f(p, s, d),
                 );
             },
         }
@@ -311,74 +334,12 @@ pub const BATCH: &[Entry] = &[
         bd::unpack4x8unorm,
         unpack4x8unorm_with
     ),
-    Entry {
-        name: "batch::normal::encode_oct_precise",
-        check: |i| {
-            let bits = u32::from(i.u8() % 16) + 1;
-            let src: Vec<Vec3> = inputs(i);
-            same(
-                "encode_oct_precise",
-                &src,
-                |n| oct::encode_precise(n, bits),
-                |l, s, d| bn::encode_oct_precise_with(l, bits, s, d),
-                |s, d| bn::encode_oct_precise(bits, s, d),
-            );
-        },
-    },
-    Entry {
-        name: "batch::normal::encode_oct_round",
-        check: |i| {
-            let bits = u32::from(i.u8() % 16) + 1;
-            let src: Vec<Vec3> = inputs(i);
-            same(
-                "encode_oct_round",
-                &src,
-                |n| oct::encode_round(n, bits),
-                |l, s, d| bn::encode_oct_round_with(l, bits, s, d),
-                |s, d| bn::encode_oct_round(bits, s, d),
-            );
-        },
-    },
-    Entry {
-        name: "batch::normal::decode_oct",
-        check: |i| {
-            let bits = u32::from(i.u8() % 16) + 1;
-            let src: Vec<u32> = inputs(i);
-            same(
-                "decode_oct",
-                &src,
-                |p| oct::decode(p, bits),
-                |l, s, d| bn::decode_oct_with(l, bits, s, d),
-                |s, d| bn::decode_oct(bits, s, d),
-            );
-        },
-    },
-    Entry {
-        name: "batch::roughness::encode_log_roughness",
-        check: |i| {
-            let max_power = i.f32();
-            let src: Vec<f32> = inputs(i);
-            same(
-                "encode_log_roughness",
-                &src,
-                |p| r::encode_log_roughness(p, max_power),
-                |l, s, d| br::encode_log_roughness_with(l, max_power, s, d),
-                |s, d| br::encode_log_roughness(max_power, s, d),
-            );
-        },
-    },
-    Entry {
-        name: "batch::roughness::decode_log_roughness",
-        check: |i| {
-            let max_power = i.f32();
-            let src: Vec<u32> = inputs(i);
-            same(
-                "decode_log_roughness",
-                &src,
-                |k| r::decode_log_roughness(k, max_power),
-                |l, s, d| br::decode_log_roughness_with(l, max_power, s, d),
-                |s, d| br::decode_log_roughness(max_power, s, d),
-            );
-        },
-    },
+    entry!(Vec3, oct::encode_precise, bn::encode_oct_precise, encode_oct_precise_with;
+        normal, oct_bits),
+    entry!(Vec3, oct::encode_round, bn::encode_oct_round, encode_oct_round_with; normal, oct_bits),
+    entry!(u32, oct::decode, bn::decode_oct, decode_oct_with; normal, oct_bits),
+    entry!(f32, r::encode_log_roughness, br::encode_log_roughness, encode_log_roughness_with;
+        roughness, Input::f32),
+    entry!(u32, r::decode_log_roughness, br::decode_log_roughness, decode_log_roughness_with;
+        roughness, Input::f32),
 ];

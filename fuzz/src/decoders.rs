@@ -1,7 +1,7 @@
 //! [`DECODERS`]: any bytes in, a valid result out — depth codes, normal codes (every encoding,
 //! bit size and render-target form), log roughness.
 
-use crate::normal::{assert_unit, unorm_bytes};
+use crate::normal::{assert_unit, codec, oct_bits, unorm_bytes};
 use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::assert_within_abs;
@@ -93,10 +93,7 @@ pub const DECODERS: &[Entry] = &[
             );
         },
     },
-    Entry {
-        name: "normal::xyz8::decode_normal_xyz8_unorm",
-        check: |i| unorm_decoder(i, xyz8::decode_normal_xyz8_unorm, xyz8::decode_normal_xyz8),
-    },
+    codec!(unorm_decoder; xyz8::decode_normal_xyz8_unorm, xyz8::decode_normal_xyz8),
     Entry {
         name: "normal::xy_fp16::decode_normal_xy_fp16",
         check: |i| {
@@ -104,20 +101,8 @@ pub const DECODERS: &[Entry] = &[
             assert_unit(xy_fp16::decode_normal_xy_fp16(p), format_args!("{p:#x}"));
         },
     },
-    Entry {
-        name: "normal::xy_fp16::decode_normal_xy_fp16_unorm",
-        check: |i| {
-            unorm_decoder(
-                i,
-                xy_fp16::decode_normal_xy_fp16_unorm,
-                xy_fp16::decode_normal_xy_fp16,
-            )
-        },
-    },
-    Entry {
-        name: "normal::oct::decode_normal_oct16",
-        check: |i| code_decoder(i, oct::decode_normal_oct16, 16),
-    },
+    codec!(unorm_decoder; xy_fp16::decode_normal_xy_fp16_unorm, xy_fp16::decode_normal_xy_fp16),
+    codec!(code_decoder; oct::decode_normal_oct16, 16),
     Entry {
         name: "normal::oct::decode_normal_oct16_unorm",
         check: |i| {
@@ -128,26 +113,14 @@ pub const DECODERS: &[Entry] = &[
             assert_eq!(v, oct::decode_normal_oct16(unorm_bytes(c)), "{c:?}");
         },
     },
-    Entry {
-        name: "normal::oct::decode_normal_oct24",
-        check: |i| code_decoder(i, oct::decode_normal_oct24, 24),
-    },
-    Entry {
-        name: "normal::oct::decode_normal_oct24_unorm",
-        check: |i| unorm_decoder(i, oct::decode_normal_oct24_unorm, oct::decode_normal_oct24),
-    },
-    Entry {
-        name: "normal::oct::decode_normal_oct32",
-        check: |i| code_decoder(i, oct::decode_normal_oct32, 32),
-    },
-    Entry {
-        name: "normal::oct::decode_normal_oct32_unorm",
-        check: |i| unorm_decoder(i, oct::decode_normal_oct32_unorm, oct::decode_normal_oct32),
-    },
+    codec!(code_decoder; oct::decode_normal_oct24, 24),
+    codec!(unorm_decoder; oct::decode_normal_oct24_unorm, oct::decode_normal_oct24),
+    codec!(code_decoder; oct::decode_normal_oct32, 32),
+    codec!(unorm_decoder; oct::decode_normal_oct32_unorm, oct::decode_normal_oct32),
     Entry {
         name: "normal::oct::decode (1..=16 bits per axis)",
         check: |i| {
-            let bits = u32::from(i.u8() % 16) + 1;
+            let bits = oct_bits(i);
             let p = i.u32();
             let v = oct::decode(p, bits);
             assert_unit(v, format_args!("{p:#x}, {bits} bits"));
@@ -159,20 +132,8 @@ pub const DECODERS: &[Entry] = &[
             );
         },
     },
-    Entry {
-        name: "normal::hemioct::decode_normal_hemioct24",
-        check: |i| code_decoder(i, hemioct::decode_normal_hemioct24, 24),
-    },
-    Entry {
-        name: "normal::hemioct::decode_normal_hemioct24_unorm",
-        check: |i| {
-            unorm_decoder(
-                i,
-                hemioct::decode_normal_hemioct24_unorm,
-                hemioct::decode_normal_hemioct24,
-            )
-        },
-    },
+    codec!(code_decoder; hemioct::decode_normal_hemioct24, 24),
+    codec!(unorm_decoder; hemioct::decode_normal_hemioct24_unorm, hemioct::decode_normal_hemioct24),
     Entry {
         name: "roughness::decode_log_roughness",
         check: |i| {

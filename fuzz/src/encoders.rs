@@ -2,8 +2,8 @@
 //! documented output — depth codes, normal codes (every encoding and bit size, precise and
 //! rounding, render-target forms), log roughness.
 
-use crate::Entry;
-use crate::normal::check_encoder;
+use crate::normal::{check_encoder, codec, oct_bits};
+use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::assert_within_abs;
 use prepass::depth24::{self, DEPTH24_MAX};
@@ -60,133 +60,35 @@ pub const ENCODERS: &[Entry] = &[
             assert!((0.0..=1.0).contains(&z), "{d:#x} → {z:?}");
         },
     },
-    Entry {
-        name: "normal::xyz8::encode_normal_xyz8",
-        check: |i| check_encoder(i.vec3(), xyz8::encode_normal_xyz8, 24),
-    },
-    Entry {
-        name: "normal::xyz8::encode_normal_xyz8_unorm",
-        check: |i| {
-            unorm_form(
-                i.vec3(),
-                xyz8::encode_normal_xyz8_unorm,
-                xyz8::encode_normal_xyz8,
-            )
-        },
-    },
-    Entry {
-        name: "normal::xy_fp16::encode_normal_xy_fp16",
-        check: |i| check_encoder(i.vec3(), xy_fp16::encode_normal_xy_fp16, 32),
-    },
-    Entry {
-        name: "normal::xy_fp16::encode_normal_xy_fp16_unorm",
-        check: |i| {
-            unorm_form(
-                i.vec3(),
-                xy_fp16::encode_normal_xy_fp16_unorm,
-                xy_fp16::encode_normal_xy_fp16,
-            )
-        },
-    },
-    Entry {
-        name: "normal::oct::encode_normal_oct16",
-        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct16, 16),
-    },
-    Entry {
-        name: "normal::oct::encode_normal_oct16_fast",
-        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct16_fast, 16),
-    },
-    Entry {
-        name: "normal::oct::encode_normal_oct16_unorm",
-        check: |i| {
-            unorm_form(
-                i.vec3(),
-                oct::encode_normal_oct16_unorm,
-                oct::encode_normal_oct16,
-            )
-        },
-    },
-    Entry {
-        name: "normal::oct::encode_normal_oct24",
-        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct24, 24),
-    },
-    Entry {
-        name: "normal::oct::encode_normal_oct24_fast",
-        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct24_fast, 24),
-    },
-    Entry {
-        name: "normal::oct::encode_normal_oct24_unorm",
-        check: |i| {
-            unorm_form(
-                i.vec3(),
-                oct::encode_normal_oct24_unorm,
-                oct::encode_normal_oct24,
-            )
-        },
-    },
-    Entry {
-        name: "normal::oct::encode_normal_oct32",
-        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct32, 32),
-    },
-    Entry {
-        name: "normal::oct::encode_normal_oct32_fast",
-        check: |i| check_encoder(i.vec3(), oct::encode_normal_oct32_fast, 32),
-    },
-    Entry {
-        name: "normal::oct::encode_normal_oct32_unorm",
-        check: |i| {
-            unorm_form(
-                i.vec3(),
-                oct::encode_normal_oct32_unorm,
-                oct::encode_normal_oct32,
-            )
-        },
-    },
+    codec!(encoder; xyz8::encode_normal_xyz8, 24),
+    codec!(unorm_form; xyz8::encode_normal_xyz8_unorm, xyz8::encode_normal_xyz8),
+    codec!(encoder; xy_fp16::encode_normal_xy_fp16, 32),
+    codec!(unorm_form; xy_fp16::encode_normal_xy_fp16_unorm, xy_fp16::encode_normal_xy_fp16),
+    codec!(encoder; oct::encode_normal_oct16, 16),
+    codec!(encoder; oct::encode_normal_oct16_fast, 16),
+    codec!(unorm_form; oct::encode_normal_oct16_unorm, oct::encode_normal_oct16),
+    codec!(encoder; oct::encode_normal_oct24, 24),
+    codec!(encoder; oct::encode_normal_oct24_fast, 24),
+    codec!(unorm_form; oct::encode_normal_oct24_unorm, oct::encode_normal_oct24),
+    codec!(encoder; oct::encode_normal_oct32, 32),
+    codec!(encoder; oct::encode_normal_oct32_fast, 32),
+    codec!(unorm_form; oct::encode_normal_oct32_unorm, oct::encode_normal_oct32),
     Entry {
         name: "normal::oct::{encode_precise, encode_round} (1..=16 bits per axis)",
         check: |i| {
-            let bits = u32::from(i.u8() % 16) + 1;
+            let bits = oct_bits(i);
             let n = i.vec3();
             // Non-capturing closures cannot take `bits`: one entry per bit size is 16 entries,
             // so the sizes are checked through the generic functions directly.
-            for (what, code, z, n2, signs) in [
-                (
-                    "encode_precise",
-                    oct::encode_precise(n, bits),
-                    oct::encode_precise(Vec3::Z, bits),
-                    oct::encode_precise(n * 2.0, bits),
-                    oct::encode_precise(crate::normal::signs(n), bits),
-                ),
-                (
-                    "encode_round",
-                    oct::encode_round(n, bits),
-                    oct::encode_round(Vec3::Z, bits),
-                    oct::encode_round(n * 2.0, bits),
-                    oct::encode_round(crate::normal::signs(n), bits),
-                ),
-            ] {
-                crate::normal::check_code(n, code, z, n2, signs, 2 * bits, what);
-            }
+            let precise = |v| oct::encode_precise(v, bits);
+            let round = |v| oct::encode_round(v, bits);
+            check_encoder(n, precise, 2 * bits, "encode_precise");
+            check_encoder(n, round, 2 * bits, "encode_round");
         },
     },
-    Entry {
-        name: "normal::hemioct::encode_normal_hemioct24",
-        check: |i| check_encoder(i.vec3(), hemioct::encode_normal_hemioct24, 24),
-    },
-    Entry {
-        name: "normal::hemioct::encode_normal_hemioct24_fast",
-        check: |i| check_encoder(i.vec3(), hemioct::encode_normal_hemioct24_fast, 24),
-    },
-    Entry {
-        name: "normal::hemioct::encode_normal_hemioct24_unorm",
-        check: |i| {
-            unorm_form(
-                i.vec3(),
-                hemioct::encode_normal_hemioct24_unorm,
-                hemioct::encode_normal_hemioct24,
-            )
-        },
-    },
+    codec!(encoder; hemioct::encode_normal_hemioct24, 24),
+    codec!(encoder; hemioct::encode_normal_hemioct24_fast, 24),
+    codec!(unorm_form; hemioct::encode_normal_hemioct24_unorm, hemioct::encode_normal_hemioct24),
     Entry {
         name: "normal::sanitize",
         check: |i| {
@@ -249,8 +151,15 @@ pub const ENCODERS: &[Entry] = &[
     },
 ];
 
+/// A fixed-size encoder ([`check_encoder`]) on a direction read from the input.
+#[track_caller]
+fn encoder(i: &mut Input, enc: fn(Vec3) -> u32, code_bits: u32) {
+    check_encoder(i.vec3(), enc, code_bits, "encoder");
+}
+
 /// A render-target encoder: the unorm8 channels of its code's bytes.
 #[track_caller]
-fn unorm_form(n: Vec3, enc_unorm: fn(Vec3) -> [f32; 4], enc: fn(Vec3) -> u32) {
+fn unorm_form(i: &mut Input, enc_unorm: fn(Vec3) -> [f32; 4], enc: fn(Vec3) -> u32) {
+    let n = i.vec3();
     assert_eq!(enc_unorm(n), depth24::unpack4x8unorm(enc(n)), "{n:?}");
 }

@@ -4,6 +4,7 @@
 //! components win, and ignore the length of the input (every encoder starts with
 //! `prepass::normal::sanitize`, which scales by an exact power of two).
 
+use crate::Input;
 use glam::Vec3;
 use prepass::assert_within_abs;
 use prepass::normal::UNIT_TOLERANCE;
@@ -71,9 +72,10 @@ pub fn check_code(n: Vec3, code: u32, z: u32, n2: u32, sign: u32, code_bits: u32
     }
 }
 
-/// [`check_code`] for a fixed-size encoder.
+/// [`check_code`] for the encoder `enc` (named `what` in messages), whose codes have
+/// `code_bits` bits.
 #[track_caller]
-pub fn check_encoder(n: Vec3, enc: fn(Vec3) -> u32, code_bits: u32) {
+pub fn check_encoder(n: Vec3, enc: impl Fn(Vec3) -> u32, code_bits: u32, what: &str) {
     check_code(
         n,
         enc(n),
@@ -81,6 +83,26 @@ pub fn check_encoder(n: Vec3, enc: fn(Vec3) -> u32, code_bits: u32) {
         enc(n * 2.0),
         enc(signs(n)),
         code_bits,
-        "encoder",
+        what,
     );
 }
+
+/// The bits per axis of the generic octahedral codes (`oct::{encode_precise, encode_round,
+/// decode}`), read from one byte: `1..=16`.
+pub fn oct_bits(i: &mut Input) -> u32 {
+    u32::from(i.u8() % 16) + 1
+}
+
+/// An [`Entry`](crate::Entry) named `normal::<module>::<f>` whose check is
+/// `check(input, module::f, args…)`: `codec!(check; module::f, args…)`. For the decoder
+/// and encoder tables' codecs that one shared check covers (a code's bit size, a render-target
+/// form's code function); the others write the `Entry` out by hand.
+macro_rules! codec {
+    ($check:ident; $module:ident :: $f:ident $(, $arg:expr)*) => {
+        $crate::Entry {
+            name: concat!("normal::", stringify!($module), "::", stringify!($f)),
+            check: |i| $check(i, $module::$f $(, $arg)*),
+        }
+    };
+}
+pub(crate) use codec;
