@@ -11,6 +11,8 @@ use std::path::{Path, PathBuf};
 const FONT: &[u8] = include_bytes!("font/DejaVuSans.ttf");
 const FAMILY: &str = "sans-serif";
 const SIZE: (u32, u32) = (960, 600);
+/// Width of the scatter charts' legend strip, in pixels (labels up to about 36 characters).
+const LEGEND_WIDTH: i32 = 290;
 
 /// Register the embedded font with plotters; call once before drawing.
 pub fn init() -> Result<(), String> {
@@ -279,7 +281,9 @@ fn lines<DB: DrawingBackend>(c: &LineChart, root: &DrawingArea<DB, Shift>) -> Dr
 fn scatter<DB: DrawingBackend>(c: &Scatter, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
     let xs = padded(c.points.iter().map(|p| p.x), 1.5);
     let ys = decades(c.points.iter().map(|p| p.y));
-    let mut chart = ChartBuilder::on(root)
+    // The legend gets its own strip on the right: drawn over the plot it hid points.
+    let (plot, key) = root.split_horizontally(root.dim_in_pixel().0 as i32 - LEGEND_WIDTH);
+    let mut chart = ChartBuilder::on(&plot)
         .caption(&c.title, (FAMILY, 22))
         .margin(14)
         .margin_right(40)
@@ -299,6 +303,7 @@ fn scatter<DB: DrawingBackend>(c: &Scatter, root: &DrawingArea<DB, Shift>) -> Dr
     // crosses (× then +), numbered separately. Variants with equal cost and error coincide,
     // so the sizes also differ.
     let (mut shipped, mut peers) = (0usize, 0usize);
+    let mut legend = Vec::new();
     for p in &c.points {
         if !(p.x > 0.0 && p.y > 0.0 && p.x.is_finite() && p.y.is_finite()) {
             continue;
@@ -308,20 +313,17 @@ fn scatter<DB: DrawingBackend>(c: &Scatter, root: &DrawingArea<DB, Shift>) -> Dr
         // Sizes step down with the index, so coinciding points stay visible around each other.
         let size = 13 - 2 * (*k % 4) as i32;
         *k += 1;
-        chart
-            .draw_series(std::iter::once(
-                Marker::new(shape, size, col).at((p.x, p.y)),
-            ))?
-            .label(&p.label)
-            .legend(move |(x, y)| Marker::new(shape, 6, col).at((x + 8, y)));
+        chart.draw_series(std::iter::once(
+            Marker::new(shape, size, col).at((p.x, p.y)),
+        ))?;
+        legend.push((p.label.as_str(), shape, col));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .label_font((FAMILY, 14))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()?;
+    // One line per point, in drawing order, from the top of the plotting area.
+    for (i, (label, shape, col)) in legend.into_iter().enumerate() {
+        let y = 60 + 20 * i as i32;
+        key.draw(&Marker::new(shape, 6, col).at((10, y)))?;
+        key.draw(&Text::new(label, (24, y - 8), (FAMILY, 13)))?;
+    }
     Ok(())
 }
 
