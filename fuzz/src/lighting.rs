@@ -10,13 +10,9 @@ use prepass::lighting::aggregate_light as agg;
 use prepass::lighting::light_volume as lv;
 use prepass::lighting::lpp::{self, LPP_COLOUR_MAX};
 
-/// The largest `N·L` the light pre-pass can compute: it clamps `N·L` at 0 only (not at 1), and
-/// two directions each of unit length within [`prepass::normal::UNIT_TOLERANCE`] have a dot
-/// product of at most `(1 + tol)²`, plus the dot's three roundings (1.5 ULP): so a light-buffer
-/// channel may exceed its colour (≤ 65504) by this factor (found by this target: 65504.008).
+/// [`lpp::bounds::n_dot_l_max`] in the `f32` the functions return.
 fn n_dot_l_max() -> f32 {
-    let tol = prepass::normal::UNIT_TOLERANCE;
-    ((1.0 + tol) * (1.0 + tol) * (1.0 + 3.0 * 2f64.powi(-24))) as f32
+    lpp::bounds::n_dot_l_max() as f32
 }
 
 /// Largest light-buffer channel: the clamped colour times [`n_dot_l_max`].

@@ -104,8 +104,10 @@ pub fn lpp_spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f
     ((c - outer) / (inner - outer)).clamp(0.0, 1.0)
 }
 
-/// `(N·L, specular cosine)`: `N·H` (Blinn-Phong) or `R·V` (Phong), each clamped to `[0, 1]`;
-/// zeros for a bad `to_eye`, specular 0 when `N·L = 0`.
+/// `(N·L, specular cosine)`: `N·L` clamped below at 0 only (both directions are normalised in
+/// f32, so it may exceed 1 by a few ULP, at most [`bounds::n_dot_l_max`]), and `N·H`
+/// (Blinn-Phong) or `R·V` (Phong) clamped to `[0, 1]`; zeros for a bad `to_eye`, specular 0
+/// when `N·L = 0`.
 pub fn lpp_cosines(normal: Vec3, to_eye: Vec3, to_light: Vec3, phong: bool) -> (f32, f32) {
     let n = lpp_direction(normal);
     let l = lpp_direction(to_light);
@@ -291,6 +293,11 @@ pub fn lpp_clamp_colour(c: Vec3) -> Vec3 {
 }
 
 /// C for the one-buffer layout: `albedo·rgb + gloss·lpp_reconstruct_specular(light, m)`.
+///
+/// The result is not clamped: with texels an f16 light buffer can hold (≤ 65504) and albedo and
+/// gloss in `[0, 1]` it stays below `2·65504`. Channels beyond that range are not clamped before
+/// the specular reconstruction (`lum(rgb)` of the raw texel), so larger texels give larger
+/// results, and with gloss above 1 they can overflow to `+∞`.
 pub fn lpp_combine(albedo: Vec3, gloss: Vec3, light: Vec4, material_power: f32) -> Vec3 {
     let spec = lpp_reconstruct_specular(light, material_power);
     lpp_clamp_colour(albedo) * lpp_clamp_colour(light.truncate()) + lpp_clamp_colour(gloss) * spec
@@ -312,6 +319,16 @@ pub mod bounds {
     /// already a full WGSL allowance (`/`, `log2`, `exp2`): doubling a budget bounds the
     /// conforming error.
     pub const CONFORMING_FACTOR: f64 = 2.0;
+
+    /// The largest `N·L` that [`super::lpp_cosines`] returns: it clamps `N·L` at 0 only, and two
+    /// directions each of unit length within [`crate::normal::UNIT_TOLERANCE`] have a dot
+    /// product of at most `(1 + tol)²`, plus the dot's three roundings (`3u`). A light-buffer
+    /// channel may exceed its clamped colour by this factor (the fuzz target `lighting` found
+    /// 65504.008 for a colour of 65504).
+    pub fn n_dot_l_max() -> f64 {
+        let tol = crate::normal::UNIT_TOLERANCE;
+        (1.0 + tol) * (1.0 + tol) * (1.0 + 3.0 * U)
+    }
 
     /// Relative error of WGSL's `pow(x, y) = exp2(y·log2 x)` as `lpp_pow_cosine` computes it
     /// (`x` in (0, 1), `y ≥ 0`), first order, from the spec's allowances: `log2` within 2^-21
