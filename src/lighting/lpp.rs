@@ -295,9 +295,9 @@ pub fn lpp_clamp_colour(c: Vec3) -> Vec3 {
 /// C for the one-buffer layout: `albedo·rgb + gloss·lpp_reconstruct_specular(light, m)`.
 ///
 /// The result is not clamped: with texels an f16 light buffer can hold (≤ 65504) and albedo and
-/// gloss in `[0, 1]` it stays below `2·65504`. Channels beyond that range are not clamped before
-/// the specular reconstruction (`lum(rgb)` of the raw texel), so larger texels give larger
-/// results, and with gloss above 1 they can overflow to `+∞`.
+/// gloss in `[0, 1]` it stays within about `2·65504` (texels of 65504 give 131008). Channels
+/// beyond that range are not clamped before the specular reconstruction (`lum(rgb)` of the raw
+/// texel), so larger texels give larger results, and with gloss above 1 they can overflow to `+∞`.
 pub fn lpp_combine(albedo: Vec3, gloss: Vec3, light: Vec4, material_power: f32) -> Vec3 {
     let spec = lpp_reconstruct_specular(light, material_power);
     lpp_clamp_colour(albedo) * lpp_clamp_colour(light.truncate()) + lpp_clamp_colour(gloss) * spec
