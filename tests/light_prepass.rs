@@ -299,7 +299,7 @@ fn png_pixels(path: &std::path::Path) -> Vec<[u8; 3]> {
 #[test]
 fn light_prepass_bad_input() {
     let dev = device();
-    let max = dev.device.limits().max_texture_dimension_2d;
+    let max = dev.device().limits().max_texture_dimension_2d;
     for (w, h, want) in [
         (0, 180, "at least 1"),
         (320, 0, "at least 1"),

@@ -133,10 +133,12 @@ impl Gpu {
             };
             return Err(HarnessError::NoAdapter { detail });
         };
-        let mut required_features = wgpu::Features::empty();
-        if adapter.features().contains(wgpu::Features::TIMESTAMP_QUERY) {
-            required_features |= wgpu::Features::TIMESTAMP_QUERY;
-        }
+        // Optional features, on where the adapter has them: timestamp queries (timed
+        // dispatches, render-pass times) and the adapter's own texture-format capabilities
+        // (multisample counts beyond WebGPU's guaranteed ones, for renderers on this device).
+        let required_features = adapter.features()
+            & (wgpu::Features::TIMESTAMP_QUERY
+                | wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("prepass harness"),
             required_features,
@@ -149,6 +151,11 @@ impl Gpu {
             device,
             queue,
         })
+    }
+
+    /// The adapter the device was opened on.
+    pub fn adapter(&self) -> &wgpu::Adapter {
+        &self.adapter
     }
 
     /// The adapter's own description (name, backend, driver).

@@ -10,71 +10,44 @@ use prepass::projection::{DepthConvention, Projection};
 use prepass::scene::{DepthStorage, LightBuffers, NormalEncoding};
 use wgpu::util::DeviceExt as _;
 
-/// The adapter and a device with what the frame needs (timestamps and the adapter's own
-/// multisample counts, where it has them).
+/// The crate's harness device (the same adapter choice, `WGPU_BACKEND` and `PREPASS_ADAPTER`
+/// included; it turns on timestamps and the adapter's own multisample counts where it has them).
 pub struct Device {
-    /// The adapter.
-    pub adapter: wgpu::Adapter,
-    /// The device.
-    pub device: wgpu::Device,
-    /// Its queue.
-    pub queue: wgpu::Queue,
+    gpu: prepass::harness::Gpu,
     /// Whether timestamp queries are on.
     pub timestamps: bool,
 }
 
 impl Device {
-    /// Open the best adapter (a GPU before a software one; `WGPU_BACKEND` and
-    /// `PREPASS_ADAPTER` choose, as for the crate's harness). Fails with the fix when none exists.
+    /// Open the best adapter (a GPU before a software one). Fails with the fix when none exists.
     pub fn new() -> Result<Self, String> {
-        let instance =
-            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-        let backends = wgpu::Backends::from_env().unwrap_or(wgpu::Backends::all());
-        let mut adapters = pollster::block_on(instance.enumerate_adapters(backends));
-        if let Ok(w) = std::env::var("PREPASS_ADAPTER") {
-            let w = w.to_lowercase();
-            adapters.retain(|a| a.get_info().name.to_lowercase().contains(&w));
-        }
-        adapters.sort_by_key(|a| match a.get_info().device_type {
-            wgpu::DeviceType::DiscreteGpu => 0,
-            wgpu::DeviceType::IntegratedGpu => 1,
-            wgpu::DeviceType::VirtualGpu => 2,
-            wgpu::DeviceType::Cpu => 3,
-            wgpu::DeviceType::Other => 4,
-        });
-        let adapter = adapters.into_iter().next().ok_or_else(|| {
-            format!(
-                "no wgpu adapter to render on. Fix: {}",
-                prepass::harness::NO_ADAPTER_FIX
-            )
-        })?;
-        let wanted = wgpu::Features::TIMESTAMP_QUERY
-            | wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES;
-        let features = adapter.features() & wanted;
-        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-            label: Some("light_prepass"),
-            required_features: features,
-            required_limits: adapter.limits(),
-            ..Default::default()
-        }))
-        .map_err(|e| format!("the adapter refused a device: {e}"))?;
-        Ok(Device {
-            timestamps: features.contains(wgpu::Features::TIMESTAMP_QUERY),
-            adapter,
-            device,
-            queue,
-        })
+        let gpu = prepass::harness::Gpu::new().map_err(|e| e.to_string())?;
+        let timestamps = gpu
+            .device()
+            .features()
+            .contains(wgpu::Features::TIMESTAMP_QUERY);
+        Ok(Device { gpu, timestamps })
+    }
+
+    /// The device.
+    pub fn device(&self) -> &wgpu::Device {
+        self.gpu.device()
+    }
+
+    /// Its queue.
+    pub fn queue(&self) -> &wgpu::Queue {
+        self.gpu.queue()
     }
 
     /// One line naming the adapter and driver.
     pub fn describe(&self) -> String {
-        let i = self.adapter.get_info();
+        let i = self.gpu.adapter_info();
         format!("{} ({:?}, {})", i.name, i.backend, i.driver_info)
     }
 
     /// Whether the adapter is Mesa's lavapipe (or another CPU rasteriser).
     pub fn is_software(&self) -> bool {
-        self.adapter.get_info().device_type == wgpu::DeviceType::Cpu
+        self.gpu.is_software()
     }
 
     /// The MSAA counts every format of `cfg`'s targets supports.
@@ -84,7 +57,8 @@ impl Device {
             .into_iter()
             .filter(|&n| {
                 formats.iter().all(|f| {
-                    self.adapter
+                    self.gpu
+                        .adapter()
                         .get_texture_format_features(*f)
                         .flags
                         .sample_count_supported(n)
@@ -244,7 +218,7 @@ struct FrameUniform {
 
 /// Check the resolution and sample count against the device before anything is created.
 pub fn check(dev: &Device, cfg: &Config) -> Result<(), String> {
-    let max = dev.device.limits().max_texture_dimension_2d;
+    let max = dev.device().limits().max_texture_dimension_2d;
     if cfg.width == 0 || cfg.height == 0 {
         return Err(format!(
             "resolution {}×{}: width and height must be at least 1",
@@ -281,7 +255,7 @@ fn texture(
     samples: u32,
     usage: wgpu::TextureUsages,
 ) -> wgpu::Texture {
-    dev.device.create_texture(&wgpu::TextureDescriptor {
+    dev.device().create_texture(&wgpu::TextureDescriptor {
         label: None,
         size: wgpu::Extent3d {
             width: cfg.width,
@@ -385,13 +359,13 @@ fn read_aspect(
     let row = w * texel;
     let padded =
         row.div_ceil(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT) * wgpu::COPY_BYTES_PER_ROW_ALIGNMENT;
-    let buf = dev.device.create_buffer(&wgpu::BufferDescriptor {
+    let buf = dev.device().create_buffer(&wgpu::BufferDescriptor {
         label: None,
         size: u64::from(padded) * u64::from(h),
         usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
         mapped_at_creation: false,
     });
-    let mut enc = dev.device.create_command_encoder(&Default::default());
+    let mut enc = dev.device().create_command_encoder(&Default::default());
     enc.copy_texture_to_buffer(
         wgpu::TexelCopyTextureInfo {
             aspect,
@@ -407,7 +381,7 @@ fn read_aspect(
         },
         tex.size(),
     );
-    dev.queue.submit([enc.finish()]);
+    dev.queue().submit([enc.finish()]);
     let bytes = read_buffer(dev, &buf);
     let mut out = Vec::with_capacity((row * h) as usize);
     for y in 0..h {
@@ -420,7 +394,7 @@ fn read_aspect(
 fn read_buffer(dev: &Device, buf: &wgpu::Buffer) -> Vec<u8> {
     let slice = buf.slice(..);
     slice.map_async(wgpu::MapMode::Read, |r| r.expect("map a readback buffer"));
-    dev.device
+    dev.device()
         .poll(wgpu::PollType::wait_indefinitely())
         .expect("wait for the GPU");
     let v = slice.get_mapped_range().expect("mapped range").to_vec();
@@ -452,7 +426,7 @@ pub fn lights_in_view(cfg: &Config, scene: &SceneData) -> (Vec2, volumes::Sorted
 /// run, then read the resolved colour back.
 pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, String> {
     check(dev, cfg)?;
-    let d = &dev.device;
+    let d = dev.device();
     let ms = cfg.msaa > 1;
     let prepass_scene = cfg.scene();
     let crate_wgsl = prepass_scene
@@ -892,7 +866,7 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
             count: u32::from(run == 0),
             ..uniform
         };
-        dev.queue
+        dev.queue()
             .write_buffer(&frame_buf, 0, bytemuck::bytes_of(&counting));
         let mut enc = d.create_command_encoder(&Default::default());
         enc.clear_buffer(&counters, 0, None);
@@ -997,11 +971,11 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
             enc.copy_buffer_to_buffer(resolve, 0, staging, 0, 48);
         }
         enc.copy_buffer_to_buffer(&counters, 0, &counters_staging, 0, 16);
-        dev.queue.submit([enc.finish()]);
+        dev.queue().submit([enc.finish()]);
         if let Some((_, _, staging)) = &queries {
             let b = read_buffer(dev, staging);
             let t: Vec<u64> = bytemuck::pod_collect_to_vec(&b);
-            let period = f64::from(dev.queue.get_timestamp_period());
+            let period = f64::from(dev.queue().get_timestamp_period());
             if run > 0 {
                 for k in 0..3 {
                     let ns = t[2 * k + 1].wrapping_sub(t[2 * k]) as f64 * period;
