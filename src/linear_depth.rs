@@ -28,66 +28,87 @@
 //! rounded; WGSL permits both, so the tests require agreement within 1 ULP and report how many
 //! results differ.
 //!
-//! **Bad input:** depth is clamped to `[0, 1]` and codes to `2^24 − 1`; NaN depth gives NaN; the
-//! far plane of an infinite projection gives `+∞`. `near`/`far` are assumed valid
-//! (`0 < near < far ≤ +∞`, as [`crate::projection::Projection::new`] enforces); the result for
-//! other values is unspecified.
+//! **Bad input (every result finite):** depth is clamped to `[0, 1]` and codes to `2^24 − 1`.
+//! WGSL lets an implementation assume that no float operation sees or produces NaN or ±∞, so
+//! none of these functions returns one: a distance of `2^127` or more (the far plane of an
+//! infinite projection, the sky, the depths next to it, whose denominator is subnormal), NaN
+//! depth, and planes or constants no
+//! [`Projection`](crate::projection::Projection) has (NaN or ±∞, `near ≤ 0`, `near ≥ 2^100`,
+//! `far ≤ near`, ratios outside `[0, 1]`) return [`SKY`], the largest finite `f32`. Special
+//! inputs are recognised from their bits, as the WGSL does. A lighting pass tests
+//! `vz >= SKY` (`vz >= 0x1.fffffep+127f` in WGSL: Tint rejects the decimal `3.4028235e38`,
+//! which lies above `f32::MAX`) for the sky.
+//!
+//! **Sign against Bevy:** these return the positive distance `vz`; Bevy's `depth_ndc_to_view_z`
+//! returns view-space `z = −vz`.
 
 use crate::depth24::DEPTH24_MAX;
 use crate::projection::{Depth24Consts, DepthConsts, ReversedDepthConsts};
+
+/// The view distance every function here returns for the sky (and for NaN depth and invalid
+/// planes): `f32::MAX`, the largest finite `f32` (WGSL `0x1.fffffep+127f`). Finite, because WGSL
+/// leaves a run-time ±∞ indeterminate and rejects a constant one.
+pub const SKY: f32 = f32::MAX;
+
+/// `2^127`: quotients at or above it return [`SKY`] (so no division can overflow).
+const SKY_THRESHOLD: f32 = 1.701_411_8e38;
 
 /// `n/f` with an infinite far plane giving exactly 0 (as WGSL `ld_near_over_far`).
 fn near_over_far(near: f32, far: f32) -> f32 {
     if far.is_infinite() { 0.0 } else { near / far }
 }
 
-/// `numerator / s`, `+∞` when `s == 0` (as WGSL `ld_divide_or_inf`).
-fn divide_or_inf(numerator: f32, s: f32) -> f32 {
-    if s == 0.0 {
-        f32::INFINITY
+/// `numerator / s`, or [`SKY`] where the quotient would be `2^127` or more or `s` is subnormal
+/// (which an adapter may flush to 0 in the division but not in a comparison), as WGSL
+/// `ld_divide_or_sky`; the test `s·2^127 ≤ numerator` is exact for `s < 2`.
+fn divide_or_sky(numerator: f32, s: f32) -> f32 {
+    if s < f32::MIN_POSITIVE || (s < 2.0 && s * SKY_THRESHOLD <= numerator) {
+        SKY
     } else {
         numerator / s
     }
 }
 
-/// View distance of a 24-bit standard-convention depth code (twin of WGSL
-/// `view_z_from_depth24`). See the module docs for the formula and error bound.
-pub fn view_z_from_depth24(d: u32, near: f32, far: f32) -> f32 {
-    let k = Depth24Consts {
-        near_times_max: near * DEPTH24_MAX as f32,
-        near_over_far: near_over_far(near, far),
-    };
-    view_z_from_depth24_consts(d, k)
+/// Planes a projection can have (as WGSL `ld_planes_ok`, from bits): `near` positive, finite and
+/// below `2^100`, `far > near` finite or `+∞`.
+fn planes_ok(near: f32, far: f32) -> bool {
+    near.to_bits().wrapping_sub(1) < 0x717f_ffff
+        && (far == f32::INFINITY || (far.is_finite() && far > near))
 }
 
-/// [`view_z_from_depth24`] with `k = (n·(2^24 − 1), n/f)` from
-/// [`crate::projection::Projection::depth24_consts`] (twin of `view_z_from_depth24_consts`).
-pub fn view_z_from_depth24_consts(d: u32, k: Depth24Consts) -> f32 {
+/// Constants a projection can give (as WGSL `ld_consts_ok`, from bits): `k0` positive and
+/// finite, the ratios in `[+0, 1]`.
+fn consts_ok(k0: f32, k1: f32, k2: f32) -> bool {
+    k0.to_bits().wrapping_sub(1) <= 0x7f7f_fffe
+        && k1.to_bits() <= 0x3f80_0000
+        && k2.to_bits() <= 0x3f80_0000
+}
+
+/// `z` (not NaN) clamped to `[0, 1]` as WGSL `ld_clamp_unit` does it from the bits: anything
+/// with the sign bit (−0 and −∞ included) to `+0`, 1 and above (`+∞` included) to 1.
+fn clamp_unit(z: f32) -> f32 {
+    if z.is_sign_negative() {
+        0.0
+    } else if z >= 1.0 {
+        1.0
+    } else {
+        z
+    }
+}
+
+/// The 24-bit path on checked constants (WGSL `ld_view_z_depth24`).
+fn depth24_checked(d: u32, k: Depth24Consts) -> f32 {
     let code = d.min(DEPTH24_MAX);
     let s = (DEPTH24_MAX - code) as f32 + code as f32 * k.near_over_far;
-    divide_or_inf(k.near_times_max, s)
+    divide_or_sky(k.near_times_max, s)
 }
 
-/// View distance of a float standard-convention depth (twin of WGSL `view_z_from_depth`).
-pub fn view_z_from_depth(z: f32, near: f32, far: f32) -> f32 {
-    let r = near_over_far(near, far);
-    let k = DepthConsts {
-        near,
-        near_over_far: r,
-        one_minus_near_over_far: 1.0 - r,
-    };
-    view_z_from_depth_consts(z, k)
-}
-
-/// [`view_z_from_depth`] with `k = (n, n/f, (f − n)/f)` from
-/// [`crate::projection::Projection::depth_consts`]. Below `z = 0.5` the denominator is
-/// `1 − z·(1 − n/f)` (where `1 − z` would round and let the result step backwards), so the
-/// result is monotonic in `z`.
-pub fn view_z_from_depth_consts(z: f32, k: DepthConsts) -> f32 {
+/// The standard float path on checked constants (WGSL `ld_view_z_standard`).
+fn standard_checked(z: f32, k: DepthConsts) -> f32 {
     if z.is_nan() {
-        return f32::NAN;
+        return SKY;
     }
-    let zc = z.clamp(0.0, 1.0);
+    let zc = clamp_unit(z);
     let s = if zc < 0.5 {
         1.0 - zc * k.one_minus_near_over_far
     } else {
@@ -95,30 +116,88 @@ pub fn view_z_from_depth_consts(z: f32, k: DepthConsts) -> f32 {
         // (`ld_one_minus`), which keeps it exact under any reassociation on the GPU.
         (1.0 - zc) + zc * k.near_over_far
     };
-    divide_or_inf(k.near, s)
+    divide_or_sky(k.near, s)
+}
+
+/// The reversed float path on checked constants (WGSL `ld_view_z_reversed`).
+fn reversed_checked(z: f32, k: ReversedDepthConsts) -> f32 {
+    if z.is_nan() {
+        return SKY;
+    }
+    let zc = clamp_unit(z);
+    let s = zc * k.one_minus_near_over_far + k.near_over_far;
+    divide_or_sky(k.near, s)
+}
+
+/// View distance of a 24-bit standard-convention depth code (twin of WGSL
+/// `view_z_from_depth24`). See the module docs for the formula, error bound and bad input.
+pub fn view_z_from_depth24(d: u32, near: f32, far: f32) -> f32 {
+    if !planes_ok(near, far) {
+        return SKY;
+    }
+    let k = Depth24Consts {
+        near_times_max: near * DEPTH24_MAX as f32,
+        near_over_far: near_over_far(near, far),
+    };
+    depth24_checked(d, k)
+}
+
+/// [`view_z_from_depth24`] with `k = (n·(2^24 − 1), n/f)` from
+/// [`crate::projection::Projection::depth24_consts`] (twin of `view_z_from_depth24_consts`).
+pub fn view_z_from_depth24_consts(d: u32, k: Depth24Consts) -> f32 {
+    if !consts_ok(k.near_times_max, k.near_over_far, 0.0) {
+        return SKY;
+    }
+    depth24_checked(d, k)
+}
+
+/// View distance of a float standard-convention depth (twin of WGSL `view_z_from_depth`).
+pub fn view_z_from_depth(z: f32, near: f32, far: f32) -> f32 {
+    if !planes_ok(near, far) {
+        return SKY;
+    }
+    let r = near_over_far(near, far);
+    let k = DepthConsts {
+        near,
+        near_over_far: r,
+        one_minus_near_over_far: 1.0 - r,
+    };
+    standard_checked(z, k)
+}
+
+/// [`view_z_from_depth`] with `k = (n, n/f, (f − n)/f)` from
+/// [`crate::projection::Projection::depth_consts`]. Below `z = 0.5` the denominator is
+/// `1 − z·(1 − n/f)` (where `1 − z` would round and let the result step backwards), so the
+/// result is monotonic in `z`.
+pub fn view_z_from_depth_consts(z: f32, k: DepthConsts) -> f32 {
+    if !consts_ok(k.near, k.near_over_far, k.one_minus_near_over_far) {
+        return SKY;
+    }
+    standard_checked(z, k)
 }
 
 /// View distance of a float reversed-convention depth (twin of WGSL
-/// `view_z_from_reversed_depth`). Depth 0 of an infinite projection (the sky) gives `+∞`.
+/// `view_z_from_reversed_depth`). Depth 0 of an infinite projection (the sky) gives [`SKY`].
 pub fn view_z_from_reversed_depth(z: f32, near: f32, far: f32) -> f32 {
+    if !planes_ok(near, far) {
+        return SKY;
+    }
     let r = near_over_far(near, far);
     let k = ReversedDepthConsts {
         near,
         one_minus_near_over_far: 1.0 - r,
         near_over_far: r,
     };
-    view_z_from_reversed_depth_consts(z, k)
+    reversed_checked(z, k)
 }
 
 /// [`view_z_from_reversed_depth`] with `k = (n, (f − n)/f, n/f)` from
 /// [`crate::projection::Projection::reversed_depth_consts`].
 pub fn view_z_from_reversed_depth_consts(z: f32, k: ReversedDepthConsts) -> f32 {
-    if z.is_nan() {
-        return f32::NAN;
+    if !consts_ok(k.near, k.one_minus_near_over_far, k.near_over_far) {
+        return SKY;
     }
-    let zc = z.clamp(0.0, 1.0);
-    let s = zc * k.one_minus_near_over_far + k.near_over_far;
-    divide_or_inf(k.near, s)
+    reversed_checked(z, k)
 }
 
 /// Error bounds of every function here, in f32 ULPs of the exact distance, kept once: the tests,
@@ -261,17 +340,11 @@ mod tests {
             "bounds::DEPTH24_CORRECTLY_ROUNDED",
             "the far plane's code, ULP"
         );
-        assert_eq!(
-            view_z_from_depth24(DEPTH24_MAX, 0.1, f32::INFINITY),
-            f32::INFINITY
-        );
+        assert_eq!(view_z_from_depth24(DEPTH24_MAX, 0.1, f32::INFINITY), SKY);
         assert_eq!(view_z_from_depth(0.0, 0.5, 10.0), 0.5);
-        assert_eq!(view_z_from_depth(1.0, 0.5, f32::INFINITY), f32::INFINITY);
+        assert_eq!(view_z_from_depth(1.0, 0.5, f32::INFINITY), SKY);
         assert_eq!(view_z_from_reversed_depth(1.0, 0.5, 10.0), 0.5);
-        assert_eq!(
-            view_z_from_reversed_depth(0.0, 0.5, f32::INFINITY),
-            f32::INFINITY
-        );
+        assert_eq!(view_z_from_reversed_depth(0.0, 0.5, f32::INFINITY), SKY);
         crate::assert_within!(
             ulp_error(view_z_from_reversed_depth(0.0, 0.5, 10.0), 10.0),
             bounds::FLOAT_CORRECTLY_ROUNDED,
@@ -281,9 +354,15 @@ mod tests {
     }
 
     #[test]
-    fn bad_depths_clamp_or_propagate() {
-        assert!(view_z_from_depth(f32::NAN, 1.0, 2.0).is_nan());
-        assert!(view_z_from_reversed_depth(f32::NAN, 1.0, 2.0).is_nan());
+    fn bad_depths_clamp_or_give_the_sky() {
+        assert_eq!(view_z_from_depth(f32::NAN, 1.0, 2.0), SKY);
+        assert_eq!(view_z_from_reversed_depth(f32::NAN, 1.0, 2.0), SKY);
+        assert_eq!(view_z_from_reversed_depth(0.5, f32::NAN, 2.0), SKY);
+        assert_eq!(view_z_from_reversed_depth(0.5, 2.0, 1.0), SKY);
+        // Just below 2^127 a distance is returned; at it, the sky.
+        assert_eq!(divide_or_sky(SKY_THRESHOLD, 1.0), SKY);
+        assert!(divide_or_sky(SKY_THRESHOLD, 1.000_000_1) < SKY_THRESHOLD);
+        assert_eq!(divide_or_sky(1.0, 1e-45), SKY);
         assert_eq!(view_z_from_depth(-5.0, 1.0, 2.0), 1.0);
         assert_eq!(
             view_z_from_depth24(u32::MAX, 1.0, 2.0),

@@ -14,28 +14,51 @@
 //! coordinates (≈ 0.5 mm at 8 km, 0.5 m at 1e7 m) whatever the pixel's distance; the
 //! camera-relative path keeps the view-space relative error.
 //!
-//! **Bad input:** these are plain products and sums: NaN and ±∞ propagate as IEEE arithmetic
-//! does on the adapter (WGSL lets an implementation assume they never occur, so treat sky pixels
-//! — `vz = +∞` — separately: a zero ray component times ∞ is NaN). Vertex indices above 2 wrap
-//! through their low two bits (index 3 gives `(3, 3)`, outside the screen).
+//! **Bad input (every result finite):** WGSL lets an implementation assume that no NaN or ±∞
+//! occurs at run time, so each float input lane is read from its bits first: NaN → 0,
+//! ±∞ → ±2^40, finite values clamped to `[−2^40, 2^40]` ([`LIMIT`]; 2^40 ≈ 1.1e12, beyond any
+//! distance a prepass projection resolves), so no product or sum can overflow. The sky sentinel
+//! [`crate::linear_depth::SKY`] rebuilds the point `2^40` along the ray. Vertex indices above 2
+//! wrap through their low two bits (index 3 gives `(3, 3)`, outside the screen).
 
 use glam::{Mat3, Vec2, Vec3};
+
+/// The largest magnitude any float input lane keeps: `2^40`. Larger lanes (and ±∞) are clamped
+/// to `±LIMIT`, NaN lanes read as 0 (WGSL `pos_sane`).
+pub const LIMIT: f32 = 1_099_511_627_776.0;
+
+/// One lane made finite and clamped to `[−LIMIT, LIMIT]` (WGSL `pos_sane`).
+fn sane(x: f32) -> f32 {
+    if x.is_nan() {
+        0.0
+    } else {
+        x.clamp(-LIMIT, LIMIT)
+    }
+}
+
+fn sane2(v: Vec2) -> Vec2 {
+    Vec2::new(sane(v.x), sane(v.y))
+}
+
+fn sane3(v: Vec3) -> Vec3 {
+    Vec3::new(sane(v.x), sane(v.y), sane(v.z))
+}
 
 /// View ray through `ndc_xy` with z = +1 (left-handed view space, +z forward). Twin of WGSL
 /// `frustum_ray`.
 pub fn frustum_ray(ndc_xy: Vec2, tan_half_fov: Vec2) -> Vec3 {
-    (ndc_xy * tan_half_fov).extend(1.0)
+    (sane2(ndc_xy) * sane2(tan_half_fov)).extend(1.0)
 }
 
 /// View ray with z = −1 (right-handed view space, −z forward, as wgpu and Bevy). Twin of WGSL
 /// `frustum_ray_rh`.
 pub fn frustum_ray_rh(ndc_xy: Vec2, tan_half_fov: Vec2) -> Vec3 {
-    (ndc_xy * tan_half_fov).extend(-1.0)
+    (sane2(ndc_xy) * sane2(tan_half_fov)).extend(-1.0)
 }
 
 /// `ray · view_z`. Twin of WGSL `view_position`.
 pub fn view_position(ray: Vec3, view_z: f32) -> Vec3 {
-    ray * view_z
+    sane3(ray) * sane(view_z)
 }
 
 /// NDC of a full-screen triangle's vertex: 0 → (−1, −1), 1 → (3, −1), 2 → (−1, 3).
@@ -55,23 +78,29 @@ pub fn fullscreen_triangle_ray_rh(vertex_index: u32, tan_half_fov: Vec2) -> Vec3
 
 /// wgpu NDC from a texture coordinate: `(2u − 1, 1 − 2v)`.
 pub fn ndc_from_uv(uv: Vec2) -> Vec2 {
-    Vec2::new(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0)
+    let u = sane2(uv);
+    Vec2::new(u.x * 2.0 - 1.0, 1.0 - u.y * 2.0)
 }
 
 /// A view ray rotated into world orientation. Twin of WGSL `world_ray` (a matrix-vector
 /// product: the adapter may fuse its multiply-adds, so agreement is within a few ULP, not bits).
 pub fn world_ray(view_ray: Vec3, view_to_world: Mat3) -> Vec3 {
-    view_to_world * view_ray
+    let m = Mat3::from_cols(
+        sane3(view_to_world.x_axis),
+        sane3(view_to_world.y_axis),
+        sane3(view_to_world.z_axis),
+    );
+    m * sane3(view_ray)
 }
 
 /// Position relative to the camera in world orientation: `ray · vz`.
 pub fn camera_relative_position(world_ray_dir: Vec3, view_z: f32) -> Vec3 {
-    world_ray_dir * view_z
+    sane3(world_ray_dir) * sane(view_z)
 }
 
 /// World position `camera + ray · vz`.
 pub fn world_position(world_ray_dir: Vec3, view_z: f32, camera_position: Vec3) -> Vec3 {
-    camera_position + world_ray_dir * view_z
+    sane3(camera_position) + sane3(world_ray_dir) * sane(view_z)
 }
 
 #[cfg(test)]

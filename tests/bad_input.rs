@@ -9,6 +9,9 @@ mod common;
 #[path = "bad_input/rows.rs"]
 mod rows;
 
+#[path = "common/dawn.rs"]
+mod dawn;
+
 use common::gpu;
 use prepass::harness::Arg;
 use rows::{Func, Row, V, funcs, rows, wgsl_helpers};
@@ -166,10 +169,18 @@ fn rust_twins_give_the_documented_answers() {
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
 
-#[test]
-fn wgsl_gives_the_documented_answers_on_the_adapter() {
+/// Every WGSL row of every function, one dispatch per function (one column per parameter),
+/// through `execute` (the wgpu adapter, or Dawn), checked against the documented answer bit for
+/// bit and for finiteness: WGSL leaves a run-time ±∞ or NaN indeterminate, so no shipped function
+/// may return one (the bits of `unpack2x16float`'s infinite and NaN halves are the builtin's,
+/// listed in `BUILTIN_NON_FINITE`). Returns the failures and the number of rows run.
+fn check_wgsl_rows(
+    execute: impl FnOnce(Vec<Job>) -> Vec<prepass::harness::Output>,
+) -> (Vec<String>, usize) {
     let mut wrong = Vec::new();
     let mut ran = 0;
+    let mut jobs = Vec::new();
+    let mut job_rows = Vec::new();
     for f in funcs() {
         let Some((source, name)) = f.wgsl else {
             continue;
@@ -178,7 +189,6 @@ fn wgsl_gives_the_documented_answers_on_the_adapter() {
         let kernel = gpu()
             .kernel(source, name)
             .unwrap_or_else(|e| panic!("{name}: {e}"));
-        // All of a function's rows in one dispatch: one column per parameter.
         let arity = kernel.signature().params.len();
         let mut columns = vec![Vec::new(); arity];
         for r in &rows {
@@ -187,11 +197,18 @@ fn wgsl_gives_the_documented_answers_on_the_adapter() {
                 words(a, col);
             }
         }
-        let args: Vec<Arg> = columns.iter().map(|c| Arg::column(c)).collect();
-        let out = kernel
-            .run(&args, rows.len() as u64)
-            .unwrap_or_else(|e| panic!("{name}: {e}"));
-        let width = kernel.signature().result.words();
+        jobs.push(Job {
+            source,
+            name,
+            columns,
+            n: rows.len() as u64,
+        });
+        job_rows.push(rows);
+    }
+    let names: Vec<&str> = jobs.iter().map(|j| j.name).collect();
+    let outputs = execute(jobs);
+    for ((name, rows), out) in names.iter().zip(job_rows).zip(outputs) {
+        let width = out.ty.words();
         for (r, w) in rows.iter().zip(out.words().chunks(width)) {
             let got = from_words(r.expect, w);
             ran += 1;
@@ -203,9 +220,93 @@ fn wgsl_gives_the_documented_answers_on_the_adapter() {
                     text(r.expect)
                 ));
             }
+            let finite = w.iter().all(|&b| b & 0x7f80_0000 != 0x7f80_0000)
+                || matches!(got, V::U32(_) | V::UVec2(_));
+            if !finite && !BUILTIN_NON_FINITE.contains(name) {
+                wrong.push(format!(
+                    "{}: WGSL `{name}` returns {}, not finite (WGSL leaves it indeterminate)",
+                    describe(r),
+                    text(got)
+                ));
+            }
         }
     }
+    (wrong, ran)
+}
+
+/// One function's rows, one column of words per parameter.
+struct Job {
+    source: &'static str,
+    name: &'static str,
+    columns: Vec<Vec<u32>>,
+    n: u64,
+}
+
+impl Job {
+    fn kernel(&self) -> prepass::harness::Kernel<'static> {
+        gpu()
+            .kernel(self.source, self.name)
+            .unwrap_or_else(|e| panic!("{}: {e}", self.name))
+    }
+
+    fn args(&self) -> Vec<Arg<'_>> {
+        self.columns.iter().map(|c| Arg::column(c)).collect()
+    }
+}
+
+/// Rows of WGSL builtins (not prepass functions) whose documented answer is the builtin's own
+/// non-finite one: `unpack2x16float` of infinite and NaN halves (exact, by the spec).
+const BUILTIN_NON_FINITE: &[&str] = &["bad_input_unpack2x16float"];
+
+#[test]
+fn wgsl_gives_the_documented_answers_on_the_adapter() {
+    let (wrong, ran) = check_wgsl_rows(|jobs| {
+        jobs.iter()
+            .map(|j| {
+                j.kernel()
+                    .run(&j.args(), j.n)
+                    .unwrap_or_else(|e| panic!("{}: {e}", j.name))
+            })
+            .collect()
+    });
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert!(ran > 0, "no WGSL row ran");
+}
+
+/// The same rows compiled by Tint and run through Dawn (Chrome's WebGPU): the bad-input
+/// contract must not depend on the WGSL compiler.
+#[test]
+fn wgsl_gives_the_documented_answers_on_dawn() {
+    let mut adapter = String::new();
+    let (wrong, ran) = check_wgsl_rows(|jobs| {
+        let dawn_jobs = jobs
+            .iter()
+            .map(|j| dawn::Job {
+                name: j.name.to_string(),
+                source: String::new(),
+                dispatch: Some(
+                    j.kernel()
+                        .dispatch(&j.args(), j.n)
+                        .unwrap_or_else(|e| panic!("{}: {e}", j.name)),
+                ),
+            })
+            .collect();
+        let (a, outcomes) = dawn::run(dawn_jobs);
+        adapter = a;
+        outcomes
+            .into_iter()
+            .map(|o| {
+                assert!(o.error.is_none(), "{}: Dawn: {:?}", o.name, o.error);
+                o.output.unwrap()
+            })
+            .collect()
+    });
+    eprintln!("Dawn ran {ran} rows on {adapter}");
+    assert!(
+        wrong.is_empty(),
+        "on Dawn ({adapter}):\n{}",
+        wrong.join("\n")
+    );
     assert!(ran > 0, "no WGSL row ran");
 }
 

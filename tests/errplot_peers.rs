@@ -45,8 +45,10 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
         "view_z_from_reversed_depth",
         &[BEVY_DEPTH],
         "the same error (one correctly rounded division); the extra instructions serve finite \
-         far planes with the same function and the bad-input contract (NaN → NaN, z clamped to \
-         [0, 1], z = 0 → +∞)",
+         far planes with the same function and the bad-input contract, whose every answer is \
+         finite as WGSL requires (NaN, the sky and planes no projection has → the sentinel \
+         f32::MAX, z clamped to [0, 1]); Bevy's divides by z = 0 into +∞, which WGSL leaves \
+         indeterminate",
     ),
     (
         "view_z_from_reversed_depth_consts",
@@ -271,5 +273,5 @@ fn peers_dominate_only_the_listed_functions_on_spirv_count() {
         "\nDominance on GPU ns, and every peer's error and cost: errplot's report \
          (\"Does a peer dominate a shipped function?\").\n",
     );
-    common::publish("README.md", "peers", &body);
+    common::publish_measured("README.md", "peers", &body);
 }

@@ -16,6 +16,9 @@
 
 mod common;
 
+#[path = "common/dawn.rs"]
+mod dawn;
+
 #[path = "../examples/light_prepass/renderer/mod.rs"]
 #[allow(dead_code)]
 mod renderer;
@@ -226,7 +229,7 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
         memory_at.1,
         table(&rows, memory_at, false)
     );
-    common::publish("README.md", "light-prepass", &body);
+    common::publish_measured("README.md", "light-prepass", &body);
     let find = |stem: &str| {
         rows.iter()
             .find(|r| r.cfg.file_stem() == stem)
@@ -296,6 +299,36 @@ fn png_pixels(path: &std::path::Path) -> Vec<[u8; 3]> {
 /// Bad input: a resolution of 0 and one beyond the adapter's limit are clear errors; the
 /// frame's own bad-input lights (at the camera, through the near plane, radius 0) and its sky
 /// render finite pixels; MSAA, where the adapter has it, renders finite pixels per sample.
+/// The renderer's shaders (every layout the report renders, single-sampled and 4× MSAA) compile
+/// with Tint too, through Dawn.
+#[test]
+fn light_prepass_shaders_compile_with_tint() {
+    let mut modules = Vec::new();
+    for lights in [
+        prepass::scene::LightBuffers::One,
+        prepass::scene::LightBuffers::Two,
+    ] {
+        let mut layouts = vec![(Storage::Fat, lights)];
+        layouts.extend(renderer::diet_layouts(lights));
+        for (storage, lights_layout) in layouts {
+            for msaa in [1, 4] {
+                let cfg = Config {
+                    storage,
+                    lights_layout,
+                    msaa,
+                    ..small()
+                };
+                let crate_wgsl = cfg.scene().wgsl().unwrap();
+                modules.push((
+                    format!("{} msaa {msaa}", cfg.layout_name()),
+                    renderer::shaders::module(&cfg, &crate_wgsl),
+                ));
+            }
+        }
+    }
+    dawn::assert_compile(modules);
+}
+
 #[test]
 fn light_prepass_bad_input() {
     let dev = device();

@@ -3,6 +3,9 @@
 
 mod common;
 
+#[path = "common/dawn.rs"]
+mod dawn;
+
 use prepass::projection::DepthConvention;
 use prepass::scene::gbuffer::{GBufferLayout, Target, TargetFormat, megabytes};
 use prepass::scene::{
@@ -140,6 +143,30 @@ fn all_scenes() -> Vec<Scene> {
         }
     }
     v
+}
+
+/// Every distinct composed module compiles with Tint too (through Dawn): one module per distinct
+/// root set, as above.
+#[test]
+fn every_distinct_module_compiles_with_tint() {
+    let lib = Library::shipped().unwrap();
+    let mut by_roots: BTreeSet<Vec<&str>> = BTreeSet::new();
+    for s in all_scenes() {
+        if let Ok(mut roots) = s.roots() {
+            roots.sort_unstable();
+            by_roots.insert(roots);
+        }
+    }
+    let modules: Vec<(String, String)> = by_roots
+        .iter()
+        .map(|roots| {
+            (
+                format!("composed [{}]", roots.join(", ")),
+                lib.compose(roots.iter().copied()).unwrap(),
+            )
+        })
+        .collect();
+    dawn::assert_compile(modules);
 }
 
 #[test]

@@ -4,6 +4,9 @@
 
 mod common;
 
+#[path = "common/dawn.rs"]
+mod dawn;
+
 use std::path::{Path, PathBuf};
 
 fn wgsl_files(dir: &str) -> Vec<PathBuf> {
@@ -59,6 +62,25 @@ fn every_baseline_file_validates_and_translates() {
     for f in wgsl_files("tests/baselines") {
         check(&f);
     }
+}
+
+/// Tint (Chrome's WGSL compiler, through Dawn) accepts every shipped and baseline file: naga is
+/// not the only compiler a renderer meets (Tint rejects, for one, a constant that is not a
+/// finite f32, which naga accepts).
+#[test]
+fn every_shipped_and_baseline_file_compiles_with_tint() {
+    let mut modules = Vec::new();
+    for dir in ["wgsl", "tests/baselines"] {
+        for path in wgsl_files(dir) {
+            let source = std::fs::read_to_string(&path).expect("read wgsl");
+            modules.push((
+                format!("{dir}/{}", path.file_name().unwrap().to_string_lossy()),
+                source,
+            ));
+        }
+    }
+    assert!(modules.len() >= prepass::wgsl::FILES.len());
+    dawn::assert_compile(modules);
 }
 
 #[test]

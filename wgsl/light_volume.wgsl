@@ -34,6 +34,13 @@ fn light_volume_finite3(v: vec3<f32>) -> bool {
     return all((bitcast<vec3<u32>>(v) & vec3<u32>(0x7fffffffu)) < vec3<u32>(0x7f800000u));
 }
 
+// Whether a + b (both finite, b >= 0) would round past the largest f32: decided on the halves,
+// whose sum cannot overflow, so no addition ever produces +inf (WGSL leaves a run-time infinity
+// indeterminate). Halving is exact and commutes with rounding for normal values.
+fn light_volume_sum_overflows(a: f32, b: f32) -> bool {
+    return a * 0.5 + b * 0.5 > 0x1.fffffep+126f;
+}
+
 // rho: distance from the eye to the corners of the near-plane rectangle,
 // near·sqrt(1 + tan_half_fov_x² + tan_half_fov_y²). Bad input (NaN/Inf, negative) gives +Inf's
 // stand-in 3.4e38, which makes every volume need depth-fail.
@@ -55,11 +62,11 @@ fn light_volume_sphere_needs_depth_fail(center: vec3<f32>, radius: f32, near_cor
         || !light_volume_finite(near_corner_distance) || radius < 0.0 || near_corner_distance < 0.0) {
         return 1u;
     }
-    // A reach beyond f32 (r + rho overflows) touches every finite centre.
-    let sum = radius + near_corner_distance;
-    if (!light_volume_finite(sum)) {
+    // A reach beyond f32 (r + rho would overflow) touches every finite centre.
+    if (light_volume_sum_overflows(radius, near_corner_distance)) {
         return 1u;
     }
+    let sum = radius + near_corner_distance;
     // Scale by the largest magnitude so the squares cannot overflow.
     let a = abs(center);
     let s = max(max(a.x, max(a.y, a.z)), sum);
@@ -91,10 +98,14 @@ fn light_volume_cone_needs_depth_fail(apex: vec3<f32>, axis: vec3<f32>, range_ta
     // One power of two scales every length so the largest lies in [1, 4): squares then neither
     // underflow nor overflow, and wherever they did not the decision is unchanged (each step is
     // homogeneous in the lengths, and power-of-two scaling is exact).
+    // h·tan beyond f32 (decided on h·2^-64, exact for h >= 2^-62 and harmless below): depth-fail.
+    if (k > 0x1p+64f || (h * 0x1p-64f) * k > 0x1.fffffep+63f) {
+        return 1u;
+    }
     let ap = abs(apex);
     let big = max(max(max(ap.x, ap.y), max(ap.z, h)), max(h * k, near_corner_distance));
-    if (big == 0.0 || !light_volume_finite(big)) {
-        return 1u; // the apex at the eye, or h·tan beyond f32
+    if (big == 0.0) {
+        return 1u; // the apex at the eye
     }
     let sc = bitcast<f32>(max(254u - ((bitcast<u32>(big) >> 23u) & 0xffu), 1u) << 23u);
     return light_volume_cone_scaled(apex * sc, axis, h * sc, k, near_corner_distance * sc);
@@ -132,20 +143,35 @@ fn light_volume_cone_scaled(apex: vec3<f32>, axis: vec3<f32>, h: f32, k: f32,
 // Window depth of a view depth vz (near <= vz <= far): standard z = f(vz − n)/((f − n)·vz),
 // written (f/(f − n))·(1 − n/vz); reversed 1 − z = (n/(f − n))·(f/vz − 1); infinite far
 // (far = +Inf): 1 − n/vz and n/vz. reversed: 0 standard, anything else reversed.
-// Bad input: no guards (sphere_depth_bounds clips vz to [near, far] first): outside it the
-// formula extrapolates, NaN propagates.
+// Bad input (every result finite, in [0, 1] up to rounding): vz is clamped to [near, far];
+// NaN or +Inf vz (from its bits) and planes no projection has (near not positive and finite,
+// far not above near nor +Inf) give the far end (1 standard, 0 reversed).
 fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32 {
     let infinite = bitcast<u32>(far) == 0x7f800000u;
+    let far_end = select(1.0, 0.0, reversed != 0u);
+    let vz_bits = bitcast<u32>(vz);
+    if (!light_volume_finite(near) || !(near > 0.0)
+        || !(infinite || (light_volume_finite(far) && far > near))
+        || (vz_bits & 0x7fffffffu) > 0x7f800000u || vz_bits == 0x7f800000u) {
+        return far_end;
+    }
+    var v = near; // -Inf: the near plane
+    if (vz_bits != 0xff800000u) {
+        v = max(vz, near);
+        if (!infinite) {
+            v = min(v, far);
+        }
+    }
     if (reversed == 0u) {
         if (infinite) {
-            return 1.0 - near / vz;
+            return 1.0 - near / v;
         }
-        return (far / (far - near)) * (1.0 - near / vz);
+        return (far / (far - near)) * (1.0 - near / v);
     }
     if (infinite) {
-        return near / vz;
+        return near / v;
     }
-    return (near / (far - near)) * (far / vz - 1.0);
+    return (near / (far - near)) * (far / v - 1.0);
 }
 
 // Depth-bounds range (min, max window depth) that contains every point of a sphere light of
@@ -162,10 +188,13 @@ fn light_volume_sphere_depth_bounds(center_z: f32, radius: f32, near: f32, far: 
         return vec2<f32>(0.0, 1.0);
     }
     let lo = max(center_z - radius, near);
-    let sum = center_z + radius;
-    // c + r may overflow (checked from its bits): it then lies beyond any finite far.
-    let sum_finite = light_volume_finite(sum);
-    var hi = sum;
+    // c + r may overflow (decided without computing it): it then lies beyond any finite far.
+    let sum_finite = !light_volume_sum_overflows(center_z, radius);
+    var hi = far;
+    if (sum_finite) {
+        hi = center_z + radius;
+    }
+    let sum = hi;
     if (!infinite && (!sum_finite || sum > far)) {
         hi = far;
     }

@@ -16,8 +16,13 @@
 // integers, so no reassociation a conforming adapter may apply brings the cancellation back.
 // Error bounds, correctly rounded and on every conforming adapter: src/linear_depth.rs, `bounds`.
 //
-// Special values are built and detected through bits: WGSL lets an implementation assume that
-// float operations never see or produce NaN or infinity.
+// Every result is finite: WGSL lets an implementation assume that no float operation sees or
+// produces NaN or infinity, and a constant expression that evaluates to one is a
+// shader-creation error. Special inputs are detected from their bits; a distance of 2^127 or
+// more (the far plane of an infinite projection, the sky, the depths next to it) and NaN depth
+// return the sky sentinel 0x1.fffffep+127f (3.40282347e38, the largest finite f32; Rust
+// `linear_depth::SKY`), so a pass tests `vz >= 0x1.fffffep+127f` for the sky (Tint rejects the
+// decimal 3.4028235e38, which lies above it, rather than round it down).
 
 // Whether x is NaN, from its bits (WGSL may assume no NaN in float comparisons).
 fn ld_is_nan(x: f32) -> bool {
@@ -27,16 +32,6 @@ fn ld_is_nan(x: f32) -> bool {
 // Whether x is +-inf, from its bits.
 fn ld_is_inf(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7fffffffu) == 0x7f800000u;
-}
-
-// +inf, built from bits.
-fn ld_positive_inf() -> f32 {
-    return bitcast<f32>(0x7f800000u);
-}
-
-// A quiet NaN, built from bits.
-fn ld_nan() -> f32 {
-    return bitcast<f32>(0x7fc00000u);
 }
 
 // n/f, exactly 0 for an infinite far plane.
@@ -55,64 +50,129 @@ fn ld_one_minus(z: f32) -> f32 {
     return f32(0x800000u - (bitcast<u32>(z) & 0x7fffffu)) * 5.9604644775390625e-8;
 }
 
-// numerator / s, with s == 0 (the far plane of an infinite projection) giving +inf.
-fn ld_divide_or_inf(numerator: f32, s: f32) -> f32 {
-    if (s == 0.0) {
-        return ld_positive_inf();
+// numerator / s for a numerator in (0, f32 max] and s >= 0, or the sky sentinel where the
+// quotient would be 2^127 or more (s = 0 included) or s is subnormal (an adapter may flush it
+// to 0 in the division though not in a comparison: the sky either way, and only depths within
+// 2^-126 of the sky's reach it). The test s·2^127 <= numerator is exact (a power-of-two scaling
+// of s < 2 cannot overflow), so no division overflows to +inf.
+fn ld_divide_or_sky(numerator: f32, s: f32) -> f32 {
+    if (s < 0x1p-126f || (s < 2.0 && s * 0x1p+127f <= numerator)) {
+        return 0x1.fffffep+127f;
     }
     return numerator / s;
 }
 
+// Whether per-projection constants are usable, from their bits (so no arithmetic sees NaN or
+// infinity): k0 (n or n·(2^24 - 1)) positive and finite, the ratios k1, k2 in [+0, 1], as every
+// Projection gives. Anything else gives the sky.
+fn ld_consts_ok(k: vec3<f32>) -> bool {
+    return all(bitcast<vec3<u32>>(k) - vec3<u32>(1u, 0u, 0u)
+        <= vec3<u32>(0x7f7ffffeu, 0x3f800000u, 0x3f800000u));
+}
+
+// Whether near and far are planes a projection can have, from their bits: near positive,
+// finite and below 2^100 (so near·(2^24 - 1) stays finite), far above near or +inf.
+fn ld_planes_ok(near: f32, far: f32) -> bool {
+    let bf = bitcast<u32>(far);
+    return bitcast<u32>(near) - 1u < 0x717fffffu
+        && (bf == 0x7f800000u || (bf < 0x7f800000u && far > near));
+}
+
+// z clamped to [0, 1] from its bits (negative, -0 and -inf to 0; 1 and above, +inf, to 1), so
+// no comparison sees an infinity. z is not NaN.
+fn ld_clamp_unit(z: f32) -> f32 {
+    let b = bitcast<u32>(z);
+    return select(select(z, 1.0, b >= 0x3f800000u), 0.0, b >= 0x80000000u);
+}
+
+// The 24-bit path on checked constants k = (n·(2^24 - 1), n/f).
+fn ld_view_z_depth24(d: u32, k: vec2<f32>) -> f32 {
+    let code = min(d, 0xffffffu);
+    // Both terms are exact integers or products of them: no cancellation.
+    let s = f32(0xffffffu - code) + f32(code) * k.y;
+    return ld_divide_or_sky(k.x, s);
+}
+
+// The standard float path on checked constants k = (n, n/f, (f - n)/f).
+// Below z = 0.5, 1 - z would round while z·(n/f) keeps growing, so the result could step
+// backwards by an ULP; there 1 - z·(1 - n/f) is used instead (no cancellation: z·(1 - n/f) < 0.5),
+// and every step is a monotonic rounding, so view distance never decreases as z grows.
+fn ld_view_z_standard(z: f32, k: vec3<f32>) -> f32 {
+    if (ld_is_nan(z)) {
+        return 0x1.fffffep+127f;
+    }
+    let zc = ld_clamp_unit(z);
+    let s = select(ld_one_minus(zc) + zc * k.y, 1.0 - zc * k.z, zc < 0.5);
+    return ld_divide_or_sky(k.x, s);
+}
+
+// The reversed float path on checked constants k = (n, (f - n)/f, n/f).
+fn ld_view_z_reversed(z: f32, k: vec3<f32>) -> f32 {
+    if (ld_is_nan(z)) {
+        return 0x1.fffffep+127f;
+    }
+    let zc = ld_clamp_unit(z);
+    let s = zc * k.y + k.z;
+    return ld_divide_or_sky(k.x, s);
+}
+
 // View distance of a 24-bit standard-convention depth code (0 = near, 2^24 - 1 = far).
-// Codes above 2^24 - 1 saturate to 2^24 - 1; the far code of an infinite projection is +inf.
+// Codes above 2^24 - 1 saturate to 2^24 - 1; the far code of an infinite projection gives the
+// sky sentinel 0x1.fffffep+127f, as do planes no projection has (ld_planes_ok).
 fn view_z_from_depth24(d: u32, near: f32, far: f32) -> f32 {
-    return view_z_from_depth24_consts(d, vec2<f32>(near * 16777215.0, ld_near_over_far(near, far)));
+    if (!ld_planes_ok(near, far)) {
+        return 0x1.fffffep+127f;
+    }
+    return ld_view_z_depth24(d, vec2<f32>(near * 16777215.0, ld_near_over_far(near, far)));
 }
 
 // View distance of a 24-bit standard-convention depth code, from per-projection constants
 // k = (n·(2^24 - 1), n/f) (Projection::depth24_consts): fewer operations per pixel.
+// Constants no Projection gives (NaN, infinite, k.x <= 0, k.y outside [+0, 1]) give the sky.
 fn view_z_from_depth24_consts(d: u32, k: vec2<f32>) -> f32 {
-    let code = min(d, 0xffffffu);
-    // Both terms are exact integers or products of them: no cancellation.
-    let s = f32(0xffffffu - code) + f32(code) * k.y;
-    return ld_divide_or_inf(k.x, s);
+    if (!ld_consts_ok(vec3<f32>(k, 0.0))) {
+        return 0x1.fffffep+127f;
+    }
+    return ld_view_z_depth24(d, k);
 }
 
 // View distance of a float standard-convention depth z (0 = near, 1 = far).
-// z is clamped to [0, 1]; NaN gives NaN; z = 1 with an infinite far plane gives +inf.
+// z is clamped to [0, 1]; NaN z, z = 1 with an infinite far plane, and planes no projection
+// has give the sky sentinel 0x1.fffffep+127f.
 fn view_z_from_depth(z: f32, near: f32, far: f32) -> f32 {
+    if (!ld_planes_ok(near, far)) {
+        return 0x1.fffffep+127f;
+    }
     let r = ld_near_over_far(near, far);
-    return view_z_from_depth_consts(z, vec3<f32>(near, r, 1.0 - r));
+    return ld_view_z_standard(z, vec3<f32>(near, r, 1.0 - r));
 }
 
 // View distance of a float standard-convention depth, from per-projection constants
-// k = (n, n/f, (f - n)/f) (Projection::depth_consts).
-// Below z = 0.5, 1 - z would round while z·(n/f) keeps growing, so the result could step
-// backwards by an ULP; there 1 - z·(1 - n/f) is used instead (no cancellation: z·(1 - n/f) < 0.5),
-// and every step is a monotonic rounding, so view distance never decreases as z grows.
+// k = (n, n/f, (f - n)/f) (Projection::depth_consts). Constants no Projection gives give the sky.
 fn view_z_from_depth_consts(z: f32, k: vec3<f32>) -> f32 {
-    if (ld_is_nan(z)) {
-        return ld_nan();
+    if (!ld_consts_ok(k)) {
+        return 0x1.fffffep+127f;
     }
-    let zc = clamp(z, 0.0, 1.0);
-    let s = select(ld_one_minus(zc) + zc * k.y, 1.0 - zc * k.z, zc < 0.5);
-    return ld_divide_or_inf(k.x, s);
+    return ld_view_z_standard(z, k);
 }
 
 // View distance of a float reversed-convention depth z (1 = near, 0 = far).
-// z is clamped to [0, 1]; NaN gives NaN; z = 0 with an infinite far plane (the sky) gives +inf.
+// z is clamped to [0, 1]; NaN z, z = 0 with an infinite far plane (the sky), and planes no
+// projection has give the sky sentinel 0x1.fffffep+127f.
 fn view_z_from_reversed_depth(z: f32, near: f32, far: f32) -> f32 {
+    if (!ld_planes_ok(near, far)) {
+        return 0x1.fffffep+127f;
+    }
     let r = ld_near_over_far(near, far);
-    return view_z_from_reversed_depth_consts(z, vec3<f32>(near, 1.0 - r, r));
+    return ld_view_z_reversed(z, vec3<f32>(near, 1.0 - r, r));
 }
 
 // View distance of a float reversed-convention depth, from per-projection constants
-// k = (n, (f - n)/f, n/f) (Projection::reversed_depth_consts).
+// k = (n, (f - n)/f, n/f) (Projection::reversed_depth_consts). Constants no Projection gives
+// give the sky.
 fn view_z_from_reversed_depth_consts(z: f32, k: vec3<f32>) -> f32 {
-    if (ld_is_nan(z)) {
-        return ld_nan();
+    if (!ld_consts_ok(k)) {
+        return 0x1.fffffep+127f;
     }
-    let zc = clamp(z, 0.0, 1.0);
-    let s = zc * k.y + k.z;
-    return ld_divide_or_inf(k.x, s);
+    return ld_view_z_reversed(z, k);
 }

@@ -46,10 +46,18 @@ fn lpp_direction(v: vec3<f32>) -> vec3<f32> {
     return s * inverseSqrt(dot(s, s));
 }
 
-// Luminance (Rec. 709 weights) of a light-buffer colour. A plain dot product: NaN and ±Inf
-// propagate and negative channels count (callers clamp colours first).
+// Luminance (Rec. 709 weights) of a light-buffer colour. Negative channels count (callers clamp
+// colours first). Bad input: the result is finite — each channel is read from its bits first,
+// NaN -> 0, +-inf -> +-2^126, finite channels clamped to [-2^126, 2^126], so the sum cannot
+// overflow (the weights sum to 1).
 fn lpp_luminance(rgb: vec3<f32>) -> f32 {
-    return dot(rgb, LPP_LUMINANCE);
+    let bits = bitcast<vec3<u32>>(rgb);
+    let mag = bits & vec3<u32>(0x7fffffffu);
+    let big = select(vec3<f32>(0x1p+126f), vec3<f32>(-0x1p+126f),
+        (bits & vec3<u32>(0x80000000u)) != vec3<u32>(0u));
+    let finite = clamp(select(rgb, vec3<f32>(0.0), mag >= vec3<u32>(0x7f800000u)),
+        vec3<f32>(-0x1p+126f), vec3<f32>(0x1p+126f));
+    return dot(select(finite, big, mag == vec3<u32>(0x7f800000u)), LPP_LUMINANCE);
 }
 
 // x^y for a cosine x and an exponent y >= 0: clamped to [0, 1], 0 for x <= 0 and when the

@@ -484,17 +484,7 @@ impl Kernel<'_> {
             let groups = count.div_ceil(wg);
             let gx = groups.min(per_dim);
             let gy = groups.div_ceil(gx);
-            let mut uniform = vec![count as u32, (gx * wg) as u32, 0, 0];
-            for a in args {
-                uniform.extend_from_slice(&match *a {
-                    Arg::Splat(v) => v,
-                    Arg::Index { start } => [start.wrapping_add(first as u32), 0, 0, 0],
-                    Arg::Column(_) => [0; 4],
-                });
-            }
-            if args.is_empty() {
-                uniform.extend_from_slice(&[0; 4]);
-            }
+            let uniform = chunk_uniform(args, first, count, gx * wg);
             gpu.queue
                 .write_buffer(&params, 0, bytemuck::cast_slice(&uniform));
             for (k, buf, stride) in &columns {
@@ -528,6 +518,62 @@ impl Kernel<'_> {
             first += count;
         }
         Ok(())
+    }
+
+    /// The single dispatch that applies the function to `n ≤ MAX_CHUNK` elements, described for
+    /// another WebGPU implementation to run (e.g. Dawn, with Tint as its compiler, through
+    /// node): the module with its generated entry point, the uniform and column buffers in
+    /// binding order, and the workgroup grid. Its results read back through
+    /// [`Dispatch::output`] into the same [`Output`] a [`Kernel::run`] gives, so figures from
+    /// either implementation compare directly. The module is validated by naga first.
+    pub fn dispatch(&self, args: &[Arg<'_>], n: u64) -> Result<Dispatch, HarnessError> {
+        self.check_arity(args)?;
+        if n == 0 || n > MAX_CHUNK {
+            return Err(HarnessError::Arguments(format!(
+                "a Dispatch holds 1 to {MAX_CHUNK} elements, not {n}"
+            )));
+        }
+        let sig = &self.signature;
+        let mut columns = Vec::new();
+        for (p, a) in sig.params.iter().zip(args) {
+            match a {
+                Arg::Column(bytes) => {
+                    if bytes.len() as u64 != n * p.ty.words() as u64 * 4 {
+                        return Err(HarnessError::Arguments(format!(
+                            "column for `{}: {}` holds {} bytes; {n} elements need {}",
+                            p.name,
+                            p.ty,
+                            bytes.len(),
+                            n * p.ty.words() as u64 * 4
+                        )));
+                    }
+                    columns.push(bytes.to_vec());
+                }
+                Arg::Index { .. } if p.ty.lanes != 1 => {
+                    return Err(HarnessError::Arguments(format!(
+                        "Arg::Index feeds scalars; `{}` is {}",
+                        p.name, p.ty
+                    )));
+                }
+                _ => {}
+            }
+        }
+        let source = self.generated_source(args);
+        parse_and_validate(&source).map_err(|e| HarnessError::Shader(e.to_string()))?;
+        // WebGPU's guaranteed limit of workgroups per dimension.
+        let wg = u64::from(WORKGROUP_SIZE);
+        let groups = n.div_ceil(wg);
+        let gx = groups.min(65_535);
+        let gy = groups.div_ceil(gx);
+        Ok(Dispatch {
+            source,
+            entry: codegen::ENTRY,
+            uniform: chunk_uniform(args, 0, n, gx * wg),
+            columns,
+            groups: [gx as u32, gy as u32],
+            count: n,
+            result: sig.result,
+        })
     }
 
     fn pipeline(&self, args: &[Arg<'_>]) -> Result<wgpu::ComputePipeline, HarnessError> {
@@ -564,6 +610,69 @@ impl Kernel<'_> {
             return Err(HarnessError::Shader(e.to_string()));
         }
         Ok(pipeline)
+    }
+}
+
+/// The uniform words of one chunk (`codegen::uniform_words` layout): count, row stride, two pad
+/// words, then one slot per argument (a splat's value, an index feed's start for this chunk).
+fn chunk_uniform(args: &[Arg<'_>], first: u64, count: u64, row_stride: u64) -> Vec<u32> {
+    let mut uniform = vec![count as u32, row_stride as u32, 0, 0];
+    for a in args {
+        uniform.extend_from_slice(&match *a {
+            Arg::Splat(v) => v,
+            Arg::Index { start } => [start.wrapping_add(first as u32), 0, 0, 0],
+            Arg::Column(_) => [0; 4],
+        });
+    }
+    if args.is_empty() {
+        uniform.extend_from_slice(&[0; 4]);
+    }
+    uniform
+}
+
+/// One dispatch of a [`Kernel`], self-contained, for a WebGPU implementation other than wgpu
+/// (see [`Kernel::dispatch`]). Bind group 0: binding 0 the uniform buffer (`uniform`), bindings
+/// 1… the storage buffers of `columns` in order, the last binding the output buffer of
+/// `count × result.words()` words; dispatch `groups[0] × groups[1]` workgroups of
+/// [`WORKGROUP_SIZE`] on entry point `entry`.
+#[derive(Clone, Debug)]
+pub struct Dispatch {
+    /// The function's source with the generated entry point appended.
+    pub source: String,
+    /// The entry point's name.
+    pub entry: &'static str,
+    /// The uniform buffer's words.
+    pub uniform: Vec<u32>,
+    /// Each column's bytes, in binding order.
+    pub columns: Vec<Vec<u8>>,
+    /// Workgroups in x and y.
+    pub groups: [u32; 2],
+    /// Elements.
+    pub count: u64,
+    /// Type of each result.
+    pub result: ValueType,
+}
+
+impl Dispatch {
+    /// Words the output buffer holds.
+    pub fn output_words(&self) -> usize {
+        self.count as usize * self.result.words()
+    }
+
+    /// The results another implementation read back, as the harness's [`Output`]; an error
+    /// unless there are exactly [`Dispatch::output_words`] of them.
+    pub fn output(&self, words: Vec<u32>) -> Result<Output, HarnessError> {
+        if words.len() != self.output_words() {
+            return Err(HarnessError::Readback(format!(
+                "{} words read back, {} expected",
+                words.len(),
+                self.output_words()
+            )));
+        }
+        Ok(Output {
+            ty: self.result,
+            words,
+        })
     }
 }
 

@@ -50,6 +50,12 @@ fn light_volume_finite3(v: Vec3) -> bool {
     light_volume_finite(v.x) && light_volume_finite(v.y) && light_volume_finite(v.z)
 }
 
+/// Whether `a + b` (finite, `b ≥ 0`) would round past `f32::MAX`, decided on the halves so no
+/// addition produces `+∞` (WGSL `light_volume_sum_overflows`).
+fn light_volume_sum_overflows(a: f32, b: f32) -> bool {
+    a * 0.5 + b * 0.5 > f32::MAX * 0.5
+}
+
 /// `ρ = near·√(1 + tan_x² + tan_y²)`: distance from the eye to the near-plane rectangle's
 /// corners. Bad input (NaN/Inf, negative) → `3.4e38` (every volume then needs depth-fail).
 pub fn light_volume_near_corner_distance(
@@ -87,10 +93,10 @@ pub fn light_volume_sphere_needs_depth_fail(
     }
     // A reach beyond f32 (r + ρ overflows) touches every finite centre (found by the fuzz
     // target `lighting`: r = 3.39e38, ρ = f32::MAX used to give 0).
-    let sum = radius + near_corner_distance;
-    if !light_volume_finite(sum) {
+    if light_volume_sum_overflows(radius, near_corner_distance) {
         return 1;
     }
+    let sum = radius + near_corner_distance;
     let s = center.abs().max_element().max(sum);
     if s == 0.0 || s.to_bits() < 0x0080_0000 {
         return 1;
@@ -127,14 +133,20 @@ pub fn light_volume_cone_needs_depth_fail(
     // underflow nor overflow (lengths near 1e-22 used to lose the apex: found by the fuzz target
     // `lighting`), and wherever they did not the decision is unchanged (each step is homogeneous
     // in the lengths, and power-of-two scaling is exact).
+    // h·tan beyond f32 (decided on h·2^-64, exact for h ≥ 2^-62 and harmless below, so no
+    // product produces +∞): depth-fail.
+    const TWO_64: f32 = 1.844_674_4e19;
+    if k > TWO_64 || (h * (1.0 / TWO_64)) * k > f32::MAX / TWO_64 {
+        return 1;
+    }
     let big = apex
         .abs()
         .max_element()
         .max(h)
         .max(h * k)
         .max(near_corner_distance);
-    if big == 0.0 || !light_volume_finite(big) {
-        return 1; // the apex at the eye, or h·tan beyond f32
+    if big == 0.0 {
+        return 1; // the apex at the eye
     }
     let sc = f32::from_bits((254 - ((big.to_bits() >> 23) & 0xff)).max(1) << 23);
     cone_scaled(apex * sc, axis, h * sc, k, near_corner_distance * sc)
@@ -172,17 +184,34 @@ fn cone_scaled(apex: Vec3, axis: Vec3, h: f32, k: f32, near_corner_distance: f32
 /// Window depth of view depth `vz` (see the module docs for the forms); `far = +∞` allowed.
 /// Error: within `8u·(1 + f/(f − n))` of the exact value (module docs).
 ///
-/// **Bad input:** no guards (it serves [`light_volume_sphere_depth_bounds`], which clips `vz` to
-/// `[near, far]` first): outside that interval the formula extrapolates (`vz = +∞` gives
-/// `f/(f − n)` standard, 1 and 0 for infinite far), and NaN propagates. The WGSL's
-/// `reversed` argument is 0 for standard and anything else for reversed.
+/// **Bad input (every result finite):** `vz` is clamped to `[near, far]`; NaN or `+∞` `vz` and
+/// planes no projection has (`near` not positive and finite, `far` neither above `near` nor
+/// `+∞`) give the far end (1 standard, 0 reversed). The WGSL's `reversed` argument is 0 for
+/// standard and anything else for reversed.
 pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: DepthConvention) -> f32 {
     let infinite = far == f32::INFINITY;
+    let far_end = match convention {
+        DepthConvention::Standard => 1.0,
+        DepthConvention::Reversed => 0.0,
+    };
+    if !light_volume_finite(near)
+        || near <= 0.0
+        || !(infinite || (light_volume_finite(far) && far > near))
+        || vz.is_nan()
+        || vz == f32::INFINITY
+    {
+        return far_end;
+    }
+    let v = if infinite {
+        vz.max(near)
+    } else {
+        vz.clamp(near, far)
+    };
     match (convention, infinite) {
-        (DepthConvention::Standard, true) => 1.0 - near / vz,
-        (DepthConvention::Standard, false) => (far / (far - near)) * (1.0 - near / vz),
-        (DepthConvention::Reversed, true) => near / vz,
-        (DepthConvention::Reversed, false) => (near / (far - near)) * (far / vz - 1.0),
+        (DepthConvention::Standard, true) => 1.0 - near / v,
+        (DepthConvention::Standard, false) => (far / (far - near)) * (1.0 - near / v),
+        (DepthConvention::Reversed, true) => near / v,
+        (DepthConvention::Reversed, false) => (near / (far - near)) * (far / v - 1.0),
     }
 }
 
@@ -221,8 +250,9 @@ pub fn light_volume_sphere_depth_bounds(
         return Vec2::new(0.0, 1.0);
     }
     let lo = (center_z - radius).max(near);
-    let sum = center_z + radius;
-    let sum_finite = light_volume_finite(sum);
+    // c + r may overflow (decided without computing it): it then lies beyond any finite far.
+    let sum_finite = !light_volume_sum_overflows(center_z, radius);
+    let sum = if sum_finite { center_z + radius } else { far };
     let mut hi = sum;
     if !infinite && (!sum_finite || sum > far) {
         hi = far;

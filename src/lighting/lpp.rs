@@ -53,10 +53,14 @@ pub fn lpp_direction(v: Vec3) -> Vec3 {
 /// Luminance `0.2126 r + 0.7152 g + 0.0722 b` (a dot product: error within 3 ULP of the
 /// exact sum for non-negative channels, products and sums each correctly rounded or fused).
 ///
-/// **Bad input:** none is guarded: NaN and `±∞` propagate as IEEE arithmetic does and
-/// negative channels count (callers clamp colours with [`lpp_clamp_colour`] first).
+/// **Bad input:** the result is finite (WGSL may assume no NaN or ±∞ at run time): each
+/// channel is read from its bits first, NaN → 0, ±∞ → ±2^126, finite channels clamped to
+/// `[−2^126, 2^126]`, so the weighted sum cannot overflow. Negative channels count (callers
+/// clamp colours with [`lpp_clamp_colour`] first).
 pub fn lpp_luminance(rgb: Vec3) -> f32 {
-    rgb.dot(LPP_LUMINANCE)
+    const BIG: f32 = 8.507_059e37; // 2^126
+    let lane = |c: f32| if c.is_nan() { 0.0 } else { c.clamp(-BIG, BIG) };
+    Vec3::new(lane(rgb.x), lane(rgb.y), lane(rgb.z)).dot(LPP_LUMINANCE)
 }
 
 /// `x^y` for a cosine `x` and exponent `y ≥ 0`, computed as `exp2(y·log2 x)`: 0 for `x ≤ 0`

@@ -60,16 +60,29 @@ pub struct LinearStats {
     pub twin_differ: u64,
 }
 
-/// Error of `got` against `exact` in ULPs, with `+∞` the right answer past `f32::MAX`.
+/// Distances at or above this (`2^127`) are the sky: the functions return
+/// [`crate::linear_depth::SKY`] for them (`ld_divide_or_sky`).
+const SKY_FROM: f64 = 1.701_411_834_604_692_3e38;
+
+/// Error of `got` against `exact` in ULPs, with [`crate::linear_depth::SKY`] the right answer
+/// where the exact distance is `2^127` or more (`+∞` included): 0 for it, `+∞` for anything else.
 pub fn distance_error(got: f32, exact: f64) -> f64 {
-    if (exact as f32).is_infinite() {
-        return if got == exact as f32 {
+    if exact >= SKY_FROM {
+        return if got == crate::linear_depth::SKY {
             0.0
         } else {
             f64::INFINITY
         };
     }
     ulp_error(got, exact)
+}
+
+/// Whether `got` is the sky sentinel for a subnormal float depth of an infinite projection:
+/// the functions' denominator is then subnormal (reversed) and they return
+/// [`crate::linear_depth::SKY`], as an adapter that flushes the depth to 0 would anyway
+/// (`ld_divide_or_sky`); counted as exact.
+pub fn subnormal_sky(depth: f32, far: f32, got: f32) -> bool {
+    far.is_infinite() && depth.abs() < f32::MIN_POSITIVE && got == crate::linear_depth::SKY
 }
 
 fn measure(
@@ -82,8 +95,8 @@ fn measure(
     for (i, &g) in got.iter().enumerate() {
         let e = exact(i);
         s.ulps.add(i as u64, distance_error(g, e));
-        let rel = if (e as f32).is_infinite() {
-            if g == f32::INFINITY {
+        let rel = if e >= SKY_FROM {
+            if g == crate::linear_depth::SKY {
                 0.0
             } else {
                 f64::INFINITY
@@ -179,6 +192,7 @@ pub fn float_sweep(
         .run(&args, depths.len() as u64)?;
     let got = out.as_f32().to_vec();
     let exact = |i: usize| match convention {
+        _ if subnormal_sky(depths[i], case.far, got[i]) => f64::INFINITY,
         DepthConvention::Standard => {
             crate::linear_depth::exact::view_z_from_depth(depths[i], case.near, case.far)
         }
@@ -445,10 +459,7 @@ pub fn sampled_worst(path: &Path, run: &RunBatch<'_>) -> Result<(f64, String), H
             } else {
                 crate::linear_depth::exact::view_z_from_reversed_depth(depths[i], n, f)
             };
-            let flushed_sky = !path.code
-                && f.is_infinite()
-                && depths[i] < f32::MIN_POSITIVE
-                && g == f32::INFINITY;
+            let flushed_sky = !path.code && subnormal_sky(depths[i], f, g);
             let err = if flushed_sky {
                 0.0
             } else {

@@ -80,6 +80,10 @@ pub const FUNCS: &[Func] = &[
 
 pub const WGSL_HELPERS: &[(&str, &str)] = &[
     (
+        "light_volume_sum_overflows",
+        "private to light_volume.wgsl: a + b past f32::MAX decided on the halves, exercised by the overflow rows",
+    ),
+    (
         "light_volume_finite",
         "private to light_volume.wgsl: finiteness test on bits, exercised by the NaN/Inf rows",
     ),
@@ -120,11 +124,15 @@ pub const ROWS: &[Row] = &[
     Row { func: "light_volume_cone_needs_depth_fail", case: "negative near-corner distance", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3(ZN), V::Vec2([10.0, 0.5]), V::F32(-0.1)], expect: V::U32(1), why: "depth-fail" },
     Row { func: "light_volume_cone_needs_depth_fail", case: "+Inf near-corner distance", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3(ZN), V::Vec2([10.0, 0.5]), V::F32(INF)], expect: V::U32(1), why: "depth-fail" },
     Row { func: "light_volume_cone_needs_depth_fail", case: "huge axis (any length)", args: &[V::Vec3([0.0, 0.0, 100.0]), V::Vec3([0.0, 0.0, f32::MAX]), V::Vec2([10.0, 0.5]), V::F32(0.1)], expect: V::U32(0), why: "scaled first: far away, depth-pass" },
-    Row { func: "light_volume_window_depth", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::F32(NAN), why: "no guard: propagates" },
+    Row { func: "light_volume_window_depth", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::F32(1.0), why: "NaN → the far end" },
     Row { func: "light_volume_window_depth", case: "+Inf view depth, far +Inf", args: &[V::F32(INF), V::F32(1.0), V::F32(INF), V::U32(0)], expect: V::F32(1.0), why: "1 − n/∞ = 1" },
     Row { func: "light_volume_window_depth", case: "+Inf view depth, far +Inf, reversed", args: &[V::F32(INF), V::F32(1.0), V::F32(INF), V::U32(1)], expect: V::F32(0.0), why: "n/∞ = 0" },
     Row { func: "light_volume_window_depth", case: "out-of-range convention code 7", args: &[V::F32(INF), V::F32(1.0), V::F32(INF), V::U32(7)], expect: V::F32(0.0), why: "anything but 0 is reversed" },
-    Row { func: "light_volume_window_depth", case: "out of range: beyond far", args: &[V::F32(INF), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::F32(2.0), why: "not clipped: f/(f − n) at vz = ∞" },
+    Row { func: "light_volume_window_depth", case: "out of range: beyond far", args: &[V::F32(INF), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::F32(1.0), why: "+Inf → the far end" },
+    Row { func: "light_volume_window_depth", case: "out of range: beyond far", args: &[V::F32(5.0), V::F32(1.0), V::F32(2.0), V::U32(1)], expect: V::F32(0.0), why: "clamped to far (reversed 0)" },
+    Row { func: "light_volume_window_depth", case: "−Inf view depth", args: &[V::F32(-INF), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::F32(0.0), why: "−Inf → the near plane" },
+    Row { func: "light_volume_window_depth", case: "NaN near", args: &[V::F32(1.5), V::F32(NAN), V::F32(2.0), V::U32(1)], expect: V::F32(0.0), why: "no projection has it → the far end" },
+    Row { func: "light_volume_window_depth", case: "far ≤ near", args: &[V::F32(1.5), V::F32(2.0), V::F32(1.0), V::U32(0)], expect: V::F32(1.0), why: "no projection has it → the far end" },
     Row { func: "light_volume_sphere_depth_bounds", case: "NaN centre", args: &[V::F32(NAN), V::F32(1.0), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range: culls nothing" },
     Row { func: "light_volume_sphere_depth_bounds", case: "+Inf radius", args: &[V::F32(1.5), V::F32(INF), V::F32(1.0), V::F32(2.0), V::U32(1)], expect: V::Vec2([0.0, 1.0]), why: "full range" },
     Row { func: "light_volume_sphere_depth_bounds", case: "negative radius", args: &[V::F32(1.5), V::F32(-1.0), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range" },

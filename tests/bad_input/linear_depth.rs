@@ -58,43 +58,74 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
         "private to linear_depth.wgsl: infinite-far test, exercised by the far = +Inf rows",
     ),
     (
-        "ld_positive_inf",
-        "private to linear_depth.wgsl: builds +Inf from bits for the far-plane rows",
+        "ld_view_z_depth24",
+        "private to linear_depth.wgsl: the 24-bit path on checked constants, exercised by every depth24 row",
     ),
     (
-        "ld_nan",
-        "private to linear_depth.wgsl: builds NaN from bits for the NaN rows",
+        "ld_view_z_standard",
+        "private to linear_depth.wgsl: the standard path on checked constants, exercised by every standard row",
+    ),
+    (
+        "ld_view_z_reversed",
+        "private to linear_depth.wgsl: the reversed path on checked constants, exercised by every reversed row",
     ),
     (
         "ld_near_over_far",
         "private to linear_depth.wgsl: n/f, 0 when far = +Inf (infinite-far rows)",
     ),
     (
-        "ld_divide_or_inf",
-        "private to linear_depth.wgsl: n/s, +Inf at s = 0 (far-plane rows)",
+        "ld_divide_or_sky",
+        "private to linear_depth.wgsl: n/s, the sky sentinel where n/s >= 2^127 (far-plane and sky rows)",
+    ),
+    (
+        "ld_consts_ok",
+        "private to linear_depth.wgsl: constants a Projection can give, exercised by the bad-constant rows",
+    ),
+    (
+        "ld_planes_ok",
+        "private to linear_depth.wgsl: planes a projection can have, exercised by the bad-plane rows",
+    ),
+    (
+        "ld_clamp_unit",
+        "private to linear_depth.wgsl: z clamped to [0, 1] from its bits, exercised by the ±Inf and out-of-range rows",
     ),
 ];
+
+const SKY: f32 = prepass::linear_depth::SKY;
 
 #[rustfmt::skip]
 pub const ROWS: &[Row] = &[
     // Linear depth (near 1, far 2 unless stated: every expected value below is exact in f32).
     Row { func: "view_z_from_depth24", case: "out-of-range code 2^24", args: &[V::U32(MAX24 + 1), V::F32(1.0), V::F32(2.0)], expect: V::F32(2.0), why: "saturates to the far plane" },
-    Row { func: "view_z_from_depth24", case: "out-of-range code, far +Inf", args: &[V::U32(u32::MAX), V::F32(1.0), V::F32(INF)], expect: V::F32(INF), why: "far code of an infinite projection → +Inf" },
+    Row { func: "view_z_from_depth24", case: "out-of-range code, far +Inf", args: &[V::U32(u32::MAX), V::F32(1.0), V::F32(INF)], expect: V::F32(SKY), why: "far code of an infinite projection → the sky, f32::MAX" },
     Row { func: "view_z_from_depth24", case: "zero", args: &[V::U32(0), V::F32(1.0), V::F32(2.0)], expect: V::F32(1.0), why: "code 0 = near plane" },
     Row { func: "view_z_from_depth24_consts", case: "out-of-range code u32::MAX", args: &[V::U32(u32::MAX), V::Vec2([16_777_215.0, 0.5])], expect: V::F32(2.0), why: "saturates to the far plane" },
-    Row { func: "view_z_from_depth24_consts", case: "far +Inf (n/f = 0)", args: &[V::U32(MAX24), V::Vec2([16_777_215.0, 0.0])], expect: V::F32(INF), why: "far code → +Inf" },
-    Row { func: "view_z_from_depth", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(2.0)], expect: V::F32(NAN), why: "NaN (found from its bits)" },
+    Row { func: "view_z_from_depth24_consts", case: "far +Inf (n/f = 0)", args: &[V::U32(MAX24), V::Vec2([16_777_215.0, 0.0])], expect: V::F32(SKY), why: "far code → the sky, f32::MAX" },
+    Row { func: "view_z_from_depth", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(2.0)], expect: V::F32(SKY), why: "NaN (found from its bits) → the sky" },
     Row { func: "view_z_from_depth", case: "+Inf", args: &[V::F32(INF), V::F32(1.0), V::F32(2.0)], expect: V::F32(2.0), why: "clamped to 1 = far" },
     Row { func: "view_z_from_depth", case: "−Inf", args: &[V::F32(-INF), V::F32(1.0), V::F32(2.0)], expect: V::F32(1.0), why: "clamped to 0 = near" },
     Row { func: "view_z_from_depth", case: "subnormal", args: &[V::F32(SUB_MAX), V::F32(1.0), V::F32(2.0)], expect: V::F32(1.0), why: "near, flushed or not" },
-    Row { func: "view_z_from_depth", case: "out of range", args: &[V::F32(1.5), V::F32(1.0), V::F32(INF)], expect: V::F32(INF), why: "clamped to 1; infinite far → +Inf" },
-    Row { func: "view_z_from_depth_consts", case: "NaN", args: &[V::F32(NAN), V::Vec3([1.0, 0.5, 0.5])], expect: V::F32(NAN), why: "NaN" },
+    Row { func: "view_z_from_depth", case: "out of range", args: &[V::F32(1.5), V::F32(1.0), V::F32(INF)], expect: V::F32(SKY), why: "clamped to 1; infinite far → the sky" },
+    Row { func: "view_z_from_depth_consts", case: "NaN", args: &[V::F32(NAN), V::Vec3([1.0, 0.5, 0.5])], expect: V::F32(SKY), why: "NaN → the sky" },
     Row { func: "view_z_from_depth_consts", case: "out of range", args: &[V::F32(-3.0), V::Vec3([1.0, 0.5, 0.5])], expect: V::F32(1.0), why: "clamped to 0 = near" },
-    Row { func: "view_z_from_reversed_depth", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(2.0)], expect: V::F32(NAN), why: "NaN" },
+    Row { func: "view_z_from_reversed_depth", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(2.0)], expect: V::F32(SKY), why: "NaN → the sky" },
     Row { func: "view_z_from_reversed_depth", case: "+Inf", args: &[V::F32(INF), V::F32(1.0), V::F32(2.0)], expect: V::F32(1.0), why: "clamped to 1 = near" },
     Row { func: "view_z_from_reversed_depth", case: "−Inf", args: &[V::F32(-INF), V::F32(1.0), V::F32(2.0)], expect: V::F32(2.0), why: "clamped to 0 = far" },
     Row { func: "view_z_from_reversed_depth", case: "subnormal", args: &[V::F32(SUB_MIN), V::F32(1.0), V::F32(2.0)], expect: V::F32(2.0), why: "far, flushed or not" },
-    Row { func: "view_z_from_reversed_depth", case: "zero, far +Inf (sky)", args: &[V::F32(0.0), V::F32(1.0), V::F32(INF)], expect: V::F32(INF), why: "the sky of reversed-infinite → +Inf" },
-    Row { func: "view_z_from_reversed_depth_consts", case: "NaN", args: &[V::F32(NAN), V::Vec3([1.0, 0.5, 0.5])], expect: V::F32(NAN), why: "NaN" },
-    Row { func: "view_z_from_reversed_depth_consts", case: "−0.0, infinite (k = (1, 1, 0))", args: &[V::F32(-0.0), V::Vec3([1.0, 1.0, 0.0])], expect: V::F32(INF), why: "the sky → +Inf" },
+    Row { func: "view_z_from_reversed_depth", case: "zero, far +Inf (sky)", args: &[V::F32(0.0), V::F32(1.0), V::F32(INF)], expect: V::F32(SKY), why: "the sky of reversed-infinite → f32::MAX" },
+    Row { func: "view_z_from_reversed_depth_consts", case: "NaN", args: &[V::F32(NAN), V::Vec3([1.0, 0.5, 0.5])], expect: V::F32(SKY), why: "NaN → the sky" },
+    Row { func: "view_z_from_reversed_depth_consts", case: "−0.0, infinite (k = (1, 1, 0))", args: &[V::F32(-0.0), V::Vec3([1.0, 1.0, 0.0])], expect: V::F32(SKY), why: "the sky → f32::MAX" },
+    Row { func: "view_z_from_reversed_depth", case: "subnormal, far +Inf", args: &[V::F32(SUB_MIN), V::F32(1.0), V::F32(INF)], expect: V::F32(SKY), why: "n/z ≥ 2^127 → the sky, flushed or not" },
+    Row { func: "view_z_from_reversed_depth", case: "NaN near", args: &[V::F32(0.5), V::F32(NAN), V::F32(2.0)], expect: V::F32(SKY), why: "no projection has it → the sky" },
+    Row { func: "view_z_from_reversed_depth", case: "far ≤ near", args: &[V::F32(0.5), V::F32(2.0), V::F32(1.0)], expect: V::F32(SKY), why: "no projection has it → the sky" },
+    Row { func: "view_z_from_depth", case: "NaN far", args: &[V::F32(0.5), V::F32(1.0), V::F32(NAN)], expect: V::F32(SKY), why: "no projection has it → the sky" },
+    Row { func: "view_z_from_depth", case: "zero near", args: &[V::F32(0.5), V::F32(0.0), V::F32(2.0)], expect: V::F32(SKY), why: "near must be > 0" },
+    Row { func: "view_z_from_depth24", case: "+Inf near", args: &[V::U32(7), V::F32(INF), V::F32(INF)], expect: V::F32(SKY), why: "no projection has it → the sky" },
+    Row { func: "view_z_from_depth24", case: "huge near (near·(2^24 − 1) would overflow)", args: &[V::U32(7), V::F32(3e38), V::F32(INF)], expect: V::F32(SKY), why: "near ≥ 2^100 → the sky" },
+    Row { func: "view_z_from_depth24_consts", case: "NaN constant", args: &[V::U32(7), V::Vec2([NAN, 0.5])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
+    Row { func: "view_z_from_depth_consts", case: "+Inf constant", args: &[V::F32(0.75), V::Vec3([1.0, INF, 0.5])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
+    Row { func: "view_z_from_depth_consts", case: "out-of-range constant", args: &[V::F32(0.75), V::Vec3([1.0, 0.5, 2.0])], expect: V::F32(SKY), why: "ratios outside [0, 1] → the sky" },
+    Row { func: "view_z_from_reversed_depth_consts", case: "negative near", args: &[V::F32(0.5), V::Vec3([-1.0, 0.5, 0.5])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
+    Row { func: "view_z_from_reversed_depth_consts", case: "huge constant, tiny depth", args: &[V::F32(1e-30), V::Vec3([3e38, 1.0, 0.0])], expect: V::F32(SKY), why: "n/s ≥ 2^127: no division overflows" },
+
 ];

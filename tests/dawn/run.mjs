@@ -1,0 +1,99 @@
+// Runs WGSL jobs through Dawn's node binding (npm `webgpu`, pinned in package.json), whose WGSL
+// compiler is Tint: what Chrome and Edge compile a renderer's shaders with.
+//   node tests/dawn/run.mjs --probe   prints the adapter, exits 1 when Dawn finds none
+//   node tests/dawn/run.mjs DIR       runs DIR/jobs.tsv, writes DIR/results.txt (+ out files)
+// jobs.tsv, one job a line, tab-separated: name, source file, then for a dispatch (else "-"):
+// entry, uniform words (comma-separated), column files (comma-separated, or "-"), output words,
+// workgroups "x,y" — the harness's Dispatch (src/harness/mod.rs): bind group 0 = uniform, the
+// column buffers in order, the output buffer last; columns and outputs are little-endian files
+// in DIR. results.txt: "adapter TEXT", then per job "job I ok|error", "msg I TYPE LINE:COL TEXT",
+// "err I TEXT", "out I FILE" (texts on one line).
+import { create, globals } from 'webgpu';
+import fs from 'node:fs';
+import path from 'node:path';
+
+Object.assign(globalThis, globals);
+const gpu = create(['backend=vulkan']);
+const adapter = await gpu.requestAdapter();
+if (!adapter) {
+  console.error('dawn: no adapter (Dawn needs a Vulkan 1.1 driver with shaderUniform*ArrayDynamicIndexing; ' +
+    'on Debian bookworm run `bash .ci/setup-dawn`, which unpacks Mesa 25 lavapipe beside the system one)');
+  process.exit(1);
+}
+const info = adapter.info;
+const describe = `${info.description || info.device || 'adapter'} [${info.vendor}, ${info.architecture}, ${info.device}]`;
+if (process.argv[2] === '--probe') {
+  console.log(describe);
+  process.exit(0);
+}
+const dir = process.argv[2];
+const device = await adapter.requestDevice();
+const jobs = fs.readFileSync(path.join(dir, 'jobs.tsv'), 'utf8').split('\n').filter(l => l).map(l => {
+  const [name, file, entry, uniform, columns, outWords, groups] = l.split('\t');
+  const job = { name, source: fs.readFileSync(path.join(dir, file), 'utf8') };
+  if (entry && entry !== '-') {
+    Object.assign(job, {
+      entry,
+      uniform: uniform.split(',').map(Number),
+      columns: columns === '-' ? [] : columns.split(','),
+      outWords: Number(outWords),
+      groups: groups.split(',').map(Number),
+    });
+  }
+  return job;
+});
+const oneLine = t => String(t).replace(/\s+/g, ' ').trim();
+const lines = [`adapter ${oneLine(describe)}`];
+for (const [i, job] of jobs.entries()) {
+  const r = { name: job.name, messages: [], error: null, out: null };
+  device.pushErrorScope('validation');
+  const module = device.createShaderModule({ code: job.source, label: job.name });
+  const compiled = await module.getCompilationInfo();
+  r.messages = compiled.messages.map(m => ({ type: m.type, line: m.lineNum, col: m.linePos, message: m.message }));
+  let err = await device.popErrorScope();
+  if (err) {
+    r.error = err.message;
+  } else if (job.entry) {
+    device.pushErrorScope('validation');
+    const pipeline = device.createComputePipeline({ layout: 'auto', compute: { module, entryPoint: job.entry } });
+    const storage = (bytes, usage) => {
+      const b = device.createBuffer({ size: Math.max(16, Math.ceil(bytes.byteLength / 16) * 16), usage: usage | GPUBufferUsage.COPY_DST });
+      device.queue.writeBuffer(b, 0, bytes);
+      return b;
+    };
+    const entries = [{ binding: 0, resource: { buffer: storage(new Uint32Array(job.uniform), GPUBufferUsage.UNIFORM) } }];
+    for (const c of job.columns) {
+      const bytes = fs.readFileSync(path.join(dir, c));
+      entries.push({ binding: entries.length, resource: { buffer: storage(new Uint8Array(bytes), GPUBufferUsage.STORAGE) } });
+    }
+    const outBytes = Math.max(16, job.outWords * 4);
+    const out = device.createBuffer({ size: outBytes, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC });
+    entries.push({ binding: entries.length, resource: { buffer: out } });
+    const read = device.createBuffer({ size: outBytes, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+    const bindGroup = device.createBindGroup({ layout: pipeline.getBindGroupLayout(0), entries });
+    const encoder = device.createCommandEncoder();
+    const pass = encoder.beginComputePass();
+    pass.setPipeline(pipeline);
+    pass.setBindGroup(0, bindGroup);
+    pass.dispatchWorkgroups(job.groups[0], job.groups[1]);
+    pass.end();
+    encoder.copyBufferToBuffer(out, 0, read, 0, outBytes);
+    device.queue.submit([encoder.finish()]);
+    err = await device.popErrorScope();
+    if (err) {
+      r.error = err.message;
+    } else {
+      await read.mapAsync(GPUMapMode.READ);
+      const words = new Uint8Array(read.getMappedRange().slice(0, job.outWords * 4));
+      r.out = `out${i}.bin`;
+      fs.writeFileSync(path.join(dir, r.out), words);
+      read.unmap();
+    }
+  }
+  lines.push(`job ${i} ${r.error ? 'error' : 'ok'}`);
+  for (const m of r.messages) lines.push(`msg ${i} ${m.type} ${m.line}:${m.col} ${oneLine(m.message)}`);
+  if (r.error) lines.push(`err ${i} ${oneLine(r.error)}`);
+  if (r.out) lines.push(`out ${i} ${r.out}`);
+}
+fs.writeFileSync(path.join(dir, 'results.txt'), lines.join('\n') + '\n');
+process.exit(0);
