@@ -10,12 +10,22 @@ use prepass::precision::metrics::ulp_error;
 use prepass::projection::DepthConvention;
 
 /// The documented error of a linear-depth twin against its exact f64 distance: within `bound`
-/// ULP (`from` names the bound), or `+Inf` exactly where the exact distance is beyond f32's
-/// range.
+/// ULP (`from` names the bound), or the sky sentinel `linear_depth::SKY` exactly where the exact
+/// distance is `2^127` or more — and, where `subnormal_depth` (a subnormal float depth of an
+/// infinite projection, whose denominator is subnormal), the sentinel is allowed too.
 #[track_caller]
-fn assert_distance(got: f32, exact: f64, bound: f64, from: &str, context: std::fmt::Arguments<'_>) {
-    if (exact as f32).is_infinite() {
-        assert_eq!(got, f32::INFINITY, "{context}: beyond f32's range");
+fn assert_distance(
+    got: f32,
+    exact: f64,
+    subnormal_depth: bool,
+    (bound, from): (f64, &str),
+    context: std::fmt::Arguments<'_>,
+) {
+    if exact >= 2f64.powi(127) {
+        assert_eq!(got, ld::SKY, "{context}: 2^127 or more is the sky");
+        return;
+    }
+    if subnormal_depth && got == ld::SKY {
         return;
     }
     assert_within!(ulp_error(got, exact), bound, from, "{context}");
@@ -62,8 +72,11 @@ pub const DIFFERENTIAL: &[Entry] = &[
             assert_distance(
                 got,
                 e,
-                ld::bounds::DEPTH24_CORRECTLY_ROUNDED,
-                "linear_depth::bounds::DEPTH24_CORRECTLY_ROUNDED",
+                false,
+                (
+                    ld::bounds::DEPTH24_CORRECTLY_ROUNDED,
+                    "linear_depth::bounds::DEPTH24_CORRECTLY_ROUNDED",
+                ),
                 format_args!("{d:#x} {p:?}: {got} vs {e}"),
             );
         },
@@ -74,7 +87,17 @@ pub const DIFFERENTIAL: &[Entry] = &[
             let z = i.f32();
             let Ok(p) = projection(i) else { return };
             if z.is_nan() {
-                return; // NaN → NaN is a decoder property, not an error bound
+                assert_eq!(
+                    match p.convention() {
+                        DepthConvention::Standard => ld::view_z_from_depth(z, p.near(), p.far()),
+                        DepthConvention::Reversed => {
+                            ld::view_z_from_reversed_depth(z, p.near(), p.far())
+                        }
+                    },
+                    ld::SKY,
+                    "NaN depth gives the sky sentinel"
+                );
+                return;
             }
             let (n, f) = (p.near(), p.far());
             let (got, e) = match p.convention() {
@@ -90,8 +113,11 @@ pub const DIFFERENTIAL: &[Entry] = &[
             assert_distance(
                 got,
                 e,
-                ld::bounds::FLOAT_CORRECTLY_ROUNDED,
-                "linear_depth::bounds::FLOAT_CORRECTLY_ROUNDED",
+                f.is_infinite() && z.abs() < f32::MIN_POSITIVE,
+                (
+                    ld::bounds::FLOAT_CORRECTLY_ROUNDED,
+                    "linear_depth::bounds::FLOAT_CORRECTLY_ROUNDED",
+                ),
                 format_args!("{z:?} {p:?}: {got} vs {e}"),
             );
         },

@@ -209,15 +209,15 @@ fn publish_block(path: &str, name: &str, body: &str, measured: Option<String>) {
         return;
     }
     let current = found.map(|(i, j)| &text[i..j + e.len()]);
-    if let (Some(here), Some(committed)) = (&measured, current) {
-        if !committed.contains(here.as_str()) {
-            let published = committed.lines().nth(1).unwrap_or("(no adapter line)");
-            eprintln!(
-                "{path}, block `{name}`: published from another adapter ({published}); \
-                 compared with its bounds only. Published, then this adapter's:\n{committed}\n{block}"
-            );
-            return;
-        }
+    if let (Some(here), Some(committed)) = (&measured, current)
+        && !committed.contains(here.as_str())
+    {
+        let published = committed.lines().nth(1).unwrap_or("(no adapter line)");
+        eprintln!(
+            "{path}, block `{name}`: published from another adapter ({published}); \
+             compared with its bounds only. Published, then this adapter's:\n{committed}\n{block}"
+        );
+        return;
     }
     assert_eq!(
         current,
