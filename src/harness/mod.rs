@@ -356,6 +356,37 @@ impl Kernel<'_> {
         )))
     }
 
+    /// An error unless `args` fit the signature for `n` elements: one per parameter, each
+    /// column `n` values long, index feeds on scalars only.
+    fn check_args(&self, args: &[Arg<'_>], n: u64) -> Result<(), HarnessError> {
+        let sig = &self.signature;
+        self.check_arity(args)?;
+        for (p, a) in sig.params.iter().zip(args) {
+            match a {
+                Arg::Column(bytes) => {
+                    let want = n.checked_mul(p.ty.words() as u64 * 4);
+                    if want != Some(bytes.len() as u64) {
+                        return Err(HarnessError::Arguments(format!(
+                            "column for `{}: {}` holds {} bytes; {n} elements need {}",
+                            p.name,
+                            p.ty,
+                            bytes.len(),
+                            n * p.ty.words() as u64 * 4
+                        )));
+                    }
+                }
+                Arg::Index { .. } if p.ty.lanes != 1 => {
+                    return Err(HarnessError::Arguments(format!(
+                        "Arg::Index feeds scalars; `{}` is {}",
+                        p.name, p.ty
+                    )));
+                }
+                _ => {}
+            }
+        }
+        Ok(())
+    }
+
     /// Apply the function to `n` elements and return all results.
     pub fn run(&self, args: &[Arg<'_>], n: u64) -> Result<Output, HarnessError> {
         let total = usize::try_from(n)
@@ -383,30 +414,7 @@ impl Kernel<'_> {
         mut each: impl FnMut(u64, &Output) -> Result<(), HarnessError>,
     ) -> Result<(), HarnessError> {
         let sig = &self.signature;
-        self.check_arity(args)?;
-        for (p, a) in sig.params.iter().zip(args) {
-            match a {
-                Arg::Column(bytes) => {
-                    let want = n.checked_mul(p.ty.words() as u64 * 4);
-                    if want != Some(bytes.len() as u64) {
-                        return Err(HarnessError::Arguments(format!(
-                            "column for `{}: {}` holds {} bytes; {n} elements need {}",
-                            p.name,
-                            p.ty,
-                            bytes.len(),
-                            n * p.ty.words() as u64 * 4
-                        )));
-                    }
-                }
-                Arg::Index { .. } if p.ty.lanes != 1 => {
-                    return Err(HarnessError::Arguments(format!(
-                        "Arg::Index feeds scalars; `{}` is {}",
-                        p.name, p.ty
-                    )));
-                }
-                _ => {}
-            }
-        }
+        self.check_args(args, n)?;
         if n == 0 {
             return Ok(());
         }
@@ -527,37 +535,20 @@ impl Kernel<'_> {
     /// [`Dispatch::output`] into the same [`Output`] a [`Kernel::run`] gives, so figures from
     /// either implementation compare directly. The module is validated by naga first.
     pub fn dispatch(&self, args: &[Arg<'_>], n: u64) -> Result<Dispatch, HarnessError> {
-        self.check_arity(args)?;
+        self.check_args(args, n)?;
         if n == 0 || n > MAX_CHUNK {
             return Err(HarnessError::Arguments(format!(
                 "a Dispatch holds 1 to {MAX_CHUNK} elements, not {n}"
             )));
         }
+        let columns = args
+            .iter()
+            .filter_map(|a| match a {
+                Arg::Column(bytes) => Some(bytes.to_vec()),
+                _ => None,
+            })
+            .collect();
         let sig = &self.signature;
-        let mut columns = Vec::new();
-        for (p, a) in sig.params.iter().zip(args) {
-            match a {
-                Arg::Column(bytes) => {
-                    if bytes.len() as u64 != n * p.ty.words() as u64 * 4 {
-                        return Err(HarnessError::Arguments(format!(
-                            "column for `{}: {}` holds {} bytes; {n} elements need {}",
-                            p.name,
-                            p.ty,
-                            bytes.len(),
-                            n * p.ty.words() as u64 * 4
-                        )));
-                    }
-                    columns.push(bytes.to_vec());
-                }
-                Arg::Index { .. } if p.ty.lanes != 1 => {
-                    return Err(HarnessError::Arguments(format!(
-                        "Arg::Index feeds scalars; `{}` is {}",
-                        p.name, p.ty
-                    )));
-                }
-                _ => {}
-            }
-        }
         let source = self.generated_source(args);
         parse_and_validate(&source).map_err(|e| HarnessError::Shader(e.to_string()))?;
         // WebGPU's guaranteed limit of workgroups per dimension.
