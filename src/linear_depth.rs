@@ -36,8 +36,8 @@
 //! [`Projection`](crate::projection::Projection) has (NaN or ±∞, `near ≤ 0`, `near ≥ 2^100`,
 //! `far ≤ near`, ratios outside `[0, 1]`) return [`SKY`], the largest finite `f32`. Special
 //! inputs are recognised from their bits, as the WGSL does. A lighting pass tests
-//! `vz >= SKY` (`vz >= 0x1.fffffep+127f` in WGSL: Tint rejects the decimal `3.4028235e38`,
-//! which lies above `f32::MAX`) for the sky.
+//! `vz >= SKY` (`vz >= 3.4028234e38` in WGSL, which rounds to it: Tint rejects the usual
+//! `3.4028235e38`, which lies above `f32::MAX`) for the sky.
 //!
 //! **Sign against Bevy:** these return the positive distance `vz`; Bevy's `depth_ndc_to_view_z`
 //! returns view-space `z = −vz`.
@@ -46,8 +46,8 @@ use crate::depth24::DEPTH24_MAX;
 use crate::projection::{Depth24Consts, DepthConsts, ReversedDepthConsts};
 
 /// The view distance every function here returns for the sky (and for NaN depth and invalid
-/// planes): `f32::MAX`, the largest finite `f32` (WGSL `0x1.fffffep+127f`). Finite, because WGSL
-/// leaves a run-time ±∞ indeterminate and rejects a constant one.
+/// planes): `f32::MAX`, the largest finite `f32` (WGSL `3.4028234e38`, which rounds to it).
+/// Finite, because WGSL leaves a run-time ±∞ indeterminate and rejects a constant one.
 pub const SKY: f32 = f32::MAX;
 
 /// `2^127`: quotients at or above it return [`SKY`] (so no division can overflow).

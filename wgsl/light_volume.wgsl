@@ -38,7 +38,7 @@ fn light_volume_finite3(v: vec3<f32>) -> bool {
 // whose sum cannot overflow, so no addition ever produces +inf (WGSL leaves a run-time infinity
 // indeterminate). Halving is exact and commutes with rounding for normal values.
 fn light_volume_sum_overflows(a: f32, b: f32) -> bool {
-    return a * 0.5 + b * 0.5 > 0x1.fffffep+126f;
+    return a * 0.5 + b * 0.5 > 1.7014117e38;
 }
 
 // rho: distance from the eye to the corners of the near-plane rectangle,
@@ -99,7 +99,7 @@ fn light_volume_cone_needs_depth_fail(apex: vec3<f32>, axis: vec3<f32>, range_ta
     // underflow nor overflow, and wherever they did not the decision is unchanged (each step is
     // homogeneous in the lengths, and power-of-two scaling is exact).
     // h·tan beyond f32 (decided on h·2^-64, exact for h >= 2^-62 and harmless below): depth-fail.
-    if (k > 0x1p+64f || (h * 0x1p-64f) * k > 0x1.fffffep+63f) {
+    if (k > 1.8446744e19 || (h * 5.421011e-20) * k > 1.8446743e19) {
         return 1u;
     }
     let ap = abs(apex);

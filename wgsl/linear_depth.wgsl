@@ -20,9 +20,10 @@
 // produces NaN or infinity, and a constant expression that evaluates to one is a
 // shader-creation error. Special inputs are detected from their bits; a distance of 2^127 or
 // more (the far plane of an infinite projection, the sky, the depths next to it) and NaN depth
-// return the sky sentinel 0x1.fffffep+127f (3.40282347e38, the largest finite f32; Rust
-// `linear_depth::SKY`), so a pass tests `vz >= 0x1.fffffep+127f` for the sky (Tint rejects the
-// decimal 3.4028235e38, which lies above it, rather than round it down).
+// return the sky sentinel, the largest finite f32 (Rust `linear_depth::SKY`), written
+// 3.4028234e38, which rounds to it: a pass tests `vz >= 3.4028234e38` for the sky. (Tint
+// rejects the usual 3.4028235e38, which lies above it, rather than round it down; wesl 0.4
+// cannot parse hex floats, so none is used.)
 
 // Whether x is NaN, from its bits (WGSL may assume no NaN in float comparisons).
 fn ld_is_nan(x: f32) -> bool {
@@ -56,8 +57,8 @@ fn ld_one_minus(z: f32) -> f32 {
 // 2^-126 of the sky's reach it). The test s·2^127 <= numerator is exact (a power-of-two scaling
 // of s < 2 cannot overflow), so no division overflows to +inf.
 fn ld_divide_or_sky(numerator: f32, s: f32) -> f32 {
-    if (s < 0x1p-126f || (s < 2.0 && s * 0x1p+127f <= numerator)) {
-        return 0x1.fffffep+127f;
+    if (s < 1.1754944e-38 || (s < 2.0 && s * 1.7014118e38 <= numerator)) {
+        return 3.4028234e38;
     }
     return numerator / s;
 }
@@ -99,7 +100,7 @@ fn ld_view_z_depth24(d: u32, k: vec2<f32>) -> f32 {
 // and every step is a monotonic rounding, so view distance never decreases as z grows.
 fn ld_view_z_standard(z: f32, k: vec3<f32>) -> f32 {
     if (ld_is_nan(z)) {
-        return 0x1.fffffep+127f;
+        return 3.4028234e38;
     }
     let zc = ld_clamp_unit(z);
     let s = select(ld_one_minus(zc) + zc * k.y, 1.0 - zc * k.z, zc < 0.5);
@@ -109,7 +110,7 @@ fn ld_view_z_standard(z: f32, k: vec3<f32>) -> f32 {
 // The reversed float path on checked constants k = (n, (f - n)/f, n/f).
 fn ld_view_z_reversed(z: f32, k: vec3<f32>) -> f32 {
     if (ld_is_nan(z)) {
-        return 0x1.fffffep+127f;
+        return 3.4028234e38;
     }
     let zc = ld_clamp_unit(z);
     let s = zc * k.y + k.z;
@@ -118,10 +119,10 @@ fn ld_view_z_reversed(z: f32, k: vec3<f32>) -> f32 {
 
 // View distance of a 24-bit standard-convention depth code (0 = near, 2^24 - 1 = far).
 // Codes above 2^24 - 1 saturate to 2^24 - 1; the far code of an infinite projection gives the
-// sky sentinel 0x1.fffffep+127f, as do planes no projection has (ld_planes_ok).
+// sky sentinel 3.4028234e38, as do planes no projection has (ld_planes_ok).
 fn view_z_from_depth24(d: u32, near: f32, far: f32) -> f32 {
     if (!ld_planes_ok(near, far)) {
-        return 0x1.fffffep+127f;
+        return 3.4028234e38;
     }
     return ld_view_z_depth24(d, vec2<f32>(near * 16777215.0, ld_near_over_far(near, far)));
 }
@@ -131,17 +132,17 @@ fn view_z_from_depth24(d: u32, near: f32, far: f32) -> f32 {
 // Constants no Projection gives (NaN, infinite, k.x <= 0, k.y outside [+0, 1]) give the sky.
 fn view_z_from_depth24_consts(d: u32, k: vec2<f32>) -> f32 {
     if (!ld_consts_ok(vec3<f32>(k, 0.0))) {
-        return 0x1.fffffep+127f;
+        return 3.4028234e38;
     }
     return ld_view_z_depth24(d, k);
 }
 
 // View distance of a float standard-convention depth z (0 = near, 1 = far).
 // z is clamped to [0, 1]; NaN z, z = 1 with an infinite far plane, and planes no projection
-// has give the sky sentinel 0x1.fffffep+127f.
+// has give the sky sentinel 3.4028234e38.
 fn view_z_from_depth(z: f32, near: f32, far: f32) -> f32 {
     if (!ld_planes_ok(near, far)) {
-        return 0x1.fffffep+127f;
+        return 3.4028234e38;
     }
     let r = ld_near_over_far(near, far);
     return ld_view_z_standard(z, vec3<f32>(near, r, 1.0 - r));
@@ -151,17 +152,17 @@ fn view_z_from_depth(z: f32, near: f32, far: f32) -> f32 {
 // k = (n, n/f, (f - n)/f) (Projection::depth_consts). Constants no Projection gives give the sky.
 fn view_z_from_depth_consts(z: f32, k: vec3<f32>) -> f32 {
     if (!ld_consts_ok(k)) {
-        return 0x1.fffffep+127f;
+        return 3.4028234e38;
     }
     return ld_view_z_standard(z, k);
 }
 
 // View distance of a float reversed-convention depth z (1 = near, 0 = far).
 // z is clamped to [0, 1]; NaN z, z = 0 with an infinite far plane (the sky), and planes no
-// projection has give the sky sentinel 0x1.fffffep+127f.
+// projection has give the sky sentinel 3.4028234e38.
 fn view_z_from_reversed_depth(z: f32, near: f32, far: f32) -> f32 {
     if (!ld_planes_ok(near, far)) {
-        return 0x1.fffffep+127f;
+        return 3.4028234e38;
     }
     let r = ld_near_over_far(near, far);
     return ld_view_z_reversed(z, vec3<f32>(near, 1.0 - r, r));
@@ -172,7 +173,7 @@ fn view_z_from_reversed_depth(z: f32, near: f32, far: f32) -> f32 {
 // give the sky.
 fn view_z_from_reversed_depth_consts(z: f32, k: vec3<f32>) -> f32 {
     if (!ld_consts_ok(k)) {
-        return 0x1.fffffep+127f;
+        return 3.4028234e38;
     }
     return ld_view_z_reversed(z, k);
 }

@@ -53,10 +53,10 @@ fn lpp_direction(v: vec3<f32>) -> vec3<f32> {
 fn lpp_luminance(rgb: vec3<f32>) -> f32 {
     let bits = bitcast<vec3<u32>>(rgb);
     let mag = bits & vec3<u32>(0x7fffffffu);
-    let big = select(vec3<f32>(0x1p+126f), vec3<f32>(-0x1p+126f),
+    let big = select(vec3<f32>(8.507059e37), vec3<f32>(-8.507059e37),
         (bits & vec3<u32>(0x80000000u)) != vec3<u32>(0u));
     let finite = clamp(select(rgb, vec3<f32>(0.0), mag >= vec3<u32>(0x7f800000u)),
-        vec3<f32>(-0x1p+126f), vec3<f32>(0x1p+126f));
+        vec3<f32>(-8.507059e37), vec3<f32>(8.507059e37));
     return dot(select(finite, big, mag == vec3<u32>(0x7f800000u)), LPP_LUMINANCE);
 }
 

@@ -12,7 +12,7 @@
 // run time). Each float input lane is read from its bits first: NaN -> 0, +-inf -> +-2^40, and
 // finite values are clamped to [-2^40, 2^40] (2^40 ≈ 1.1e12, beyond any view distance a
 // projection of prepass resolves), so no product or sum below can overflow. The sky sentinel
-// of wgsl/linear_depth.wgsl (0x1.fffffep+127f, f32::MAX) therefore rebuilds the point 2^40 along the ray.
+// of wgsl/linear_depth.wgsl (f32::MAX) therefore rebuilds the point 2^40 along the ray.
 
 // One lane made finite and clamped to [-2^40, 2^40], from its bits.
 fn pos_sane(x: f32) -> f32 {

@@ -99,15 +99,19 @@ fn device_rank(t: wgpu::DeviceType) -> u8 {
 }
 
 impl Gpu {
-    /// Open the best adapter: a discrete GPU before an integrated, virtual or software one.
-    /// `WGPU_BACKEND` (e.g. `vulkan`) restricts the backends tried, `PREPASS_ADAPTER` picks
-    /// the first adapter whose name contains it (case-insensitive).
+    /// Open the best adapter: a discrete GPU before an integrated, virtual or software one, on
+    /// Vulkan, Metal or Direct3D 12. `WGPU_BACKEND` (e.g. `vulkan`, or `gl` for wgpu's GL
+    /// backend: naga's GLSL path, as WebGL2 and GLES users get it) chooses the backends tried
+    /// instead, `PREPASS_ADAPTER` picks the first adapter whose name contains it
+    /// (case-insensitive).
     ///
     /// With no adapter it returns [`HarnessError::NoAdapter`], whose message names the fix.
     pub fn new() -> Result<Self, HarnessError> {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
-        let backends = wgpu::Backends::from_env().unwrap_or(wgpu::Backends::all());
+        // GL only when asked for: on a machine with Mesa, llvmpipe's GL would otherwise stand
+        // beside lavapipe's Vulkan as a second software adapter.
+        let backends = wgpu::Backends::from_env().unwrap_or(wgpu::Backends::PRIMARY);
         let mut adapters = pollster::block_on(instance.enumerate_adapters(backends));
         let wanted = std::env::var("PREPASS_ADAPTER")
             .ok()
@@ -186,6 +190,79 @@ impl Gpu {
     /// The wgpu queue.
     pub fn queue(&self) -> &wgpu::Queue {
         &self.queue
+    }
+
+    /// Run a [`Dispatch`] (from [`Kernel::dispatch`], on this or another `Gpu`) here, as another
+    /// WebGPU implementation would run it: its module as it stands, its buffers, its grid.
+    pub fn run_dispatch(&self, d: &Dispatch) -> Result<Output, HarnessError> {
+        parse_and_validate(&d.source).map_err(|e| HarnessError::Shader(e.to_string()))?;
+        let device = &self.device;
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("prepass dispatch"),
+            source: wgpu::ShaderSource::Wgsl(d.source.as_str().into()),
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some("prepass dispatch"),
+            layout: None,
+            module: &module,
+            entry_point: Some(d.entry),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(HarnessError::Shader(e.to_string()));
+        }
+        let init = |bytes: &[u8], usage: wgpu::BufferUsages| {
+            let mut padded = bytes.to_vec();
+            padded.resize(bytes.len().max(16).next_multiple_of(16), 0);
+            device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("prepass dispatch"),
+                contents: &padded,
+                usage,
+            })
+        };
+        let params = init(
+            bytemuck::cast_slice(&d.uniform),
+            wgpu::BufferUsages::UNIFORM,
+        );
+        let columns: Vec<wgpu::Buffer> = d
+            .columns
+            .iter()
+            .map(|c| init(c, wgpu::BufferUsages::STORAGE))
+            .collect();
+        let bytes = (d.output_words() as u64 * 4).max(16);
+        let make = |usage| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("prepass dispatch"),
+                size: bytes,
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        let out = make(wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC);
+        let staging = make(wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST);
+        let group = bind_group(
+            device,
+            &pipeline,
+            &params,
+            columns.iter(),
+            &out,
+            "prepass dispatch",
+        );
+        let mut encoder =
+            device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor::default());
+            pass.set_pipeline(&pipeline);
+            pass.set_bind_group(0, &group, &[]);
+            pass.dispatch_workgroups(d.groups[0], d.groups[1], 1);
+        }
+        encoder.copy_buffer_to_buffer(&out, 0, &staging, 0, bytes);
+        self.queue.submit([encoder.finish()]);
+        let mut words = read_back(self, &staging, bytes)?;
+        words.truncate(d.output_words());
+        d.output(words)
     }
 
     /// Prepare `function` from `source` (which must be valid WGSL on its own) to run on batches.

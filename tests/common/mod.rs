@@ -179,6 +179,17 @@ pub fn publish_measured(path: &str, name: &str, body: &str) {
     publish_block(path, name, body, Some(measured_on()));
 }
 
+/// [`publish_measured`] for a block measured on several implementations, named by `on`.
+#[allow(dead_code)]
+pub fn publish_on(path: &str, name: &str, body: &str, on: &str) {
+    publish_block(
+        path,
+        name,
+        body,
+        Some(format!("<!-- measured on: {on} -->\n")),
+    );
+}
+
 /// The first line of a measured block: the adapter's name and driver.
 #[allow(dead_code)]
 pub fn measured_on() -> String {

@@ -1,0 +1,468 @@
+//! The shipped functions on WGSL implementations we did not write, measured the same way on each:
+//! naga → SPIR-V on the machine's Vulkan driver (in this process), naga → SPIR-V on Mesa 25
+//! lavapipe and naga → GLSL on Mesa's GL (llvmpipe, EGL without a display; both in a child
+//! process of this binary, since the Vulkan loader and wgpu's backend are chosen at start-up), and
+//! Tint → SPIR-V through Dawn. Every implementation must hold the promises made for every
+//! conforming adapter; the figures go into `docs/figures.md` ("implementations"), compared as text
+//! only where every implementation is the one it was published from.
+//!
+//! Inputs, the same everywhere: the linear-depth paths over the whole stiff grid, sampled as the
+//! emulated suite samples it (`sweep::linear_depth::sampled_worst`: 66,049 codes, 2^16 float
+//! depths); every normal codec on 2^14 spherical-Fibonacci directions plus the adversarial set;
+//! `hyperbolic_depth_from_depth24` on every 8th code and the top 256; the roughness codec on
+//! every code and 4,096 powers.
+
+mod common;
+
+#[path = "common/dawn.rs"]
+mod dawn;
+
+use prepass::harness::{Arg, Dispatch, HarnessError, Output};
+use prepass::precision::metrics::{angle_degrees, ulp_distance, ulp_error, widen3};
+use prepass::sweep::conforming::UNIT_TOLERANCE_CONFORMING;
+use prepass::sweep::linear_depth::{PATHS, sampled_worst};
+use prepass::sweep::normal::{CODECS, adversarial_directions, fibonacci_directions};
+use std::cell::RefCell;
+use std::fmt::Write as _;
+
+/// The line a child process prints per figure: `XCHECK family|function|value|detail`.
+const TAG: &str = "XCHECK ";
+
+/// One figure of one implementation.
+#[derive(Clone, Debug, PartialEq)]
+struct Figure {
+    family: &'static str,
+    function: String,
+    /// The worst error in the family's unit, or a count.
+    value: f64,
+    /// The bound on every conforming adapter, if the library states one for this figure.
+    bound: Option<f64>,
+    detail: String,
+}
+
+/// Runs a batch of calls on one implementation: the calls are recorded first, run together, and
+/// their results handed back in order (Dawn starts one node process for all of them).
+trait Executor {
+    fn run_all(&self, calls: Vec<Dispatch>) -> Vec<Output>;
+    /// The compiler and the adapter with its driver, in full.
+    fn name(&self) -> String;
+}
+
+/// The machine's adapter through wgpu (this process).
+struct Wgpu;
+
+impl Executor for Wgpu {
+    fn run_all(&self, calls: Vec<Dispatch>) -> Vec<Output> {
+        calls.into_iter().map(run_dispatch_on_wgpu).collect()
+    }
+
+    fn name(&self) -> String {
+        let i = common::gpu().adapter_info();
+        let out = if i.backend == wgpu::Backend::Gl {
+            "GLSL"
+        } else {
+            "SPIR-V"
+        };
+        format!(
+            "naga → {out}, {:?}: {} ({})",
+            i.backend, i.name, i.driver_info
+        )
+    }
+}
+
+/// A dispatch run by the harness itself: the module already holds its entry point, so the
+/// harness compiles it as is (its `Kernel` appends one: here the function is the whole module).
+fn run_dispatch_on_wgpu(d: Dispatch) -> Output {
+    common::gpu()
+        .run_dispatch(&d)
+        .unwrap_or_else(|e| panic!("wgpu: {e}"))
+}
+
+/// Dawn (Tint).
+struct Dawn(RefCell<String>);
+
+impl Executor for Dawn {
+    fn run_all(&self, calls: Vec<Dispatch>) -> Vec<Output> {
+        let jobs = calls
+            .into_iter()
+            .enumerate()
+            .map(|(i, d)| dawn::Job {
+                name: format!("call {i}"),
+                source: String::new(),
+                dispatch: Some(d),
+            })
+            .collect();
+        let (adapter, outcomes) = dawn::run(jobs);
+        *self.0.borrow_mut() = adapter;
+        outcomes
+            .into_iter()
+            .map(|o| {
+                assert!(o.error.is_none(), "Dawn, {}: {:?}", o.name, o.error);
+                o.output.expect("a dispatch's output")
+            })
+            .collect()
+    }
+
+    fn name(&self) -> String {
+        format!("Tint → SPIR-V, Dawn 0.6.2: {}", self.0.borrow())
+    }
+}
+
+/// A dispatch of `function` in `source` over `args` (`n` elements).
+fn call(source: &str, function: &str, args: &[Arg<'_>], n: u64) -> Dispatch {
+    common::gpu()
+        .kernel(source, function)
+        .and_then(|k| k.dispatch(args, n))
+        .unwrap_or_else(|e| panic!("{function}: {e}"))
+}
+
+/// Every figure on `exec`.
+fn figures(exec: &dyn Executor) -> Vec<Figure> {
+    let mut out = Vec::new();
+    linear_depth(exec, &mut out);
+    normals(exec, &mut out);
+    depth24_and_roughness(exec, &mut out);
+    out
+}
+
+/// `sampled_worst` for every path, its calls recorded, run together, then replayed.
+fn linear_depth(exec: &dyn Executor, out: &mut Vec<Figure>) {
+    for path in &PATHS {
+        let recorded = RefCell::new(Vec::new());
+        let record = |args: &[Arg<'_>], n: u64| -> Result<Vec<f32>, HarnessError> {
+            recorded
+                .borrow_mut()
+                .push(call(prepass::wgsl::LINEAR_DEPTH, path.function, args, n));
+            Ok(vec![0.0; n as usize])
+        };
+        sampled_worst(path, &record).unwrap();
+        let results = RefCell::new(exec.run_all(recorded.into_inner()).into_iter());
+        let replay = |_: &[Arg<'_>], _: u64| -> Result<Vec<f32>, HarnessError> {
+            Ok(results
+                .borrow_mut()
+                .next()
+                .expect("one result per call")
+                .as_f32()
+                .to_vec())
+        };
+        let (worst, at) = sampled_worst(path, &replay).unwrap();
+        let (_, conforming, _) = prepass::linear_depth::bounds::of(path.function).unwrap();
+        out.push(Figure {
+            family: "linear depth, max ULP",
+            function: path.function.to_string(),
+            value: worst,
+            bound: Some(conforming),
+            detail: at,
+        });
+    }
+}
+
+fn normals(exec: &dyn Executor, out: &mut Vec<Figure>) {
+    let mut inputs = fibonacci_directions(1 << 14);
+    inputs.extend(adversarial_directions());
+    let n = inputs.len() as u64;
+    let mut calls = Vec::new();
+    let mut twin_codes = Vec::new();
+    for c in &CODECS {
+        calls.push(call(c.source, c.encode, &[Arg::column(&inputs)], n));
+        // The decoder on the twin's codes, so the two halves are measured independently.
+        let codes: Vec<u32> = inputs
+            .iter()
+            .map(|&v| (c.twin_encode)(glam::Vec3::from(v)))
+            .collect();
+        calls.push(call(c.source, c.decode, &[Arg::column(&codes)], n));
+        twin_codes.push(codes);
+    }
+    let results = exec.run_all(calls);
+    for (k, c) in CODECS.iter().enumerate() {
+        let (enc, dec) = (&results[2 * k], &results[2 * k + 1]);
+        let codes_differ = enc
+            .as_u32()
+            .iter()
+            .zip(&twin_codes[k])
+            .filter(|(a, b)| a != b)
+            .count();
+        let hemisphere = c.name.starts_with("hemioct") || c.name.starts_with("xy");
+        let (mut worst, mut differ, mut not_unit, mut ulps) = (0.0f64, 0usize, 0usize, 0u64);
+        for ((input, &code), got) in inputs.iter().zip(&twin_codes[k]).zip(dec.as_vec3()) {
+            let twin = (c.twin_decode)(code).to_array();
+            if twin.map(f32::to_bits) != got.map(f32::to_bits) {
+                differ += 1;
+                for (a, b) in twin.iter().zip(got) {
+                    ulps = ulps.max(ulp_distance(*a, *b).unwrap_or(u64::MAX));
+                }
+            }
+            let g = widen3(*got);
+            let len = g.iter().map(|x| x * x).sum::<f64>().sqrt();
+            if !(len.is_finite() && (len - 1.0).abs() <= UNIT_TOLERANCE_CONFORMING) {
+                not_unit += 1;
+            }
+            if !hemisphere || input[2] >= 0.0 {
+                worst = worst.max(angle_degrees(widen3(*input), g));
+            }
+        }
+        out.push(Figure {
+            family: "normals, round-trip max° (twin's codes)",
+            function: c.name.to_string(),
+            value: worst,
+            bound: None,
+            detail: format!(
+                "{codes_differ} codes ≠ twin, {differ} decodes ≠ twin (max {ulps} ULP), of {n}"
+            ),
+        });
+        out.push(Figure {
+            family: "normals, decodes off unit length (conforming budget)",
+            function: c.name.to_string(),
+            value: not_unit as f64,
+            bound: Some(0.0),
+            detail: format!("|len − 1| ≤ {UNIT_TOLERANCE_CONFORMING:e}"),
+        });
+    }
+}
+
+fn depth24_and_roughness(exec: &dyn Executor, out: &mut Vec<Figure>) {
+    use prepass::depth24::DEPTH24_MAX;
+    let mut codes: Vec<u32> = (0..DEPTH24_MAX - 255).step_by(8).collect();
+    codes.extend(DEPTH24_MAX - 255..=DEPTH24_MAX);
+    let max_power = 8192.0f32;
+    let powers: Vec<f32> = (0..4096)
+        .map(|i| (f64::from(max_power).ln() * f64::from(i) / 4095.0).exp() as f32)
+        .collect();
+    let rcodes: Vec<u32> = (0..256).collect();
+    let calls = vec![
+        call(
+            prepass::wgsl::DEPTH24,
+            "hyperbolic_depth_from_depth24",
+            &[Arg::column(&codes)],
+            codes.len() as u64,
+        ),
+        call(
+            prepass::wgsl::ROUGHNESS,
+            "encode_log_roughness",
+            &[Arg::column(&powers), Arg::splat_f32(max_power)],
+            powers.len() as u64,
+        ),
+        call(
+            prepass::wgsl::ROUGHNESS,
+            "decode_log_roughness",
+            &[Arg::column(&rcodes), Arg::splat_f32(max_power)],
+            256,
+        ),
+    ];
+    let r = exec.run_all(calls);
+    let worst = codes
+        .iter()
+        .zip(r[0].as_f32())
+        .map(|(&d, &g)| ulp_error(g, prepass::depth24::exact::hyperbolic_depth(d)))
+        .fold(0.0, f64::max);
+    out.push(Figure {
+        family: "24-bit depth, max ULP",
+        function: "hyperbolic_depth_from_depth24".into(),
+        value: worst,
+        bound: Some(0.5),
+        detail: format!("{} codes", codes.len()),
+    });
+    let enc_differ = powers
+        .iter()
+        .zip(r[1].as_u32())
+        .filter(|&(&p, &c)| prepass::roughness::encode_log_roughness(p, max_power) != c)
+        .count();
+    let dec_differ = rcodes
+        .iter()
+        .zip(r[2].as_f32())
+        .filter(|&(&c, &g)| {
+            prepass::roughness::decode_log_roughness(c, max_power).to_bits() != g.to_bits()
+        })
+        .count();
+    out.push(Figure {
+        family: "roughness, results ≠ twin",
+        function: "encode_log_roughness / decode_log_roughness".into(),
+        value: (enc_differ + dec_differ) as f64,
+        bound: None,
+        detail: format!("{enc_differ} of 4096 codes, {dec_differ} of 256 powers"),
+    });
+}
+
+fn print_figures(figs: &[Figure]) {
+    for f in figs {
+        println!(
+            "{TAG}{}|{}|{:e}|{}|{}",
+            f.family,
+            f.function,
+            f.value,
+            f.bound.map_or("-".to_string(), |b| format!("{b:e}")),
+            f.detail
+        );
+    }
+}
+
+fn parse_figures(stdout: &str) -> Vec<Figure> {
+    stdout
+        .lines()
+        .filter_map(|l| l.find(TAG).map(|i| &l[i + TAG.len()..]))
+        .filter(|l| !l.starts_with("adapter "))
+        .map(|l| {
+            let p: Vec<&str> = l.splitn(5, '|').collect();
+            let family = FAMILIES
+                .iter()
+                .find(|f| **f == p[0])
+                .unwrap_or_else(|| panic!("unknown family {}", p[0]));
+            Figure {
+                family,
+                function: p[1].to_string(),
+                value: p[2].parse().unwrap(),
+                bound: (p[3] != "-").then(|| p[3].parse().unwrap()),
+                detail: p[4].to_string(),
+            }
+        })
+        .collect()
+}
+
+const FAMILIES: [&str; 5] = [
+    "linear depth, max ULP",
+    "normals, round-trip max° (twin's codes)",
+    "normals, decodes off unit length (conforming budget)",
+    "24-bit depth, max ULP",
+    "roughness, results ≠ twin",
+];
+
+/// Run by [`every_implementation_holds_the_conforming_promises`] in a child process whose
+/// environment chooses the implementation: prints the adapter and its figures.
+#[test]
+#[ignore = "a child of every_implementation_holds_the_conforming_promises (it runs this with each driver)"]
+fn implementation_child() {
+    println!("{TAG}adapter {}", Wgpu.name());
+    print_figures(&figures(&Wgpu));
+}
+
+/// This binary's child test under `env`: the adapter's name and its figures. FAILS, with the
+/// child's output, when the child does.
+fn child(env: &[(&str, String)]) -> (String, Vec<Figure>) {
+    let exe = std::env::current_exe().unwrap();
+    let mut cmd = std::process::Command::new(exe);
+    cmd.args([
+        "--exact",
+        "implementation_child",
+        "--include-ignored",
+        "--nocapture",
+        "--test-threads",
+        "1",
+    ]);
+    for (k, v) in env {
+        cmd.env(k, v);
+    }
+    let out = cmd.output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "the child with {env:?} failed:\n{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // The test harness's "test … " may stand before a line on the same line.
+    let tag = format!("{TAG}adapter ");
+    let adapter = stdout
+        .lines()
+        .find_map(|l| l.find(&tag).map(|i| l[i + tag.len()..].to_string()))
+        .expect("the child names its adapter");
+    (adapter, parse_figures(&stdout))
+}
+
+/// Mesa 25 lavapipe's variables, from `.ci/setup-mesa25 --env` (which `.ci/setup-dawn` ran).
+fn mesa25_env() -> Vec<(&'static str, String)> {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let manifest = format!("{root}/target/mesa25/lvp_icd.json");
+    assert!(
+        std::path::Path::new(&manifest).exists(),
+        "Mesa 25 lavapipe is not unpacked here: run `bash .ci/setup-mesa25` (`.ci/test` does)"
+    );
+    let lib = format!("{root}/target/mesa25/usr/lib/x86_64-linux-gnu");
+    let ld = match std::env::var("LD_LIBRARY_PATH") {
+        Ok(old) if !old.is_empty() => format!("{lib}:{old}"),
+        _ => lib,
+    };
+    vec![
+        ("VK_DRIVER_FILES", manifest),
+        ("LD_LIBRARY_PATH", ld),
+        ("WGPU_BACKEND", "vulkan".into()),
+    ]
+}
+
+#[test]
+fn every_implementation_holds_the_conforming_promises() {
+    let here = (Wgpu.name(), figures(&Wgpu));
+    let dawn = Dawn(RefCell::new(String::new()));
+    let dawn_figs = figures(&dawn);
+    let mut columns = vec![here, (dawn.name(), dawn_figs)];
+    let (a, f) = child(&mesa25_env());
+    columns.push((a, f));
+    let (a, f) = child(&[("WGPU_BACKEND", "gl".into())]);
+    columns.push((a, f));
+    // Every figure with a bound holds it, on every implementation.
+    let mut broken = Vec::new();
+    for (name, figs) in &columns {
+        for f in figs {
+            if let Some(b) = f.bound
+                && (f.value.is_nan() || f.value > b)
+            {
+                broken.push(format!(
+                    "{name}: {} `{}` = {} beyond {b} ({})",
+                    f.family, f.function, f.value, f.detail
+                ));
+            }
+        }
+    }
+    // The table: one row per figure, one column per implementation (named in full above it).
+    let mut body = String::new();
+    for (k, (name, _)) in columns.iter().enumerate() {
+        let _ = writeln!(body, "{}. {name}", k + 1);
+    }
+    body.push_str("\n| family | function |");
+    for (k, (name, _)) in columns.iter().enumerate() {
+        let _ = write!(
+            body,
+            " ({}) {} |",
+            k + 1,
+            name.split(':').next().unwrap_or(name)
+        );
+    }
+    body.push_str(" bound, every conforming adapter |\n|---|---|");
+    body.push_str(&"---|".repeat(columns.len() + 1));
+    body.push('\n');
+    for (i, f) in columns[0].1.iter().enumerate() {
+        let _ = write!(body, "| {} | `{}` |", f.family, f.function);
+        for (name, figs) in &columns {
+            let g = figs
+                .get(i)
+                .filter(|g| g.family == f.family && g.function == f.function)
+                .unwrap_or_else(|| panic!("{name} lacks {} {}", f.family, f.function));
+            let _ = write!(body, " {} |", cell(g));
+        }
+        let _ = writeln!(
+            body,
+            " {} |",
+            f.bound.map_or("—".to_string(), |b| format!("{b}"))
+        );
+    }
+    let drivers: Vec<&str> = columns.iter().map(|(n, _)| n.as_str()).collect();
+    common::publish_on(
+        "docs/figures.md",
+        "implementations",
+        &body,
+        &drivers.join("; "),
+    );
+    assert!(broken.is_empty(), "promises broken:\n{}", broken.join("\n"));
+}
+
+/// A figure as a table cell: the value (4 significant digits, or a count), with the detail.
+fn cell(f: &Figure) -> String {
+    let v = if f.value.fract() == 0.0 && f.value.abs() < 1e15 {
+        format!("{}", f.value as u64)
+    } else {
+        format!("{:.4}", f.value)
+    };
+    if f.family.starts_with("normals, round") || f.family.starts_with("roughness") {
+        format!("{v} ({})", f.detail)
+    } else {
+        v
+    }
+}
