@@ -83,7 +83,9 @@ pub fn ndc_from_uv(uv: Vec2) -> Vec2 {
 }
 
 /// A view ray rotated into world orientation. Twin of WGSL `world_ray` (a matrix-vector
-/// product: the adapter may fuse its multiply-adds, so agreement is within a few ULP, not bits).
+/// product: the adapter may sum its three products in another order or fuse them, so agreement
+/// is not bitwise; each lane is within a few ULP of the largest product's magnitude, which where
+/// the products cancel is many ULP of the lane itself — `tests/implementations.rs` measures it).
 pub fn world_ray(view_ray: Vec3, view_to_world: Mat3) -> Vec3 {
     let m = Mat3::from_cols(
         sane3(view_to_world.x_axis),

@@ -10,12 +10,17 @@
 //! emulated suite samples it (`sweep::linear_depth::sampled_worst`: 66,049 codes, 2^16 float
 //! depths); every normal codec on 2^14 spherical-Fibonacci directions plus the adversarial set;
 //! `hyperbolic_depth_from_depth24` on every 8th code and the top 256; the roughness codec on
-//! every code and 4,096 powers.
+//! every code and 4,096 powers; every shipped function with a twin on 4,096 random argument
+//! sets (results ≠ twin, and non-finite results, which must be none).
 
 mod common;
 
 #[path = "common/dawn.rs"]
 mod dawn;
+
+#[path = "bad_input/rows.rs"]
+#[allow(dead_code)]
+mod rows;
 
 use prepass::harness::{Arg, Dispatch, HarnessError, Output};
 use prepass::precision::metrics::{angle_degrees, ulp_distance, ulp_error, widen3};
@@ -122,7 +127,152 @@ fn figures(exec: &dyn Executor) -> Vec<Figure> {
     linear_depth(exec, &mut out);
     normals(exec, &mut out);
     depth24_and_roughness(exec, &mut out);
+    every_function(exec, &mut out);
     out
+}
+
+/// Random arguments per lane, the same on every implementation: floats of either sign with
+/// magnitudes log-uniform in [2^-8, 2^14] (cosines, distances, powers, depths), u32 lanes a
+/// random word or a small value (conventions, vertex indices) by turns.
+fn random_arg(ty: prepass::harness::ValueType, seed: &mut u64) -> rows::V {
+    use prepass::harness::Scalar;
+    use rows::V;
+    let mut next = || {
+        *seed ^= *seed << 13;
+        *seed ^= *seed >> 7;
+        *seed ^= *seed << 17;
+        *seed
+    };
+    let mut lane = || -> u32 {
+        let r = next();
+        match ty.scalar {
+            Scalar::U32 | Scalar::I32 => {
+                if r & 1 == 0 {
+                    (r >> 32) as u32
+                } else {
+                    ((r >> 32) % 4) as u32
+                }
+            }
+            Scalar::F32 => {
+                let u = ((r >> 11) as f64 / (1u64 << 53) as f64) * 22.0 - 8.0;
+                let x = 2f64.powf(u) as f32;
+                (if r & 1 == 0 { x } else { -x }).to_bits()
+            }
+        }
+    };
+    let w: Vec<u32> = (0..ty.lanes).map(|_| lane()).collect();
+    let f = |i: usize| f32::from_bits(w[i]);
+    match (ty.scalar, ty.lanes) {
+        (prepass::harness::Scalar::F32, 1) => V::F32(f(0)),
+        (prepass::harness::Scalar::F32, 2) => V::Vec2([f(0), f(1)]),
+        (prepass::harness::Scalar::F32, 3) => V::Vec3([f(0), f(1), f(2)]),
+        (prepass::harness::Scalar::F32, 4) => V::Vec4([f(0), f(1), f(2), f(3)]),
+        (_, 1) => V::U32(w[0]),
+        (_, 2) => V::UVec2([w[0], w[1]]),
+        _ => panic!("no random {ty}"),
+    }
+}
+
+/// Every shipped WGSL function with a Rust twin (the bad-input table's), on 4,096 random
+/// argument sets: results ≠ twin (bit for bit, any NaN matching NaN) and results with a
+/// non-finite lane (none allowed: WGSL leaves a run-time ±∞ or NaN indeterminate), per file.
+fn every_function(exec: &dyn Executor, out: &mut Vec<Figure>) {
+    const N: usize = 4096;
+    let mut calls = Vec::new();
+    let mut cases = Vec::new();
+    for f in rows::funcs() {
+        let Some((source, name)) = f.wgsl else {
+            continue;
+        };
+        let Some(file) = prepass::wgsl::FILES
+            .iter()
+            .find(|w| source.starts_with(w.source))
+        else {
+            continue; // a builtin's wrapper
+        };
+        let kernel = common::gpu().kernel(source, name).unwrap();
+        let params: Vec<_> = kernel.signature().params.iter().map(|p| p.ty).collect();
+        let mut seed = 0x9e37_79b9_7f4a_7c15u64 ^ (name.len() as u64);
+        let args: Vec<Vec<rows::V>> = (0..N)
+            .map(|_| params.iter().map(|&t| random_arg(t, &mut seed)).collect())
+            .collect();
+        let mut columns = vec![Vec::new(); params.len()];
+        for a in &args {
+            for (col, &v) in columns.iter_mut().zip(a) {
+                rows::words(v, col);
+            }
+        }
+        let cols: Vec<Arg> = columns.iter().map(|c| Arg::column(c)).collect();
+        calls.push(kernel.dispatch(&cols, N as u64).unwrap());
+        cases.push((file.name, f, args));
+    }
+    let results = exec.run_all(calls);
+    // Per file: functions, results ≠ twin, non-finite results, and each differing function with
+    // its largest distance (ULP for float lanes, code steps for u32 lanes).
+    type FileStats<'a> = (&'a str, usize, usize, usize, Vec<(&'static str, u64)>);
+    let mut per_file: Vec<FileStats> = Vec::new();
+    for ((file, f, args), r) in cases.iter().zip(&results) {
+        let width = r.ty.words();
+        let (mut differ, mut non_finite, mut dist) = (0, 0, 0u64);
+        for (a, w) in args.iter().zip(r.words().chunks(width)) {
+            let twin = (f.twin)(a);
+            let got = rows::from_words(twin, w);
+            if !rows::same(got, twin) {
+                differ += 1;
+                let mut tw = Vec::new();
+                rows::words(twin, &mut tw);
+                for (&x, &y) in w.iter().zip(&tw) {
+                    let d = if r.ty.scalar == prepass::harness::Scalar::F32 {
+                        ulp_distance(f32::from_bits(x), f32::from_bits(y)).unwrap_or(u64::MAX)
+                    } else {
+                        u64::from(x.abs_diff(y))
+                    };
+                    dist = dist.max(d);
+                }
+            }
+            if r.ty.scalar == prepass::harness::Scalar::F32
+                && w.iter().any(|&b| b & 0x7f80_0000 == 0x7f80_0000)
+            {
+                non_finite += 1;
+            }
+        }
+        let name = f.key();
+        let i = match per_file.iter().position(|p| p.0 == *file) {
+            Some(i) => i,
+            None => {
+                per_file.push((file, 0, 0, 0, Vec::new()));
+                per_file.len() - 1
+            }
+        };
+        let p = &mut per_file[i];
+        p.1 += 1;
+        p.2 += differ;
+        p.3 += non_finite;
+        if differ > 0 {
+            p.4.push((name, dist));
+        }
+    }
+    for (file, functions, differ, non_finite, which) in per_file {
+        let which: Vec<String> = which.iter().map(|(n, d)| format!("`{n}` ≤ {d}")).collect();
+        out.push(Figure {
+            family: "every function, random inputs: results ≠ twin",
+            function: file.to_string(),
+            value: differ as f64,
+            bound: None,
+            detail: if which.is_empty() {
+                format!("{functions} functions × {N}")
+            } else {
+                format!("{functions} functions × {N}; differ: {}", which.join(", "))
+            },
+        });
+        out.push(Figure {
+            family: "every function, random inputs: non-finite results",
+            function: file.to_string(),
+            value: non_finite as f64,
+            bound: Some(0.0),
+            detail: String::new(),
+        });
+    }
 }
 
 /// `sampled_worst` for every path, its calls recorded, run together, then replayed.
@@ -318,7 +468,9 @@ fn parse_figures(stdout: &str) -> Vec<Figure> {
         .collect()
 }
 
-const FAMILIES: [&str; 5] = [
+const FAMILIES: [&str; 7] = [
+    "every function, random inputs: results ≠ twin",
+    "every function, random inputs: non-finite results",
     "linear depth, max ULP",
     "normals, round-trip max° (twin's codes)",
     "normals, decodes off unit length (conforming budget)",
@@ -460,7 +612,10 @@ fn cell(f: &Figure) -> String {
     } else {
         format!("{:.4}", f.value)
     };
-    if f.family.starts_with("normals, round") || f.family.starts_with("roughness") {
+    if f.family.starts_with("normals, round")
+        || f.family.starts_with("roughness")
+        || f.family.ends_with("≠ twin")
+    {
         format!("{v} ({})", f.detail)
     } else {
         v

@@ -297,3 +297,65 @@ pub fn wgsl_helpers() -> impl Iterator<Item = &'static (&'static str, &'static s
 pub fn rows() -> impl Iterator<Item = &'static Row> {
     TABLES.iter().flat_map(|t| t.rows)
 }
+
+/// Bit-for-bit equality; any NaN matches any NaN (payloads are not part of the contract).
+pub fn same(a: V, b: V) -> bool {
+    let f = |x: f32, y: f32| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+    match (a, b) {
+        (V::F32(x), V::F32(y)) => f(x, y),
+        (V::U32(x), V::U32(y)) => x == y,
+        (V::UVec2(x), V::UVec2(y)) => x == y,
+        (V::Vec3x2(x), V::Vec3x2(y)) => x
+            .iter()
+            .flatten()
+            .zip(y.iter().flatten())
+            .all(|(&p, &q)| f(p, q)),
+        (V::F64x2(x), V::F64x2(y)) => x
+            .iter()
+            .zip(&y)
+            .all(|(p, q)| p.to_bits() == q.to_bits() || (p.is_nan() && q.is_nan())),
+        (V::Vec2(x), V::Vec2(y)) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
+        (V::Vec3(x), V::Vec3(y)) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
+        (V::Text(x), V::Text(y)) => x == y,
+        (V::Vec4(x), V::Vec4(y)) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
+        (V::F64(x), V::F64(y)) => x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan()),
+        (V::OptU32(x), V::OptU32(y)) => x == y,
+        (V::OptVec3(None), V::OptVec3(None)) => true,
+        (V::OptVec3(Some(x)), V::OptVec3(Some(y))) => x.iter().zip(&y).all(|(&p, &q)| f(p, q)),
+        (V::F64x3(x), V::F64x3(y)) => x
+            .iter()
+            .zip(&y)
+            .all(|(p, q)| p.to_bits() == q.to_bits() || (p.is_nan() && q.is_nan())),
+        (V::OptI64(x), V::OptI64(y)) => x == y,
+        (V::OptU64(x), V::OptU64(y)) => x == y,
+        (V::I64(x), V::I64(y)) => x == y,
+        (V::Bool(x), V::Bool(y)) => x == y,
+        _ => false,
+    }
+}
+
+pub fn words(v: V, out: &mut Vec<u32>) {
+    match v {
+        V::F32(x) => out.push(x.to_bits()),
+        V::U32(x) => out.push(x),
+        V::Vec2(x) => out.extend(x.map(f32::to_bits)),
+        V::Vec3(x) => out.extend(x.map(f32::to_bits)),
+        V::Vec4(x) => out.extend(x.map(f32::to_bits)),
+        V::UVec2(x) => out.extend(x),
+        _ => panic!("{v:?} has no WGSL type"),
+    }
+}
+
+/// Read a WGSL result shaped like `like` from its words.
+pub fn from_words(like: V, w: &[u32]) -> V {
+    let f = |i: usize| f32::from_bits(w[i]);
+    match like {
+        V::F32(_) => V::F32(f(0)),
+        V::U32(_) => V::U32(w[0]),
+        V::Vec2(_) => V::Vec2([f(0), f(1)]),
+        V::Vec3(_) => V::Vec3([f(0), f(1), f(2)]),
+        V::Vec4(_) => V::Vec4([f(0), f(1), f(2), f(3)]),
+        V::UVec2(_) => V::UVec2([w[0], w[1]]),
+        _ => panic!("{like:?} has no WGSL type"),
+    }
+}
