@@ -32,9 +32,9 @@
 //! WGSL lets an implementation assume that no float operation sees or produces NaN or ±∞, so
 //! none of these functions returns one: a distance of `2^127` or more (the far plane of an
 //! infinite projection, the sky, the depths next to it, whose denominator is subnormal), NaN
-//! depth, and planes or constants no
-//! [`Projection`](crate::projection::Projection) has (NaN or ±∞, `near ≤ 0`, `near ≥ 2^100`,
-//! `far ≤ near`, ratios outside `[0, 1]`) return [`SKY`], the largest finite `f32`. Special
+//! depth, and planes or constants no [`Projection`](crate::projection::Projection) has (NaN or
+//! ±∞, `near` outside `[2^-126, 2^104]`, `far ≤ near`, ratios outside `[0, 1]`) return [`SKY`],
+//! the largest finite `f32`. Special
 //! inputs are recognised from their bits, as the WGSL does. A lighting pass tests
 //! `vz >= SKY` (`vz >= 3.4028234e38` in WGSL, which rounds to it: Tint rejects the usual
 //! `3.4028235e38`, which lies above `f32::MAX`) for the sky.
@@ -69,10 +69,11 @@ fn divide_or_sky(numerator: f32, s: f32) -> f32 {
     }
 }
 
-/// Planes a projection can have (as WGSL `ld_planes_ok`, from bits): `near` positive, finite and
-/// below `2^100`, `far > near` finite or `+∞`.
+/// Planes a projection can have (as WGSL `ld_planes_ok`, from bits, and as
+/// [`Projection::new`](crate::projection::Projection::new) checks): `near` normal in
+/// `[2^-126, 2^104]` (so `near·(2^24 − 1)` stays finite), `far > near` finite or `+∞`.
 fn planes_ok(near: f32, far: f32) -> bool {
-    near.to_bits().wrapping_sub(1) < 0x717f_ffff
+    near.to_bits().wrapping_sub(0x0080_0000) <= 0x7300_0000
         && (far == f32::INFINITY || (far.is_finite() && far > near))
 }
 

@@ -11,7 +11,8 @@
 //! depths); every normal codec on 2^14 spherical-Fibonacci directions plus the adversarial set;
 //! `hyperbolic_depth_from_depth24` on every 8th code and the top 256; the roughness codec on
 //! every code and 4,096 powers; every shipped function with a twin on 4,096 random argument
-//! sets (results ≠ twin, and non-finite results, which must be none).
+//! sets (results ≠ twin), on its bad-input rows (results ≠ the documented answer) and on the
+//! fuzz corpora's inputs, with the non-finite results over all three (which must be none).
 
 mod common;
 
@@ -173,13 +174,74 @@ fn random_arg(ty: prepass::harness::ValueType, seed: &mut u64) -> rows::V {
     }
 }
 
-/// Every shipped WGSL function with a Rust twin (the bad-input table's), on 4,096 random
-/// argument sets: results ≠ twin (bit for bit, any NaN matching NaN) and results with a
-/// non-finite lane (none allowed: WGSL leaves a run-time ±∞ or NaN indeterminate), per file.
+/// The fuzz corpora (`fuzz/corpus/*/*`: the inputs libFuzzer kept, full of NaN, ±∞, subnormal
+/// and huge bit patterns) as argument bits for a function with parameters of `words` words each:
+/// the bytes after the first (which picks a fuzz entry) read as little-endian words, lane after
+/// lane, zeros past the end. One argument set per corpus file, in file-name order.
+fn corpus_args(words: &[usize]) -> Vec<Vec<u32>> {
+    static FILES: std::sync::OnceLock<Vec<Vec<u8>>> = std::sync::OnceLock::new();
+    let files = FILES.get_or_init(|| {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/corpus");
+        let mut paths = Vec::new();
+        for dir in std::fs::read_dir(&root).expect("fuzz/corpus") {
+            for f in std::fs::read_dir(dir.unwrap().path()).unwrap() {
+                paths.push(f.unwrap().path());
+            }
+        }
+        paths.sort();
+        paths.iter().map(|p| std::fs::read(p).unwrap()).collect()
+    });
+    let mut columns = vec![Vec::new(); words.len()];
+    for bytes in files {
+        let mut word = bytes.get(1..).unwrap_or(&[]).chunks(4).map(|c| {
+            let mut b = [0u8; 4];
+            b[..c.len()].copy_from_slice(c);
+            u32::from_le_bytes(b)
+        });
+        for (col, &w) in columns.iter_mut().zip(words) {
+            col.extend((0..w).map(|_| word.next().unwrap_or(0)));
+        }
+    }
+    columns
+}
+
+/// Whether a result's words hold a non-finite `f32` lane.
+fn non_finite(ty: prepass::harness::ValueType, w: &[u32]) -> bool {
+    ty.scalar == prepass::harness::Scalar::F32 && w.iter().any(|&b| b & 0x7f80_0000 == 0x7f80_0000)
+}
+
+/// Per file of `wgsl/`: functions, random results ≠ twin, rows run and ≠ documented, results
+/// and non-finite results, and each function differing from its twin with its largest distance
+/// (ULP for float lanes, code steps for u32 lanes).
+#[derive(Default)]
+struct FileStats {
+    functions: usize,
+    differ: usize,
+    rows: usize,
+    rows_wrong: usize,
+    inputs: usize,
+    non_finite: usize,
+    which: Vec<(&'static str, u64)>,
+}
+
+/// Every shipped WGSL function with a Rust twin (the bad-input table's) on three input sets:
+/// 4,096 random argument sets (results ≠ twin, bit for bit, any NaN matching NaN), its
+/// bad-input rows (results ≠ the documented answer) and the fuzz corpora's inputs; per file,
+/// with the non-finite results over all three (none allowed: WGSL leaves a run-time ±∞ or NaN
+/// indeterminate; `unpack2x16float`'s ∞/NaN halves are the builtin's own and not counted).
 fn every_function(exec: &dyn Executor, out: &mut Vec<Figure>) {
     const N: usize = 4096;
     let mut calls = Vec::new();
     let mut cases = Vec::new();
+    let columns_of = |sets: &mut dyn Iterator<Item = &[rows::V]>, arity: usize| {
+        let mut columns = vec![Vec::new(); arity];
+        for set in sets {
+            for (col, &v) in columns.iter_mut().zip(set) {
+                rows::words(v, col);
+            }
+        }
+        columns
+    };
     for f in rows::funcs() {
         let Some((source, name)) = f.wgsl else {
             continue;
@@ -196,81 +258,119 @@ fn every_function(exec: &dyn Executor, out: &mut Vec<Figure>) {
         let args: Vec<Vec<rows::V>> = (0..N)
             .map(|_| params.iter().map(|&t| random_arg(t, &mut seed)).collect())
             .collect();
-        let mut columns = vec![Vec::new(); params.len()];
-        for a in &args {
-            for (col, &v) in columns.iter_mut().zip(a) {
-                rows::words(v, col);
-            }
+        let documented: Vec<&rows::Row> = rows::rows().filter(|r| r.func == f.key()).collect();
+        let words: Vec<usize> = params.iter().map(|t| t.words()).collect();
+        let sets = [
+            columns_of(&mut args.iter().map(Vec::as_slice), params.len()),
+            columns_of(&mut documented.iter().map(|r| r.args), params.len()),
+            corpus_args(&words),
+        ];
+        for columns in &sets {
+            let cols: Vec<Arg> = columns.iter().map(|c| Arg::column(c)).collect();
+            let n = (columns[0].len() / words[0]) as u64;
+            calls.push(kernel.dispatch(&cols, n).unwrap());
         }
-        let cols: Vec<Arg> = columns.iter().map(|c| Arg::column(c)).collect();
-        calls.push(kernel.dispatch(&cols, N as u64).unwrap());
-        cases.push((file.name, f, args));
+        cases.push((file.name, f, args, documented));
     }
     let results = exec.run_all(calls);
-    // Per file: functions, results ≠ twin, non-finite results, and each differing function with
-    // its largest distance (ULP for float lanes, code steps for u32 lanes).
-    type FileStats<'a> = (&'a str, usize, usize, usize, Vec<(&'static str, u64)>);
-    let mut per_file: Vec<FileStats> = Vec::new();
-    for ((file, f, args), r) in cases.iter().zip(&results) {
-        let width = r.ty.words();
-        let (mut differ, mut non_finite, mut dist) = (0, 0, 0u64);
-        for (a, w) in args.iter().zip(r.words().chunks(width)) {
-            let twin = (f.twin)(a);
-            let got = rows::from_words(twin, w);
-            if !rows::same(got, twin) {
-                differ += 1;
-                let mut tw = Vec::new();
-                rows::words(twin, &mut tw);
-                for (&x, &y) in w.iter().zip(&tw) {
-                    let d = if r.ty.scalar == prepass::harness::Scalar::F32 {
-                        ulp_distance(f32::from_bits(x), f32::from_bits(y)).unwrap_or(u64::MAX)
-                    } else {
-                        u64::from(x.abs_diff(y))
-                    };
-                    dist = dist.max(d);
-                }
-            }
-            if r.ty.scalar == prepass::harness::Scalar::F32
-                && w.iter().any(|&b| b & 0x7f80_0000 == 0x7f80_0000)
-            {
-                non_finite += 1;
-            }
-        }
-        let name = f.key();
+    let mut per_file: Vec<(&str, FileStats)> = Vec::new();
+    for ((file, f, args, documented), r) in cases.iter().zip(results.chunks(3)) {
+        let (random, at_rows) = (&r[0], &r[1]);
+        let width = random.ty.words();
         let i = match per_file.iter().position(|p| p.0 == *file) {
             Some(i) => i,
             None => {
-                per_file.push((file, 0, 0, 0, Vec::new()));
+                per_file.push((file, FileStats::default()));
                 per_file.len() - 1
             }
         };
-        let p = &mut per_file[i];
-        p.1 += 1;
-        p.2 += differ;
-        p.3 += non_finite;
-        if differ > 0 {
-            p.4.push((name, dist));
+        let st = &mut per_file[i].1;
+        st.functions += 1;
+        let mut dist = None;
+        for (a, w) in args.iter().zip(random.words().chunks(width)) {
+            let twin = (f.twin)(a);
+            if rows::same(rows::from_words(twin, w), twin) {
+                continue;
+            }
+            st.differ += 1;
+            let mut tw = Vec::new();
+            rows::words(twin, &mut tw);
+            for (&x, &y) in w.iter().zip(&tw) {
+                let d = if random.ty.scalar == prepass::harness::Scalar::F32 {
+                    ulp_distance(f32::from_bits(x), f32::from_bits(y)).unwrap_or(u64::MAX)
+                } else {
+                    u64::from(x.abs_diff(y))
+                };
+                dist = Some(dist.unwrap_or(0).max(d));
+            }
+        }
+        if let Some(d) = dist {
+            st.which.push((f.key(), d));
+        }
+        for (row, w) in documented.iter().zip(at_rows.words().chunks(width)) {
+            st.rows += 1;
+            if !rows::same(rows::from_words(row.expect, w), row.expect) {
+                st.rows_wrong += 1;
+            }
+        }
+        for (set, out) in ["random", "bad-input", "corpus"].iter().zip(r) {
+            st.inputs += out.len();
+            let bad: Vec<usize> = out
+                .words()
+                .chunks(width)
+                .enumerate()
+                .filter(|(_, w)| non_finite(out.ty, w))
+                .map(|(i, _)| i)
+                .collect();
+            if let Some(&i) = bad.first() {
+                let example = if *set == "random" {
+                    format!(", e.g. {:?}", args[i])
+                } else {
+                    String::new()
+                };
+                eprintln!(
+                    "{}: {} non-finite results on the {set} inputs (first at #{i}{example})",
+                    f.key(),
+                    bad.len()
+                );
+            }
+            st.non_finite += bad.len();
         }
     }
-    for (file, functions, differ, non_finite, which) in per_file {
-        let which: Vec<String> = which.iter().map(|(n, d)| format!("`{n}` ≤ {d}")).collect();
+    for (file, st) in per_file {
+        let which: Vec<String> = st
+            .which
+            .iter()
+            .map(|(n, d)| format!("`{n}` ≤ {d}"))
+            .collect();
         out.push(Figure {
             family: "every function, random inputs: results ≠ twin",
             function: file.to_string(),
-            value: differ as f64,
+            value: st.differ as f64,
             bound: None,
             detail: if which.is_empty() {
-                format!("{functions} functions × {N}")
+                format!("{} functions × {N}", st.functions)
             } else {
-                format!("{functions} functions × {N}; differ: {}", which.join(", "))
+                format!(
+                    "{} functions × {N}; differ: {}",
+                    st.functions,
+                    which.join(", ")
+                )
             },
         });
         out.push(Figure {
-            family: "every function, random inputs: non-finite results",
+            family: "bad-input rows: results ≠ the documented answer",
             function: file.to_string(),
-            value: non_finite as f64,
+            value: st.rows_wrong as f64,
+            bound: None,
+            detail: format!("of {} rows", st.rows),
+        });
+        out.push(Figure {
+            family: "random, bad-input and fuzz-corpus inputs: non-finite results",
+            function: file.to_string(),
+            value: st.non_finite as f64,
             bound: Some(0.0),
-            detail: String::new(),
+            detail: format!("of {} results", st.inputs),
         });
     }
 }
@@ -468,9 +568,10 @@ fn parse_figures(stdout: &str) -> Vec<Figure> {
         .collect()
 }
 
-const FAMILIES: [&str; 7] = [
+const FAMILIES: [&str; 8] = [
     "every function, random inputs: results ≠ twin",
-    "every function, random inputs: non-finite results",
+    "bad-input rows: results ≠ the documented answer",
+    "random, bad-input and fuzz-corpus inputs: non-finite results",
     "linear depth, max ULP",
     "normals, round-trip max° (twin's codes)",
     "normals, decodes off unit length (conforming budget)",
@@ -596,13 +697,13 @@ fn every_implementation_holds_the_conforming_promises() {
         );
     }
     let drivers: Vec<&str> = columns.iter().map(|(n, _)| n.as_str()).collect();
+    assert!(broken.is_empty(), "promises broken:\n{}", broken.join("\n"));
     common::publish_on(
         "docs/figures.md",
         "implementations",
         &body,
         &drivers.join("; "),
     );
-    assert!(broken.is_empty(), "promises broken:\n{}", broken.join("\n"));
 }
 
 /// A figure as a table cell: the value (4 significant digits, or a count), with the detail.
@@ -615,6 +716,8 @@ fn cell(f: &Figure) -> String {
     if f.family.starts_with("normals, round")
         || f.family.starts_with("roughness")
         || f.family.ends_with("≠ twin")
+        || f.family.contains("non-finite")
+        || f.family.starts_with("bad-input")
     {
         format!("{v} ({})", f.detail)
     } else {

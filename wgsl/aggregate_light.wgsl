@@ -19,13 +19,37 @@
 // and colours are clamped to [0, 2^40] (negative intensities add nothing). When the
 // weighted directions cancel (largest component of acc.xyz zero or subnormal) the direction is
 // zero, so every colour term is zero, and the position is the vertex itself; per pixel, a zero-length
-// P_agg − p, a bad normal or non-finite input gives 0.
+// P_agg − p, a bad normal or non-finite input gives 0. Every result is finite (WGSL leaves a
+// run-time ±Inf indeterminate): accumulator, colour and position lanes are read finite first
+// (NaN → 0, ±Inf and beyond ±2^100 → ±2^100; a skipped light returns the accumulator so read),
+// the aggregate direction's within ±2^40, so no difference, sum or product overflows; an
+// aggregate position whose offset acc.xyz/acc.w would reach 2^101 is the vertex.
 
 const AGGREGATE_LIGHT_WEIGHT_MAX = 1099511627776.0; // 2^40
+// The largest magnitude of a position or accumulator lane the functions compute with (2^100):
+// differences and sums of such lanes cannot overflow.
+const AGGREGATE_LIGHT_LIMIT = 1.2676506e30;
 
 // True when no component of v is NaN or ±Inf (judged from the bits).
 fn aggregate_light_finite3(v: vec3<f32>) -> bool {
     return all((bitcast<vec3<u32>>(v) & vec3<u32>(0x7fffffffu)) < vec3<u32>(0x7f800000u));
+}
+
+// v with every lane made finite and within ±limit, from its bits: NaN → 0, ±inf → ±limit. Sums
+// and products of such lanes stay finite (WGSL leaves a run-time ±inf indeterminate).
+fn aggregate_light_sane3(v: vec3<f32>, limit: f32) -> vec3<f32> {
+    let bits = bitcast<vec3<u32>>(v);
+    let mag = bits & vec3<u32>(0x7fffffffu);
+    let big = select(vec3<f32>(limit), vec3<f32>(-limit), (bits & vec3<u32>(0x80000000u)) != vec3<u32>(0u));
+    let finite = clamp(select(v, vec3<f32>(0.0), mag >= vec3<u32>(0x7f800000u)), vec3<f32>(-limit),
+        vec3<f32>(limit));
+    return select(finite, big, mag == vec3<u32>(0x7f800000u));
+}
+
+// aggregate_light_sane3 on all four lanes of an accumulator.
+fn aggregate_light_sane4(v: vec4<f32>, limit: f32) -> vec4<f32> {
+    let w = aggregate_light_sane3(vec3<f32>(v.w, 0.0, 0.0), limit).x;
+    return vec4<f32>(aggregate_light_sane3(v.xyz, limit), w);
 }
 
 // v/|v| scaled by its largest component first (no overflow), or zero when v is non-finite or
@@ -43,23 +67,27 @@ fn aggregate_light_unit(v: vec3<f32>, smallest: u32) -> vec3<f32> {
 // Fold light i into a vertex's accumulator (start from vec4(0)).
 fn aggregate_light_accumulate(acc: vec4<f32>, vertex: vec3<f32>, light_position: vec3<f32>,
                               weight: f32) -> vec4<f32> {
-    let rel = light_position - vertex;
+    let a0 = aggregate_light_sane4(acc, AGGREGATE_LIGHT_LIMIT);
     let w_bits = bitcast<u32>(weight) & 0x7fffffffu;
+    if (!aggregate_light_finite3(vertex) || !aggregate_light_finite3(light_position)
+        || w_bits >= 0x7f800000u) {
+        return a0;
+    }
+    let rel = aggregate_light_sane3(light_position, AGGREGATE_LIGHT_LIMIT)
+        - aggregate_light_sane3(vertex, AGGREGATE_LIGHT_LIMIT);
     let a = abs(rel);
     let m = max(a.x, max(a.y, a.z));
     // 0x1f800000 = 2^-64
-    if (!aggregate_light_finite3(vertex) || !aggregate_light_finite3(light_position)
-        || !aggregate_light_finite3(rel) || w_bits >= 0x7f800000u || bitcast<u32>(m) < 0x1f800000u) {
-        return acc;
+    if (bitcast<u32>(m) < 0x1f800000u) {
+        return a0;
     }
     let w = clamp(weight, 0.0, AGGREGATE_LIGHT_WEIGHT_MAX);
     let s = rel / m;
     let inv = inverseSqrt(dot(s, s));
     // |rel| = m/inv, so W/|rel| = W·inv/m.
-    return acc + vec4<f32>(w * (s * inv), w * inv / m);
+    return a0 + vec4<f32>(w * (s * inv), w * inv / m);
 }
 
-// The aggregate light's direction from the vertex, L_agg (zero when the directions cancel).
 fn aggregate_light_direction(acc: vec4<f32>) -> vec3<f32> {
     return aggregate_light_unit(acc.xyz, 0x00800000u);
 }
@@ -67,35 +95,39 @@ fn aggregate_light_direction(acc: vec4<f32>) -> vec3<f32> {
 // The aggregate light's position V + acc.xyz/acc.w (the vertex when nothing was accumulated or
 // the directions cancel).
 fn aggregate_light_position(acc: vec4<f32>, vertex: vec3<f32>) -> vec3<f32> {
+    let v = aggregate_light_sane3(vertex, AGGREGATE_LIGHT_LIMIT);
     let a = abs(acc.xyz);
     let m = max(a.x, max(a.y, a.z));
+    // m/W below 2^101, from the exponents, so the quotient and the sum stay finite.
     if (!aggregate_light_finite3(acc.xyz) || !((bitcast<u32>(acc.w) & 0x7fffffffu) < 0x7f800000u)
-        || bitcast<u32>(m) < 0x00800000u || !(acc.w > 0.0)) {
-        return vertex;
+        || bitcast<u32>(m) < 0x00800000u || !(acc.w > 0.0)
+        || i32(bitcast<u32>(m)) - i32(bitcast<u32>(acc.w)) >= 838860800) {
+        return v;
     }
-    return vertex + acc.xyz / acc.w;
+    return v + acc.xyz / acc.w;
 }
 
-// Fold light i's colour into the aggregate colour: colour_acc + C_i·(L_i·L_agg), Filippov's
-// C_agg = Σ C_i (L_i·L_agg), unclamped (the identity needs every term).
 fn aggregate_light_accumulate_colour(colour_acc: vec3<f32>, vertex: vec3<f32>,
                                      light_position: vec3<f32>, colour: vec3<f32>,
                                      aggregate_direction: vec3<f32>) -> vec3<f32> {
-    let rel = light_position - vertex;
+    let c0 = aggregate_light_sane3(colour_acc, AGGREGATE_LIGHT_LIMIT);
+    if (!aggregate_light_finite3(vertex) || !aggregate_light_finite3(light_position)
+        || !aggregate_light_finite3(colour) || !aggregate_light_finite3(aggregate_direction)) {
+        return c0;
+    }
+    let rel = aggregate_light_sane3(light_position, AGGREGATE_LIGHT_LIMIT)
+        - aggregate_light_sane3(vertex, AGGREGATE_LIGHT_LIMIT);
     let a = abs(rel);
     let m = max(a.x, max(a.y, a.z));
-    if (!aggregate_light_finite3(vertex) || !aggregate_light_finite3(light_position)
-        || !aggregate_light_finite3(rel) || !aggregate_light_finite3(colour)
-        || !aggregate_light_finite3(aggregate_direction) || bitcast<u32>(m) < 0x1f800000u) {
-        return colour_acc;
+    if (bitcast<u32>(m) < 0x1f800000u) {
+        return c0;
     }
     let l = aggregate_light_unit(rel, 0x1f800000u);
     let c = clamp(colour, vec3<f32>(0.0), vec3<f32>(AGGREGATE_LIGHT_WEIGHT_MAX));
-    return colour_acc + c * dot(l, aggregate_direction);
+    let d = aggregate_light_sane3(aggregate_direction, AGGREGATE_LIGHT_WEIGHT_MAX);
+    return c0 + c * dot(l, d);
 }
 
-// Per pixel: max(C_agg · max(N·normalize(P_agg − p), 0), 0) (an RGB C_agg can have a negative
-// channel when lights of different colours oppose; light never subtracts).
 fn aggregate_light_diffuse(normal: vec3<f32>, position: vec3<f32>, aggregate_position: vec3<f32>,
                            aggregate_colour: vec3<f32>) -> vec3<f32> {
     if (!aggregate_light_finite3(position) || !aggregate_light_finite3(aggregate_position)
@@ -103,6 +135,8 @@ fn aggregate_light_diffuse(normal: vec3<f32>, position: vec3<f32>, aggregate_pos
         return vec3<f32>(0.0);
     }
     let n = aggregate_light_unit(normal, 0x00800000u);
-    let l = aggregate_light_unit(aggregate_position - position, 0x00800000u);
-    return max(aggregate_colour * max(dot(n, l), 0.0), vec3<f32>(0.0));
+    let l = aggregate_light_unit(aggregate_light_sane3(aggregate_position, AGGREGATE_LIGHT_LIMIT)
+        - aggregate_light_sane3(position, AGGREGATE_LIGHT_LIMIT), 0x00800000u);
+    let c = aggregate_light_sane3(aggregate_colour, AGGREGATE_LIGHT_LIMIT);
+    return max(c * max(dot(n, l), 0.0), vec3<f32>(0.0));
 }

@@ -42,15 +42,20 @@ fn light_volume_sum_overflows(a: f32, b: f32) -> bool {
 }
 
 // rho: distance from the eye to the corners of the near-plane rectangle,
-// near·sqrt(1 + tan_half_fov_x² + tan_half_fov_y²). Bad input (NaN/Inf, negative) gives +Inf's
-// stand-in 3.4e38, which makes every volume need depth-fail.
+// near·sqrt(1 + tan_half_fov_x² + tan_half_fov_y²). Bad input (NaN/Inf, negative, a tangent
+// above 2^60, or a distance that would pass 3.4e38) gives +Inf's stand-in 3.4e38, which makes
+// every volume need depth-fail; no square or product overflows.
 fn light_volume_near_corner_distance(near: f32, tan_half_fov_x: f32, tan_half_fov_y: f32) -> f32 {
     if (!light_volume_finite(near) || !light_volume_finite(tan_half_fov_x)
         || !light_volume_finite(tan_half_fov_y) || near < 0.0 || tan_half_fov_x < 0.0
-        || tan_half_fov_y < 0.0) {
+        || tan_half_fov_y < 0.0 || tan_half_fov_x > 1.1529215e18 || tan_half_fov_y > 1.1529215e18) {
         return 3.4e38;
     }
-    return near * sqrt(1.0 + tan_half_fov_x * tan_half_fov_x + tan_half_fov_y * tan_half_fov_y);
+    let r = sqrt(1.0 + tan_half_fov_x * tan_half_fov_x + tan_half_fov_y * tan_half_fov_y);
+    if (near > 3.4e38 / r) {
+        return 3.4e38;
+    }
+    return near * r;
 }
 
 // 1 when a sphere light volume (view-space centre, radius) may touch the eye's rho-ball, so the
@@ -145,13 +150,16 @@ fn light_volume_cone_scaled(apex: vec3<f32>, axis: vec3<f32>, h: f32, k: f32,
 // (far = +Inf): 1 − n/vz and n/vz. reversed: 0 standard, anything else reversed.
 // Bad input (every result finite, in [0, 1] up to rounding): vz is clamped to [near, far];
 // NaN or +Inf vz (from its bits) and planes no projection has (near not positive and finite,
-// far not above near nor +Inf) give the far end (1 standard, 0 reversed).
+// far not above near nor +Inf, far/near of 2^126 or more) give the far end (1 standard, 0
+// reversed).
 fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32 {
     let infinite = bitcast<u32>(far) == 0x7f800000u;
     let far_end = select(1.0, 0.0, reversed != 0u);
     let vz_bits = bitcast<u32>(vz);
+    // far/near below 2^126 for a finite far (from the exponents), so f/vz stays finite.
     if (!light_volume_finite(near) || !(near > 0.0)
-        || !(infinite || (light_volume_finite(far) && far > near))
+        || !(infinite || (light_volume_finite(far) && far > near
+            && bitcast<u32>(far) - bitcast<u32>(near) < 0x3f000000u))
         || (vz_bits & 0x7fffffffu) > 0x7f800000u || vz_bits == 0x7f800000u) {
         return far_end;
     }

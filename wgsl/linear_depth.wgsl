@@ -71,11 +71,12 @@ fn ld_consts_ok(k: vec3<f32>) -> bool {
         <= vec3<u32>(0x7f7ffffeu, 0x3f800000u, 0x3f800000u));
 }
 
-// Whether near and far are planes a projection can have, from their bits: near positive,
-// finite and below 2^100 (so near·(2^24 - 1) stays finite), far above near or +inf.
+// Whether near and far are planes a projection can have (as Projection::new checks), from
+// their bits: near a normal float in [2^-126, 2^104] (so near·(2^24 - 1) stays finite), far
+// above near or +inf.
 fn ld_planes_ok(near: f32, far: f32) -> bool {
     let bf = bitcast<u32>(far);
-    return bitcast<u32>(near) - 1u < 0x717fffffu
+    return bitcast<u32>(near) - 0x00800000u <= 0x73000000u
         && (bf == 0x7f800000u || (bf < 0x7f800000u && far > near));
 }
 

@@ -20,7 +20,12 @@
 //! every coordinate, is skipped; weights and colours clamp to `[0, 2^40]`. When the
 //! weighted directions cancel (largest component of `acc.xyz` zero or subnormal) the direction
 //! is zero, every colour term zero and the position `V`. Per pixel: a zero-length `P_agg − p`,
-//! a bad normal or non-finite input gives 0, and channels are clamped at 0.
+//! a bad normal or non-finite input gives 0, and channels are clamped at 0. Every result is
+//! finite (WGSL leaves a run-time ±∞ indeterminate): accumulator, colour and position lanes are
+//! read finite first (NaN → 0, ±∞ and beyond ±2^100 → ±2^100, [`AGGREGATE_LIGHT_LIMIT`]; a
+//! skipped light returns the accumulator so read), the aggregate direction's within `±2^40`,
+//! so no difference, sum or product overflows; a position whose offset `acc.xyz/acc.w` would
+//! reach `2^101` is the vertex.
 
 use glam::{Vec3, Vec4};
 
@@ -28,6 +33,26 @@ use glam::{Vec3, Vec4};
 pub const AGGREGATE_LIGHT_WEIGHT_MAX: f32 = 1_099_511_627_776.0;
 /// Lights closer than this to the vertex in every coordinate are skipped (`2^-64`).
 pub const AT_VERTEX: f32 = 5.421_011e-20;
+
+/// The largest magnitude of a position or accumulator lane computed with, `2^100`.
+pub const AGGREGATE_LIGHT_LIMIT: f32 = 1.267_650_6e30;
+
+/// `v` with every lane finite and within `±limit` (WGSL `aggregate_light_sane3`): NaN → 0,
+/// ±∞ → ±limit.
+fn sane3(v: Vec3, limit: f32) -> Vec3 {
+    let lane = |x: f32| {
+        if x.is_nan() {
+            0.0
+        } else {
+            x.clamp(-limit, limit)
+        }
+    };
+    Vec3::new(lane(v.x), lane(v.y), lane(v.z))
+}
+
+fn sane4(v: Vec4, limit: f32) -> Vec4 {
+    sane3(v.truncate(), limit).extend(sane3(Vec3::new(v.w, 0.0, 0.0), limit).x)
+}
 
 fn aggregate_light_finite3(v: Vec3) -> bool {
     v.to_array()
@@ -52,20 +77,22 @@ pub fn aggregate_light_accumulate(
     light_position: Vec3,
     weight: f32,
 ) -> Vec4 {
-    let rel = light_position - vertex;
-    let m = rel.abs().max_element();
+    let a0 = sane4(acc, AGGREGATE_LIGHT_LIMIT);
     if !aggregate_light_finite3(vertex)
         || !aggregate_light_finite3(light_position)
-        || !aggregate_light_finite3(rel)
         || (weight.to_bits() & 0x7fff_ffff) >= 0x7f80_0000
-        || m.to_bits() < AT_VERTEX.to_bits()
     {
-        return acc;
+        return a0;
+    }
+    let rel = sane3(light_position, AGGREGATE_LIGHT_LIMIT) - sane3(vertex, AGGREGATE_LIGHT_LIMIT);
+    let m = rel.abs().max_element();
+    if m.to_bits() < AT_VERTEX.to_bits() {
+        return a0;
     }
     let w = weight.clamp(0.0, AGGREGATE_LIGHT_WEIGHT_MAX);
     let s = rel / m;
     let inv = 1.0 / s.dot(s).sqrt();
-    acc + (w * (s * inv)).extend(w * inv / m)
+    a0 + (w * (s * inv)).extend(w * inv / m)
 }
 
 /// The aggregate direction `L_agg` (zero when the weighted directions cancel).
@@ -75,6 +102,7 @@ pub fn aggregate_light_direction(acc: Vec4) -> Vec3 {
 
 /// The aggregate position `V + acc.xyz/acc.w` (`V` when nothing accumulated or they cancel).
 pub fn aggregate_light_position(acc: Vec4, vertex: Vec3) -> Vec3 {
+    let v = sane3(vertex, AGGREGATE_LIGHT_LIMIT);
     let x = acc.truncate();
     let m = x.abs().max_element();
     if !aggregate_light_finite3(x)
@@ -82,10 +110,12 @@ pub fn aggregate_light_position(acc: Vec4, vertex: Vec3) -> Vec3 {
         || m.to_bits() < 0x0080_0000
         || acc.w.is_nan()
         || acc.w <= 0.0
+        // m/W below 2^101, from the exponents (WGSL: the same test on the bits as i32).
+        || (m.to_bits() as i32).wrapping_sub(acc.w.to_bits() as i32) >= 100 << 23
     {
-        return vertex;
+        return v;
     }
-    vertex + x / acc.w
+    v + x / acc.w
 }
 
 /// Fold a light's colour into `C_agg`: `colour_acc + C_i (L_i·L_agg)` (unclamped, as in
@@ -97,20 +127,22 @@ pub fn aggregate_light_accumulate_colour(
     colour: Vec3,
     aggregate_direction: Vec3,
 ) -> Vec3 {
-    let rel = light_position - vertex;
-    let m = rel.abs().max_element();
+    let c0 = sane3(colour_acc, AGGREGATE_LIGHT_LIMIT);
     if !aggregate_light_finite3(vertex)
         || !aggregate_light_finite3(light_position)
-        || !aggregate_light_finite3(rel)
         || !aggregate_light_finite3(colour)
         || !aggregate_light_finite3(aggregate_direction)
-        || m.to_bits() < AT_VERTEX.to_bits()
     {
-        return colour_acc;
+        return c0;
+    }
+    let rel = sane3(light_position, AGGREGATE_LIGHT_LIMIT) - sane3(vertex, AGGREGATE_LIGHT_LIMIT);
+    if rel.abs().max_element().to_bits() < AT_VERTEX.to_bits() {
+        return c0;
     }
     let l = aggregate_light_unit(rel, AT_VERTEX.to_bits());
     let c = colour.clamp(Vec3::ZERO, Vec3::splat(AGGREGATE_LIGHT_WEIGHT_MAX));
-    colour_acc + c * l.dot(aggregate_direction)
+    let d = sane3(aggregate_direction, AGGREGATE_LIGHT_WEIGHT_MAX);
+    c0 + c * l.dot(d)
 }
 
 /// Per pixel: `max(C_agg·max(N·normalize(P_agg − p), 0), 0)`.
@@ -127,8 +159,11 @@ pub fn aggregate_light_diffuse(
         return Vec3::ZERO;
     }
     let n = aggregate_light_unit(normal, 0x0080_0000);
-    let l = aggregate_light_unit(aggregate_position - position, 0x0080_0000);
-    (colour * n.dot(l).max(0.0)).max(Vec3::ZERO)
+    let l = aggregate_light_unit(
+        sane3(aggregate_position, AGGREGATE_LIGHT_LIMIT) - sane3(position, AGGREGATE_LIGHT_LIMIT),
+        0x0080_0000,
+    );
+    (sane3(colour, AGGREGATE_LIGHT_LIMIT) * n.dot(l).max(0.0)).max(Vec3::ZERO)
 }
 
 /// Whole-vertex convenience (CPU side): fold `(position, weight, colour)` lights at `vertex`

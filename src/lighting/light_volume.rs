@@ -57,7 +57,8 @@ fn light_volume_sum_overflows(a: f32, b: f32) -> bool {
 }
 
 /// `ρ = near·√(1 + tan_x² + tan_y²)`: distance from the eye to the near-plane rectangle's
-/// corners. Bad input (NaN/Inf, negative) → `3.4e38` (every volume then needs depth-fail).
+/// corners. Bad input (NaN/Inf, negative, a tangent above `2^60`, a distance that would pass
+/// `3.4e38`) → `3.4e38` (every volume then needs depth-fail); no square or product overflows.
 pub fn light_volume_near_corner_distance(
     near: f32,
     tan_half_fov_x: f32,
@@ -69,10 +70,16 @@ pub fn light_volume_near_corner_distance(
         || near < 0.0
         || tan_half_fov_x < 0.0
         || tan_half_fov_y < 0.0
+        || tan_half_fov_x > 1.152_921_5e18
+        || tan_half_fov_y > 1.152_921_5e18
     {
         return 3.4e38;
     }
-    near * (1.0 + tan_half_fov_x * tan_half_fov_x + tan_half_fov_y * tan_half_fov_y).sqrt()
+    let r = (1.0 + tan_half_fov_x * tan_half_fov_x + tan_half_fov_y * tan_half_fov_y).sqrt();
+    if near > 3.4e38 / r {
+        return 3.4e38;
+    }
+    near * r
 }
 
 /// 1 when a sphere volume (view-space `center`, `radius`) may touch the eye's `ρ`-ball (use
@@ -186,7 +193,7 @@ fn cone_scaled(apex: Vec3, axis: Vec3, h: f32, k: f32, near_corner_distance: f32
 ///
 /// **Bad input (every result finite):** `vz` is clamped to `[near, far]`; NaN or `+∞` `vz` and
 /// planes no projection has (`near` not positive and finite, `far` neither above `near` nor
-/// `+∞`) give the far end (1 standard, 0 reversed). The WGSL's `reversed` argument is 0 for
+/// `+∞`, `far/near ≥ 2^126`) give the far end (1 standard, 0 reversed). The WGSL's `reversed` argument is 0 for
 /// standard and anything else for reversed.
 pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: DepthConvention) -> f32 {
     let infinite = far == f32::INFINITY;
@@ -194,9 +201,13 @@ pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: Depth
         DepthConvention::Standard => 1.0,
         DepthConvention::Reversed => 0.0,
     };
+    // far/near below 2^126 for a finite far (from the exponents), so f/vz stays finite.
     if !light_volume_finite(near)
         || near <= 0.0
-        || !(infinite || (light_volume_finite(far) && far > near))
+        || !(infinite
+            || (light_volume_finite(far)
+                && far > near
+                && far.to_bits() - near.to_bits() < 0x3f00_0000))
         || vz.is_nan()
         || vz == f32::INFINITY
     {

@@ -100,6 +100,8 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
 #[rustfmt::skip]
 pub const ROWS: &[Row] = &[
     // Light volumes (near 1, far 2 unless stated): bad input answers depth-fail and the full range.
+    Row { func: "light_volume_near_corner_distance", case: "huge tangent", args: &[V::F32(1.0), V::F32(1e30), V::F32(1.0)], expect: V::F32(3.4e38), why: "tan > 2^60: stand-in for +Inf, no square overflows" },
+    Row { func: "light_volume_near_corner_distance", case: "near·ρ would overflow", args: &[V::F32(3e38), V::F32(1.0), V::F32(1.0)], expect: V::F32(3.4e38), why: "stand-in for +Inf: depth-fail everywhere" },
     Row { func: "light_volume_near_corner_distance", case: "NaN", args: &[V::F32(NAN), V::F32(1.0), V::F32(1.0)], expect: V::F32(3.4e38), why: "stand-in for +Inf: depth-fail everywhere" },
     Row { func: "light_volume_near_corner_distance", case: "+Inf tan", args: &[V::F32(0.1), V::F32(INF), V::F32(1.0)], expect: V::F32(3.4e38), why: "stand-in for +Inf" },
     Row { func: "light_volume_near_corner_distance", case: "negative near", args: &[V::F32(-0.1), V::F32(1.0), V::F32(1.0)], expect: V::F32(3.4e38), why: "stand-in for +Inf" },
@@ -133,6 +135,7 @@ pub const ROWS: &[Row] = &[
     Row { func: "light_volume_window_depth", case: "−Inf view depth", args: &[V::F32(-INF), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::F32(0.0), why: "−Inf → the near plane" },
     Row { func: "light_volume_window_depth", case: "NaN near", args: &[V::F32(1.5), V::F32(NAN), V::F32(2.0), V::U32(1)], expect: V::F32(0.0), why: "no projection has it → the far end" },
     Row { func: "light_volume_window_depth", case: "far ≤ near", args: &[V::F32(1.5), V::F32(2.0), V::F32(1.0), V::U32(0)], expect: V::F32(1.0), why: "no projection has it → the far end" },
+    Row { func: "light_volume_window_depth", case: "far/near ≥ 2^126", args: &[V::F32(1.0), V::F32(1e-30), V::F32(1e30), V::U32(1)], expect: V::F32(0.0), why: "no projection has it → the far end" },
     Row { func: "light_volume_sphere_depth_bounds", case: "NaN centre", args: &[V::F32(NAN), V::F32(1.0), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range: culls nothing" },
     Row { func: "light_volume_sphere_depth_bounds", case: "+Inf radius", args: &[V::F32(1.5), V::F32(INF), V::F32(1.0), V::F32(2.0), V::U32(1)], expect: V::Vec2([0.0, 1.0]), why: "full range" },
     Row { func: "light_volume_sphere_depth_bounds", case: "negative radius", args: &[V::F32(1.5), V::F32(-1.0), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range" },

@@ -92,6 +92,8 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
 ];
 
 const SKY: f32 = prepass::linear_depth::SKY;
+/// 2^104, the largest near plane `Projection::new` takes.
+const NEAR_MAX: f32 = 20_282_409_603_651_670_423_947_251_286_016.0;
 
 #[rustfmt::skip]
 pub const ROWS: &[Row] = &[
@@ -119,9 +121,11 @@ pub const ROWS: &[Row] = &[
     Row { func: "view_z_from_reversed_depth", case: "NaN near", args: &[V::F32(0.5), V::F32(NAN), V::F32(2.0)], expect: V::F32(SKY), why: "no projection has it → the sky" },
     Row { func: "view_z_from_reversed_depth", case: "far ≤ near", args: &[V::F32(0.5), V::F32(2.0), V::F32(1.0)], expect: V::F32(SKY), why: "no projection has it → the sky" },
     Row { func: "view_z_from_depth", case: "NaN far", args: &[V::F32(0.5), V::F32(1.0), V::F32(NAN)], expect: V::F32(SKY), why: "no projection has it → the sky" },
+    Row { func: "view_z_from_depth24", case: "near 2^104 (the largest a Projection takes)", args: &[V::U32(0), V::F32(NEAR_MAX), V::F32(INF)], expect: V::F32(NEAR_MAX), why: "code 0 = near: n·(2^24 − 1) = f32::MAX, finite" },
+    Row { func: "view_z_from_depth", case: "subnormal near", args: &[V::F32(0.5), V::F32(SUB_MAX), V::F32(2.0)], expect: V::F32(SKY), why: "near must be normal (as Projection::new)" },
     Row { func: "view_z_from_depth", case: "zero near", args: &[V::F32(0.5), V::F32(0.0), V::F32(2.0)], expect: V::F32(SKY), why: "near must be > 0" },
     Row { func: "view_z_from_depth24", case: "+Inf near", args: &[V::U32(7), V::F32(INF), V::F32(INF)], expect: V::F32(SKY), why: "no projection has it → the sky" },
-    Row { func: "view_z_from_depth24", case: "huge near (near·(2^24 − 1) would overflow)", args: &[V::U32(7), V::F32(3e38), V::F32(INF)], expect: V::F32(SKY), why: "near ≥ 2^100 → the sky" },
+    Row { func: "view_z_from_depth24", case: "huge near (near·(2^24 − 1) would overflow)", args: &[V::U32(7), V::F32(3e38), V::F32(INF)], expect: V::F32(SKY), why: "near > 2^104 (as Projection::new) → the sky" },
     Row { func: "view_z_from_depth24_consts", case: "NaN constant", args: &[V::U32(7), V::Vec2([NAN, 0.5])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
     Row { func: "view_z_from_depth_consts", case: "+Inf constant", args: &[V::F32(0.75), V::Vec3([1.0, INF, 0.5])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
     Row { func: "view_z_from_depth_consts", case: "out-of-range constant", args: &[V::F32(0.75), V::Vec3([1.0, 0.5, 2.0])], expect: V::F32(SKY), why: "ratios outside [0, 1] → the sky" },
