@@ -248,6 +248,75 @@ fn wgsl_gives_the_documented_answers_on_dawn() {
     assert!(ran > 0, "no WGSL row ran");
 }
 
+/// Every WGSL row, and the fuzz corpora's inputs, under the conforming emulation's domain checks (`prepass::conforming`, policy
+/// `Identity`: values as on the adapter, plus the flag an evaluation raises when an operation
+/// leaves the spec's domain — a run-time ±∞ or NaN produced, or an operation on one). Reading an
+/// input's bits is in the domain; computing with a NaN or ±∞ is not.
+#[test]
+fn wgsl_rows_stay_in_the_spec_domain_under_emulation() {
+    use prepass::conforming::{EmulatedKernel, Emulation, Policy};
+    let mut flagged = Vec::new();
+    let (mut ran, mut corpus_inputs) = (0, 0);
+    for f in funcs() {
+        let Some((source, name)) = f.wgsl else {
+            continue;
+        };
+        let rows = rows_of(f);
+        let kernel = EmulatedKernel::new(gpu(), source, name, &Emulation::new(Policy::Identity))
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        let arity = kernel.values().signature().params.len();
+        let mut columns = vec![Vec::new(); arity];
+        for r in &rows {
+            for (col, &a) in columns.iter_mut().zip(r.args) {
+                words(a, col);
+            }
+        }
+        let args: Vec<Arg> = columns.iter().map(|c| Arg::column(c)).collect();
+        let (_, flags) = kernel.run(&args, rows.len() as u64).unwrap();
+        for (r, flag) in rows.iter().zip(flags) {
+            ran += 1;
+            if flag {
+                flagged.push(describe(r));
+            }
+        }
+        // The fuzz corpora's inputs as argument bits (`common::corpus_args`).
+        let words: Vec<usize> = kernel
+            .values()
+            .signature()
+            .params
+            .iter()
+            .map(|p| p.ty.words())
+            .collect();
+        let corpus = common::corpus_args(&words);
+        let n = corpus[0].len() / words[0];
+        let args: Vec<Arg> = corpus.iter().map(|c| Arg::column(c)).collect();
+        let (_, flags) = kernel.run(&args, n as u64).unwrap();
+        let bad = flags.iter().filter(|&&f| f).count();
+        corpus_inputs += n;
+        if bad > 0 {
+            let first = flags.iter().position(|&f| f).unwrap();
+            let lanes: Vec<String> = corpus
+                .iter()
+                .zip(&words)
+                .map(|(c, &w)| format!("{:08x?}", &c[first * w..(first + 1) * w]))
+                .collect();
+            flagged.push(format!(
+                "{name}: {bad} of {n} fuzz-corpus inputs (first: bits {})",
+                lanes.join(", ")
+            ));
+        }
+    }
+    eprintln!(
+        "{} failures over {ran} rows and {corpus_inputs} corpus inputs",
+        flagged.len()
+    );
+    assert!(
+        flagged.is_empty(),
+        "rows whose evaluation leaves the spec's domain:\n{}",
+        flagged.join("\n")
+    );
+}
+
 #[test]
 fn every_function_has_rows_and_every_row_a_function() {
     for f in funcs() {

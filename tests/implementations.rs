@@ -174,37 +174,6 @@ fn random_arg(ty: prepass::harness::ValueType, seed: &mut u64) -> rows::V {
     }
 }
 
-/// The fuzz corpora (`fuzz/corpus/*/*`: the inputs libFuzzer kept, full of NaN, ±∞, subnormal
-/// and huge bit patterns) as argument bits for a function with parameters of `words` words each:
-/// the bytes after the first (which picks a fuzz entry) read as little-endian words, lane after
-/// lane, zeros past the end. One argument set per corpus file, in file-name order.
-fn corpus_args(words: &[usize]) -> Vec<Vec<u32>> {
-    static FILES: std::sync::OnceLock<Vec<Vec<u8>>> = std::sync::OnceLock::new();
-    let files = FILES.get_or_init(|| {
-        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/corpus");
-        let mut paths = Vec::new();
-        for dir in std::fs::read_dir(&root).expect("fuzz/corpus") {
-            for f in std::fs::read_dir(dir.unwrap().path()).unwrap() {
-                paths.push(f.unwrap().path());
-            }
-        }
-        paths.sort();
-        paths.iter().map(|p| std::fs::read(p).unwrap()).collect()
-    });
-    let mut columns = vec![Vec::new(); words.len()];
-    for bytes in files {
-        let mut word = bytes.get(1..).unwrap_or(&[]).chunks(4).map(|c| {
-            let mut b = [0u8; 4];
-            b[..c.len()].copy_from_slice(c);
-            u32::from_le_bytes(b)
-        });
-        for (col, &w) in columns.iter_mut().zip(words) {
-            col.extend((0..w).map(|_| word.next().unwrap_or(0)));
-        }
-    }
-    columns
-}
-
 /// Whether a result's words hold a non-finite `f32` lane.
 fn non_finite(ty: prepass::harness::ValueType, w: &[u32]) -> bool {
     ty.scalar == prepass::harness::Scalar::F32 && w.iter().any(|&b| b & 0x7f80_0000 == 0x7f80_0000)
@@ -263,7 +232,7 @@ fn every_function(exec: &dyn Executor, out: &mut Vec<Figure>) {
         let sets = [
             columns_of(&mut args.iter().map(Vec::as_slice), params.len()),
             columns_of(&mut documented.iter().map(|r| r.args), params.len()),
-            corpus_args(&words),
+            common::corpus_args(&words),
         ];
         for columns in &sets {
             let cols: Vec<Arg> = columns.iter().map(|c| Arg::column(c)).collect();

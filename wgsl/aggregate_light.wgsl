@@ -54,13 +54,19 @@ fn aggregate_light_sane4(v: vec4<f32>, limit: f32) -> vec4<f32> {
 
 // v/|v| scaled by its largest component first (no overflow), or zero when v is non-finite or
 // its largest component is below `smallest` (bit pattern of a positive f32).
+// The power of two that scales a normal m >= 0 into [1, 4): exact, where v / m would divide by
+// a number WGSL's / need not handle (beyond 2^126).
+fn aggregate_light_scale(m: f32) -> f32 {
+    return bitcast<f32>(max(254u - ((bitcast<u32>(m) >> 23u) & 0xffu), 1u) << 23u);
+}
+
 fn aggregate_light_unit(v: vec3<f32>, smallest: u32) -> vec3<f32> {
     let a = abs(v);
     let m = max(a.x, max(a.y, a.z));
     if (!aggregate_light_finite3(v) || bitcast<u32>(m) < smallest) {
         return vec3<f32>(0.0);
     }
-    let s = v / m;
+    let s = v * aggregate_light_scale(m);
     return s * inverseSqrt(dot(s, s));
 }
 
@@ -82,10 +88,11 @@ fn aggregate_light_accumulate(acc: vec4<f32>, vertex: vec3<f32>, light_position:
         return a0;
     }
     let w = clamp(weight, 0.0, AGGREGATE_LIGHT_WEIGHT_MAX);
-    let s = rel / m;
+    let sc = aggregate_light_scale(m);
+    let s = rel * sc;
     let inv = inverseSqrt(dot(s, s));
-    // |rel| = m/inv, so W/|rel| = W·inv/m.
-    return a0 + vec4<f32>(w * (s * inv), w * inv / m);
+    // |rel| = 1/(inv·sc), so W/|rel| = W·inv·sc (m >= 2^-64, so sc <= 2^64: no overflow).
+    return a0 + vec4<f32>(w * (s * inv), w * inv * sc);
 }
 
 fn aggregate_light_direction(acc: vec4<f32>) -> vec3<f32> {
@@ -100,11 +107,14 @@ fn aggregate_light_position(acc: vec4<f32>, vertex: vec3<f32>) -> vec3<f32> {
     let m = max(a.x, max(a.y, a.z));
     // m/W below 2^101, from the exponents, so the quotient and the sum stay finite.
     if (!aggregate_light_finite3(acc.xyz) || !((bitcast<u32>(acc.w) & 0x7fffffffu) < 0x7f800000u)
-        || bitcast<u32>(m) < 0x00800000u || !(acc.w > 0.0)
+        || bitcast<u32>(m) < 0x00800000u || !(acc.w >= 1.1754944e-38)
         || i32(bitcast<u32>(m)) - i32(bitcast<u32>(acc.w)) >= 838860800) {
         return v;
     }
-    return v + acc.xyz / acc.w;
+    // WGSL's / is specified for divisors in [2^-126, 2^126]: a larger W is scaled by 2^-64 first.
+    let big = acc.w > 8.507059e37;
+    let x = select(acc.xyz, acc.xyz * 5.421011e-20, big);
+    return v + x / select(acc.w, acc.w * 5.421011e-20, big);
 }
 
 fn aggregate_light_accumulate_colour(colour_acc: vec3<f32>, vertex: vec3<f32>,

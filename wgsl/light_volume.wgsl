@@ -34,11 +34,18 @@ fn light_volume_finite3(v: vec3<f32>) -> bool {
     return all((bitcast<vec3<u32>>(v) & vec3<u32>(0x7fffffffu)) < vec3<u32>(0x7f800000u));
 }
 
-// Whether a + b (both finite, b >= 0) would round past the largest f32: decided on the halves,
-// whose sum cannot overflow, so no addition ever produces +inf (WGSL leaves a run-time infinity
-// indeterminate). Halving is exact and commutes with rounding for normal values.
+// The power of two that scales a normal m >= 0 into [1, 4): exact, where x / m would divide by
+// a number WGSL's / need not handle (beyond 2^126).
+fn light_volume_scale(m: f32) -> f32 {
+    return bitcast<f32>(max(254u - ((bitcast<u32>(m) >> 23u) & 0xffu), 1u) << 23u);
+}
+
+// Whether a + b (both finite, b >= 0) reaches 3.4e38, just below the largest f32 (3.4028e38),
+// decided without adding: 3.4e38 - b cannot overflow, and the 0.08 % left above 3.4e38 covers
+// any rounding of it or of a later a + b, so no addition ever produces +inf (WGSL leaves a
+// run-time infinity indeterminate; a sum of halves could be refactored into (a + b)·0.5).
 fn light_volume_sum_overflows(a: f32, b: f32) -> bool {
-    return a * 0.5 + b * 0.5 > 1.7014117e38;
+    return a >= 3.4e38 - b;
 }
 
 // rho: distance from the eye to the corners of the near-plane rectangle,
@@ -67,7 +74,7 @@ fn light_volume_sphere_needs_depth_fail(center: vec3<f32>, radius: f32, near_cor
         || !light_volume_finite(near_corner_distance) || radius < 0.0 || near_corner_distance < 0.0) {
         return 1u;
     }
-    // A reach beyond f32 (r + rho would overflow) touches every finite centre.
+    // A reach at or beyond 3.4e38 (r + rho could overflow) touches every finite centre.
     if (light_volume_sum_overflows(radius, near_corner_distance)) {
         return 1u;
     }
@@ -78,8 +85,9 @@ fn light_volume_sphere_needs_depth_fail(center: vec3<f32>, radius: f32, near_cor
     if (s == 0.0 || bitcast<u32>(s) < 0x00800000u) {
         return 1u;
     }
-    let c = center / s;
-    let reach = sum / s;
+    let sc = light_volume_scale(s);
+    let c = center * sc;
+    let reach = sum * sc;
     return select(0u, 1u, dot(c, c) <= reach * reach * (1.0 + 16.0 * LIGHT_VOLUME_U));
 }
 
@@ -121,7 +129,8 @@ fn light_volume_cone_scaled(apex: vec3<f32>, axis: vec3<f32>, h: f32, k: f32,
                             near_corner_distance: f32) -> u32 {
     let aa = abs(axis);
     let am = max(aa.x, max(aa.y, aa.z));
-    let d = (axis / am) * inverseSqrt(dot(axis / am, axis / am));
+    let a = axis * light_volume_scale(am);
+    let d = a * inverseSqrt(dot(a, a));
     let p = -apex; // the eye relative to the apex
     let t = dot(p, d);
     let s = length(p - t * d);
@@ -149,16 +158,27 @@ fn light_volume_cone_scaled(apex: vec3<f32>, axis: vec3<f32>, h: f32, k: f32,
 // written (f/(f − n))·(1 − n/vz); reversed 1 − z = (n/(f − n))·(f/vz − 1); infinite far
 // (far = +Inf): 1 − n/vz and n/vz. reversed: 0 standard, anything else reversed.
 // Bad input (every result finite, in [0, 1] up to rounding): vz is clamped to [near, far];
-// NaN or +Inf vz (from its bits) and planes no projection has (near not positive and finite,
-// far not above near nor +Inf, far/near of 2^126 or more) give the far end (1 standard, 0
-// reversed).
+// NaN or +Inf vz (from its bits) and planes no projection has (near not a normal positive
+// float, far neither 2^-126 or more above near nor +Inf, far/near of 2^126 or more) give the
+// far end (1 standard, 0 reversed).
+// a / b for b > 0 within WGSL's specified range of divisors: b beyond 2^126 is scaled, with a,
+// by 2^-64 first (b is never below 2^-126 here).
+fn light_volume_div(a: f32, b: f32) -> f32 {
+    if (b > 8.507059e37) {
+        return (a * 5.421011e-20) / (b * 5.421011e-20);
+    }
+    return a / b;
+}
+
 fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32 {
     let infinite = bitcast<u32>(far) == 0x7f800000u;
     let far_end = select(1.0, 0.0, reversed != 0u);
     let vz_bits = bitcast<u32>(vz);
     // far/near below 2^126 for a finite far (from the exponents), so f/vz stays finite.
-    if (!light_volume_finite(near) || !(near > 0.0)
+    // near normal and far − near at least 2^-126: no divisor is subnormal.
+    if (!light_volume_finite(near) || !(near >= 1.1754944e-38)
         || !(infinite || (light_volume_finite(far) && far > near
+            && far - near >= 1.1754944e-38
             && bitcast<u32>(far) - bitcast<u32>(near) < 0x3f000000u))
         || (vz_bits & 0x7fffffffu) > 0x7f800000u || vz_bits == 0x7f800000u) {
         return far_end;
@@ -172,14 +192,14 @@ fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32
     }
     if (reversed == 0u) {
         if (infinite) {
-            return 1.0 - near / v;
+            return 1.0 - light_volume_div(near, v);
         }
-        return (far / (far - near)) * (1.0 - near / v);
+        return light_volume_div(far, far - near) * (1.0 - light_volume_div(near, v));
     }
     if (infinite) {
-        return near / v;
+        return light_volume_div(near, v);
     }
-    return (near / (far - near)) * (far / v - 1.0);
+    return light_volume_div(near, far - near) * (light_volume_div(far, v) - 1.0);
 }
 
 // Depth-bounds range (min, max window depth) that contains every point of a sphere light of

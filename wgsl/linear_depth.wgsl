@@ -37,7 +37,11 @@ fn ld_is_inf(x: f32) -> bool {
 
 // n/f, exactly 0 for an infinite far plane.
 fn ld_near_over_far(near: f32, far: f32) -> f32 {
-    return select(near / far, 0.0, ld_is_inf(far));
+    // A branch, not a select: near / +inf would be an operation on an infinity.
+    if (ld_is_inf(far)) {
+        return 0.0;
+    }
+    return near / far;
 }
 
 // 1 - z exactly, for z in [0.5, 1], built from the bits of z: z = (2^23 + m)·2^-24 with m its

@@ -36,13 +36,19 @@ fn lpp_finite3(v: vec3<f32>) -> bool {
 
 // v / |v|, or zero when v is non-finite or its largest component is zero or subnormal. Scaling
 // by the largest component first keeps |v|² from overflowing or underflowing.
+// The power of two that scales a normal m >= 0 into [1, 4): exact, where v / m would divide by a
+// number WGSL's / need not handle (beyond 2^126).
+fn lpp_scale(m: f32) -> f32 {
+    return bitcast<f32>(max(254u - ((bitcast<u32>(m) >> 23u) & 0xffu), 1u) << 23u);
+}
+
 fn lpp_direction(v: vec3<f32>) -> vec3<f32> {
     let a = abs(v);
     let m = max(a.x, max(a.y, a.z));
     if (!lpp_finite3(v) || bitcast<u32>(m) < 0x00800000u) {
         return vec3<f32>(0.0);
     }
-    let s = v / m;
+    let s = v * lpp_scale(m);
     return s * inverseSqrt(dot(s, s));
 }
 
@@ -74,7 +80,12 @@ fn lpp_pow_cosine(x: f32, y: f32) -> f32 {
     if (x >= 1.0 || y <= 0.0) {
         return 1.0;
     }
-    let t = y * log2(x);
+    // No log2 of a subnormal and no product with an infinity: x below 2^-126 or y = +inf give
+    // x^y = 0 (x < 1 here); y is capped at 2^100, where t is far below -126 already.
+    if (bitcast<u32>(x) < 0x00800000u || bitcast<u32>(y) == 0x7f800000u) {
+        return 0.0;
+    }
+    let t = min(y, 1.2676506e30) * log2(x);
     if (t < -126.0) {
         return 0.0;
     }
@@ -82,12 +93,17 @@ fn lpp_pow_cosine(x: f32, y: f32) -> f32 {
 }
 
 // Windowed falloff of a point light of radius r: (1 − (d/r)²)², 0 beyond r.
-// Bad input: NaN/Inf or r <= 0 → 0; d < 0 counts as 0.
+// Bad input: NaN/Inf or r below 2^-126 → 0; d < 0 counts as 0.
 fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
-    if (!lpp_finite(distance) || !lpp_finite(radius) || !(radius > 0.0)) {
+    // A subnormal radius is below any distance; a divisor beyond 2^126 is scaled by 2^-64 first
+    // (WGSL's / is only specified for divisors in [2^-126, 2^126]).
+    if (!lpp_finite(distance) || !lpp_finite(radius) || !(radius >= 1.1754944e-38)) {
         return 0.0;
     }
-    let x = clamp(max(distance, 0.0) / radius, 0.0, 1.0);
+    let big = radius > 8.507059e37;
+    let d = select(distance, distance * 5.421011e-20, big);
+    let r = select(radius, radius * 5.421011e-20, big);
+    let x = clamp(max(d, 0.0) / r, 0.0, 1.0);
     let w = 1.0 - x * x;
     return w * w;
 }
@@ -103,7 +119,8 @@ fn lpp_spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f32 {
     let c = clamp(cos_angle, -1.0, 1.0);
     let outer = clamp(cos_outer, -1.0, 1.0);
     let inner = clamp(cos_inner, -1.0, 1.0);
-    if (inner <= outer) {
+    // A width below 2^-126 (none included) is a hard edge: no division by a subnormal.
+    if (inner - outer < 1.1754944e-38) {
         return select(0.0, 1.0, c >= outer);
     }
     return clamp((c - outer) / (inner - outer), 0.0, 1.0);

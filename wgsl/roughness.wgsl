@@ -168,6 +168,10 @@ fn encode_log_roughness(power: f32, max_power: f32) -> u32 {
     if (l == 0u || (b & 0x7fffffffu) > 0x7f800000u || (b >> 31u) != 0u || b <= 0x3f800000u) {
         return 0u;
     }
+    // +inf (from its bits) is above every max_power: no log2 of an infinity.
+    if (b == 0x7f800000u) {
+        return 255u;
+    }
     if (l != 0xffffffffu) {
         // Candidate from log2: its error (3 ULP, or 2^-21 absolute near 1) is far below half a
         // code, so the exact code is the candidate or a neighbour. Positive floats order like

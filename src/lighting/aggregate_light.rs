@@ -65,7 +65,7 @@ fn aggregate_light_unit(v: Vec3, smallest: u32) -> Vec3 {
     if !aggregate_light_finite3(v) || m.to_bits() < smallest {
         return Vec3::ZERO;
     }
-    let s = v / m;
+    let s = v * crate::lighting::lpp::pow2_scale(m);
     s * (1.0 / s.dot(s).sqrt())
 }
 
@@ -90,9 +90,11 @@ pub fn aggregate_light_accumulate(
         return a0;
     }
     let w = weight.clamp(0.0, AGGREGATE_LIGHT_WEIGHT_MAX);
-    let s = rel / m;
+    let sc = crate::lighting::lpp::pow2_scale(m);
+    let s = rel * sc;
     let inv = 1.0 / s.dot(s).sqrt();
-    a0 + (w * (s * inv)).extend(w * inv / m)
+    // |rel| = 1/(inv·sc), so W/|rel| = W·inv·sc (WGSL: the same; no division by m).
+    a0 + (w * (s * inv)).extend(w * inv * sc)
 }
 
 /// The aggregate direction `L_agg` (zero when the weighted directions cancel).
@@ -109,13 +111,18 @@ pub fn aggregate_light_position(acc: Vec4, vertex: Vec3) -> Vec3 {
         || (acc.w.to_bits() & 0x7fff_ffff) >= 0x7f80_0000
         || m.to_bits() < 0x0080_0000
         || acc.w.is_nan()
-        || acc.w <= 0.0
+        || acc.w < f32::MIN_POSITIVE
         // m/W below 2^101, from the exponents (WGSL: the same test on the bits as i32).
         || (m.to_bits() as i32).wrapping_sub(acc.w.to_bits() as i32) >= 100 << 23
     {
         return v;
     }
-    v + x / acc.w
+    // As the WGSL: a weight sum beyond 2^126 is scaled by 2^-64 before dividing.
+    if acc.w > 8.507_059e37 {
+        v + (x * 5.421_011e-20) / (acc.w * 5.421_011e-20)
+    } else {
+        v + x / acc.w
+    }
 }
 
 /// Fold a light's colour into `C_agg`: `colour_acc + C_i (L_i·L_agg)` (unclamped, as in

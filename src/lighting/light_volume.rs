@@ -50,10 +50,20 @@ fn light_volume_finite3(v: Vec3) -> bool {
     light_volume_finite(v.x) && light_volume_finite(v.y) && light_volume_finite(v.z)
 }
 
-/// Whether `a + b` (finite, `b ≥ 0`) would round past `f32::MAX`, decided on the halves so no
-/// addition produces `+∞` (WGSL `light_volume_sum_overflows`).
+/// `a / b` for `b > 0` within WGSL's specified divisors (WGSL `light_volume_div`): `b` beyond
+/// `2^126` is scaled, with `a`, by `2^-64` first.
+fn div(a: f32, b: f32) -> f32 {
+    if b > 8.507_059e37 {
+        (a * 5.421_011e-20) / (b * 5.421_011e-20)
+    } else {
+        a / b
+    }
+}
+
+/// Whether `a + b` (finite, `b ≥ 0`) reaches `3.4e38`, just below `f32::MAX`, decided without
+/// adding, so no addition produces `+∞` (WGSL `light_volume_sum_overflows`).
 fn light_volume_sum_overflows(a: f32, b: f32) -> bool {
-    a * 0.5 + b * 0.5 > f32::MAX * 0.5
+    a >= 3.4e38 - b
 }
 
 /// `ρ = near·√(1 + tan_x² + tan_y²)`: distance from the eye to the near-plane rectangle's
@@ -84,7 +94,7 @@ pub fn light_volume_near_corner_distance(
 
 /// 1 when a sphere volume (view-space `center`, `radius`) may touch the eye's `ρ`-ball (use
 /// depth-fail), 0 when depth-pass is safe: `|c|² ≤ (r + ρ)²·(1 + 16u)` after scaling.
-/// `r + ρ` beyond f32's range (finite inputs whose sum overflows) → 1.
+/// `r + ρ` at or beyond `3.4e38` (a reach beyond f32's range, decided without adding) → 1.
 pub fn light_volume_sphere_needs_depth_fail(
     center: Vec3,
     radius: f32,
@@ -108,8 +118,10 @@ pub fn light_volume_sphere_needs_depth_fail(
     if s == 0.0 || s.to_bits() < 0x0080_0000 {
         return 1;
     }
-    let c = center / s;
-    let reach = sum / s;
+    // Scaled by a power of two (exact), not divided by s (WGSL `light_volume_scale`).
+    let sc = crate::lighting::lpp::pow2_scale(s);
+    let c = center * sc;
+    let reach = sum * sc;
     u32::from(c.dot(c) <= reach * reach * (1.0 + 16.0 * LIGHT_VOLUME_U))
 }
 
@@ -163,7 +175,7 @@ pub fn light_volume_cone_needs_depth_fail(
 /// `light_volume_cone_scaled`).
 fn cone_scaled(apex: Vec3, axis: Vec3, h: f32, k: f32, near_corner_distance: f32) -> u32 {
     let am = axis.abs().max_element();
-    let a = axis / am;
+    let a = axis * crate::lighting::lpp::pow2_scale(am);
     let d = a * (1.0 / a.dot(a).sqrt());
     let p = -apex;
     let t = p.dot(d);
@@ -192,8 +204,8 @@ fn cone_scaled(apex: Vec3, axis: Vec3, h: f32, k: f32, near_corner_distance: f32
 /// Error: within `8u·(1 + f/(f − n))` of the exact value (module docs).
 ///
 /// **Bad input (every result finite):** `vz` is clamped to `[near, far]`; NaN or `+∞` `vz` and
-/// planes no projection has (`near` not positive and finite, `far` neither above `near` nor
-/// `+∞`, `far/near ≥ 2^126`) give the far end (1 standard, 0 reversed). The WGSL's `reversed` argument is 0 for
+/// planes no projection has (`near` not a normal positive float, `far` neither `2^-126` or more
+/// above `near` nor `+∞`, `far/near ≥ 2^126`) give the far end (1 standard, 0 reversed). The WGSL's `reversed` argument is 0 for
 /// standard and anything else for reversed.
 pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: DepthConvention) -> f32 {
     let infinite = far == f32::INFINITY;
@@ -203,10 +215,11 @@ pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: Depth
     };
     // far/near below 2^126 for a finite far (from the exponents), so f/vz stays finite.
     if !light_volume_finite(near)
-        || near <= 0.0
+        || near < f32::MIN_POSITIVE
         || !(infinite
             || (light_volume_finite(far)
                 && far > near
+                && far - near >= f32::MIN_POSITIVE
                 && far.to_bits() - near.to_bits() < 0x3f00_0000))
         || vz.is_nan()
         || vz == f32::INFINITY
@@ -219,10 +232,10 @@ pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: Depth
         vz.clamp(near, far)
     };
     match (convention, infinite) {
-        (DepthConvention::Standard, true) => 1.0 - near / v,
-        (DepthConvention::Standard, false) => (far / (far - near)) * (1.0 - near / v),
-        (DepthConvention::Reversed, true) => near / v,
-        (DepthConvention::Reversed, false) => (near / (far - near)) * (far / v - 1.0),
+        (DepthConvention::Standard, true) => 1.0 - div(near, v),
+        (DepthConvention::Standard, false) => div(far, far - near) * (1.0 - div(near, v)),
+        (DepthConvention::Reversed, true) => div(near, v),
+        (DepthConvention::Reversed, false) => div(near, far - near) * (div(far, v) - 1.0),
     }
 }
 

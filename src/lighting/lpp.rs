@@ -46,8 +46,14 @@ pub fn lpp_direction(v: Vec3) -> Vec3 {
     if !lpp_finite3(v) || m.to_bits() < 0x0080_0000 {
         return Vec3::ZERO;
     }
-    let s = v / m;
+    let s = v * pow2_scale(m);
     s * (1.0 / s.dot(s).sqrt())
+}
+
+/// The power of two that scales a normal `m ≥ 0` into `[1, 4)` (WGSL `lpp_scale`): exact, where
+/// `v / m` would divide by a number WGSL's `/` need not handle (beyond `2^126`).
+pub(crate) fn pow2_scale(m: f32) -> f32 {
+    f32::from_bits((254 - ((m.to_bits() >> 23) & 0xff)).max(1) << 23)
 }
 
 /// Luminance `0.2126 r + 0.7152 g + 0.0722 b` (a dot product: error within 3 ULP of the
@@ -76,17 +82,28 @@ pub fn lpp_pow_cosine(x: f32, y: f32) -> f32 {
     if x >= 1.0 || y <= 0.0 {
         return 1.0;
     }
-    let t = y * x.log2();
+    // As the WGSL: no log2 of a subnormal, no product with an infinity.
+    if x < f32::MIN_POSITIVE || y == f32::INFINITY {
+        return 0.0;
+    }
+    let t = y.min(1.267_650_6e30) * x.log2();
     if t < -126.0 { 0.0 } else { t.exp2() }
 }
 
-/// Windowed point-light falloff `(1 − (d/r)²)²`, 0 for `d ≥ r`. Bad input: NaN/Inf or `r ≤ 0`
-/// → 0; `d < 0` counts as 0.
+/// Windowed point-light falloff `(1 − (d/r)²)²`, 0 for `d ≥ r`. Bad input: NaN/Inf or `r`
+/// below `2^-126` → 0; `d < 0` counts as 0.
 pub fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
-    if !lpp_finite(distance) || !lpp_finite(radius) || radius.is_nan() || radius <= 0.0 {
+    if !lpp_finite(distance) || !lpp_finite(radius) || radius.is_nan() || radius < f32::MIN_POSITIVE
+    {
         return 0.0;
     }
-    let x = (distance.max(0.0) / radius).clamp(0.0, 1.0);
+    // As the WGSL: a divisor beyond 2^126 is scaled by 2^-64 first.
+    let (d, r) = if radius > 8.507_059e37 {
+        (distance * 5.421_011e-20, radius * 5.421_011e-20)
+    } else {
+        (distance, radius)
+    };
+    let x = (d.max(0.0) / r).clamp(0.0, 1.0);
     let w = 1.0 - x * x;
     w * w
 }
@@ -102,7 +119,8 @@ pub fn lpp_spot_attenuation(cos_angle: f32, cos_outer: f32, cos_inner: f32) -> f
     let c = cos_angle.clamp(-1.0, 1.0);
     let outer = cos_outer.clamp(-1.0, 1.0);
     let inner = cos_inner.clamp(-1.0, 1.0);
-    if inner <= outer {
+    // A width below 2^-126 (none included) is a hard edge: no division by a subnormal.
+    if inner - outer < f32::MIN_POSITIVE {
         return if c >= outer { 1.0 } else { 0.0 };
     }
     ((c - outer) / (inner - outer)).clamp(0.0, 1.0)

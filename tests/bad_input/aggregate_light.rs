@@ -28,6 +28,10 @@ pub const FUNCS: &[Func] = &[
 
 pub const WGSL_HELPERS: &[(&str, &str)] = &[
     (
+        "aggregate_light_scale",
+        "private to aggregate_light.wgsl: an exact power-of-two scale instead of a division, exercised by the huge rows",
+    ),
+    (
         "aggregate_light_sane3",
         "private to aggregate_light.wgsl: lanes made finite within ±limit, exercised by the NaN, ±Inf and overflow rows",
     ),

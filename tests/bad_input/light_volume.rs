@@ -80,6 +80,14 @@ pub const FUNCS: &[Func] = &[
 
 pub const WGSL_HELPERS: &[(&str, &str)] = &[
     (
+        "light_volume_div",
+        "private to light_volume.wgsl: a division within WGSL's specified divisors, exercised by every window-depth row",
+    ),
+    (
+        "light_volume_scale",
+        "private to light_volume.wgsl: an exact power-of-two scale instead of a division, exercised by the huge-vector rows",
+    ),
+    (
         "light_volume_sum_overflows",
         "private to light_volume.wgsl: a + b past f32::MAX decided on the halves, exercised by the overflow rows",
     ),

@@ -68,6 +68,10 @@ pub const FUNCS: &[Func] = &[
 
 pub const WGSL_HELPERS: &[(&str, &str)] = &[
     (
+        "lpp_scale",
+        "private to lpp.wgsl: an exact power-of-two scale instead of a division, exercised by the huge-direction rows",
+    ),
+    (
         "lpp_finite",
         "private to lpp.wgsl: finiteness test on bits, exercised by every NaN/Inf row",
     ),
