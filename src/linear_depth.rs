@@ -30,14 +30,19 @@
 //!
 //! **Bad input (every result finite):** depth is clamped to `[0, 1]` and codes to `2^24 − 1`.
 //! WGSL lets an implementation assume that no float operation sees or produces NaN or ±∞, so
-//! none of these functions returns one: a distance of `2^127` or more (the far plane of an
-//! infinite projection, the sky, the depths next to it, whose denominator is subnormal), NaN
-//! depth, and planes or constants no [`Projection`](crate::projection::Projection) has (NaN or
-//! ±∞, `near` outside `[2^-126, 2^104]`, `far ≤ near`, ratios outside `[0, 1]`) return [`SKY`],
-//! the largest finite `f32`. Special
-//! inputs are recognised from their bits, as the WGSL does. A lighting pass tests
-//! `vz >= SKY` (`vz >= 3.4028234e38` in WGSL, which rounds to it: Tint rejects the usual
-//! `3.4028235e38`, which lies above `f32::MAX`) for the sky.
+//! none of these functions returns one. They return [`SKY`], the largest finite `f32`, for:
+//! - a distance of `2^127` or more: the far plane of an infinite projection, the sky, and the
+//!   depths next to it. It is decided on the computed denominator, so an exact distance within
+//!   the error bound below `2^127` may read as the sky too (only projections whose `far` is near
+//!   `2^127` have such distances);
+//! - a subnormal denominator (a subnormal reversed depth of an infinite projection);
+//! - NaN depth;
+//! - planes or constants no [`Projection`](crate::projection::Projection) has: NaN or ±∞, `near`
+//!   outside `[2^-126, 2^104]`, `far ≤ near`, ratios outside `[0, 1]`.
+//!
+//! Special inputs are recognised from their bits, as the WGSL does. A lighting pass tests
+//! `vz >= SKY` for the sky (`vz >= 3.4028234e38` in WGSL, which rounds to it: Tint rejects the
+//! usual `3.4028235e38`, which lies above `f32::MAX`).
 //!
 //! **Sign against Bevy:** these return the positive distance `vz`; Bevy's `depth_ndc_to_view_z`
 //! returns view-space `z = −vz`.
@@ -55,7 +60,14 @@ const SKY_THRESHOLD: f32 = 1.701_411_8e38;
 
 /// `n/f` with an infinite far plane giving exactly 0 (as WGSL `ld_near_over_far`).
 fn near_over_far(near: f32, far: f32) -> f32 {
-    if far.is_infinite() { 0.0 } else { near / far }
+    if far.is_infinite() {
+        0.0
+    } else if far > 8.507_059e37 {
+        // As the WGSL: a divisor beyond 2^126 is scaled, with the dividend, by 2^-64 first.
+        (near * 5.421_011e-20) / (far * 5.421_011e-20)
+    } else {
+        near / far
+    }
 }
 
 /// `numerator / s`, or [`SKY`] where the quotient would be `2^127` or more or `s` is subnormal

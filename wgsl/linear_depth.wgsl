@@ -41,6 +41,10 @@ fn ld_near_over_far(near: f32, far: f32) -> f32 {
     if (ld_is_inf(far)) {
         return 0.0;
     }
+    // WGSL's / is specified for divisors up to 2^126: a larger far is scaled, with near, first.
+    if (far > 8.507059e37) {
+        return (near * 5.421011e-20) / (far * 5.421011e-20);
+    }
     return near / far;
 }
 
