@@ -20,6 +20,13 @@ fn light_max() -> f32 {
     LPP_COLOUR_MAX * n_dot_l_max()
 }
 
+/// An aggregate-light lane as the functions read it: NaN → 0, clamped to ±2^100.
+fn read_finite3(v: Vec3) -> Vec3 {
+    let l = agg::AGGREGATE_LIGHT_LIMIT;
+    let lane = |x: f32| if x.is_nan() { 0.0 } else { x.clamp(-l, l) };
+    Vec3::new(lane(v.x), lane(v.y), lane(v.z))
+}
+
 fn finite3(v: Vec3) -> bool {
     v.is_finite()
 }
@@ -243,24 +250,33 @@ pub const LIGHTING: &[Entry] = &[
         check: |i| {
             let (acc, v, p, w) = (i.vec4(), i.vec3(), i.vec3(), i.f32());
             let (cacc, c, dir) = (i.vec3(), i.vec3(), i.vec3());
-            let rel = p - v;
-            let skipped = !v.is_finite()
-                || !p.is_finite()
-                || !rel.is_finite()
-                || rel.abs().max_element() < agg::AT_VERTEX;
+            // Documented: positions read within ±2^100 (no P − V overflows), a skipped light
+            // returns the accumulator read finite (NaN → 0, beyond ±2^100 → ±2^100).
+            let rel = read_finite3(p) - read_finite3(v);
+            let skipped =
+                !v.is_finite() || !p.is_finite() || rel.abs().max_element() < agg::AT_VERTEX;
             let a = agg::aggregate_light_accumulate(acc, v, p, w);
+            assert!(
+                a.is_finite(),
+                "{acc:?} {v:?} {p:?} {w:?} → {a:?}: not finite"
+            );
             if skipped || !w.is_finite() {
+                let want = read_finite3(acc.truncate()).extend(read_finite3(Vec3::splat(acc.w)).x);
                 assert_eq!(
                     a.to_array().map(f32::to_bits),
-                    acc.to_array().map(f32::to_bits),
+                    want.to_array().map(f32::to_bits),
                     "{v:?} {p:?} {w:?}: skipped"
                 );
             }
             let k = agg::aggregate_light_accumulate_colour(cacc, v, p, c, dir);
+            assert!(
+                k.is_finite(),
+                "{cacc:?} {v:?} {p:?} {c:?} {dir:?} → {k:?}: not finite"
+            );
             if skipped || !c.is_finite() || !dir.is_finite() {
                 assert_eq!(
                     k.to_array().map(f32::to_bits),
-                    cacc.to_array().map(f32::to_bits),
+                    read_finite3(cacc).to_array().map(f32::to_bits),
                     "{v:?} {p:?} {c:?} {dir:?}: skipped"
                 );
             }
@@ -276,11 +292,12 @@ pub const LIGHTING: &[Entry] = &[
             }
             let x = acc.truncate();
             let p = agg::aggregate_light_position(acc, v);
-            if !x.is_finite() || !acc.w.is_finite() || acc.w.is_nan() || acc.w <= 0.0 {
+            assert!(p.is_finite(), "{acc:?} {v:?} → {p:?}: not finite");
+            if !x.is_finite() || !acc.w.is_finite() || acc.w.is_nan() || acc.w < f32::MIN_POSITIVE {
                 assert_eq!(
                     p.to_array().map(f32::to_bits),
-                    v.to_array().map(f32::to_bits),
-                    "{acc:?}: nothing accumulated → V"
+                    read_finite3(v).to_array().map(f32::to_bits),
+                    "{acc:?}: nothing accumulated → V (read finite)"
                 );
             }
             let (n, pos, c) = (i.vec3(), i.vec3(), i.vec3());
