@@ -159,8 +159,8 @@ fn light_volume_cone_scaled(apex: vec3<f32>, axis: vec3<f32>, h: f32, k: f32,
 // (far = +Inf): 1 − n/vz and n/vz. reversed: 0 standard, anything else reversed.
 // Bad input (every result finite, in [0, 1] up to rounding): vz is clamped to [near, far];
 // NaN or +Inf vz (from its bits) and planes no projection has (near not a normal positive
-// float, far neither 2^-126 or more above near nor +Inf, far/near of 2^126 or more) give the
-// far end (1 standard, 0 reversed).
+// float, far neither above near nor +Inf, far/near of 2^126 or more) give the far end
+// (1 standard, 0 reversed).
 // a / b for b > 0 within WGSL's specified range of divisors: b beyond 2^126 is scaled, with a,
 // by 2^-64 first (b is never below 2^-126 here).
 fn light_volume_div(a: f32, b: f32) -> f32 {
@@ -174,11 +174,10 @@ fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32
     let infinite = bitcast<u32>(far) == 0x7f800000u;
     let far_end = select(1.0, 0.0, reversed != 0u);
     let vz_bits = bitcast<u32>(vz);
-    // far/near below 2^126 for a finite far (from the exponents), so f/vz stays finite.
-    // near normal and far − near at least 2^-126: no divisor is subnormal.
+    // far/near below 2^126 for a finite far (from the exponents), so f/vz stays finite; near
+    // normal, so no divisor below is subnormal once tiny planes are scaled (next).
     if (!light_volume_finite(near) || !(near >= 1.1754944e-38)
         || !(infinite || (light_volume_finite(far) && far > near
-            && far - near >= 1.1754944e-38
             && bitcast<u32>(far) - bitcast<u32>(near) < 0x3f000000u))
         || (vz_bits & 0x7fffffffu) > 0x7f800000u || vz_bits == 0x7f800000u) {
         return far_end;
@@ -190,16 +189,25 @@ fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32
             v = min(v, far);
         }
     }
+    // The window depth is homogeneous of degree 0 in (vz, near, far): planes below 2^-60 are
+    // scaled by 2^64 first (exact), so f − n is never subnormal.
+    var n = near;
+    var f = far;
+    if (!infinite && far < 8.6736174e-19) {
+        n = near * 1.8446744e19;
+        f = far * 1.8446744e19;
+        v = v * 1.8446744e19;
+    }
     if (reversed == 0u) {
         if (infinite) {
-            return 1.0 - light_volume_div(near, v);
+            return 1.0 - light_volume_div(n, v);
         }
-        return light_volume_div(far, far - near) * (1.0 - light_volume_div(near, v));
+        return light_volume_div(f, f - n) * (1.0 - light_volume_div(n, v));
     }
     if (infinite) {
-        return light_volume_div(near, v);
+        return light_volume_div(n, v);
     }
-    return light_volume_div(near, far - near) * (light_volume_div(far, v) - 1.0);
+    return light_volume_div(n, f - n) * (light_volume_div(f, v) - 1.0);
 }
 
 // Depth-bounds range (min, max window depth) that contains every point of a sphere light of

@@ -204,8 +204,8 @@ fn cone_scaled(apex: Vec3, axis: Vec3, h: f32, k: f32, near_corner_distance: f32
 /// Error: within `8u·(1 + f/(f − n))` of the exact value (module docs).
 ///
 /// **Bad input (every result finite):** `vz` is clamped to `[near, far]`; NaN or `+∞` `vz` and
-/// planes no projection has (`near` not a normal positive float, `far` neither `2^-126` or more
-/// above `near` nor `+∞`, `far/near ≥ 2^126`) give the far end (1 standard, 0 reversed). The WGSL's `reversed` argument is 0 for
+/// planes no projection has (`near` not a normal positive float, `far` neither above `near` nor
+/// `+∞`, `far/near ≥ 2^126`) give the far end (1 standard, 0 reversed). The WGSL's `reversed` argument is 0 for
 /// standard and anything else for reversed.
 pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: DepthConvention) -> f32 {
     let infinite = far == f32::INFINITY;
@@ -219,7 +219,6 @@ pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: Depth
         || !(infinite
             || (light_volume_finite(far)
                 && far > near
-                && far - near >= f32::MIN_POSITIVE
                 && far.to_bits() - near.to_bits() < 0x3f00_0000))
         || vz.is_nan()
         || vz == f32::INFINITY
@@ -231,11 +230,22 @@ pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: Depth
     } else {
         vz.clamp(near, far)
     };
+    // Homogeneous of degree 0 in (vz, near, far): planes below 2^-60 are scaled by 2^64 first
+    // (exact, as the WGSL), so f − n is never subnormal.
+    let (n, f, v) = if !infinite && far < 8.673_617_4e-19 {
+        (
+            near * 1.844_674_4e19,
+            far * 1.844_674_4e19,
+            v * 1.844_674_4e19,
+        )
+    } else {
+        (near, far, v)
+    };
     match (convention, infinite) {
-        (DepthConvention::Standard, true) => 1.0 - div(near, v),
-        (DepthConvention::Standard, false) => div(far, far - near) * (1.0 - div(near, v)),
-        (DepthConvention::Reversed, true) => div(near, v),
-        (DepthConvention::Reversed, false) => div(near, far - near) * (div(far, v) - 1.0),
+        (DepthConvention::Standard, true) => 1.0 - div(n, v),
+        (DepthConvention::Standard, false) => div(f, f - n) * (1.0 - div(n, v)),
+        (DepthConvention::Reversed, true) => div(n, v),
+        (DepthConvention::Reversed, false) => div(n, f - n) * (div(f, v) - 1.0),
     }
 }
 
