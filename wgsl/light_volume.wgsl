@@ -159,7 +159,7 @@ fn light_volume_cone_scaled(apex: vec3<f32>, axis: vec3<f32>, h: f32, k: f32,
 // (far = +Inf): 1 − n/vz and n/vz. reversed: 0 standard, anything else reversed.
 // Bad input (every result finite, in [0, 1] up to rounding): vz is clamped to [near, far];
 // NaN or +Inf vz (from its bits) and planes no projection has (near not a normal positive
-// float, far neither above near nor +Inf, far/near of 2^126 or more) give the far end
+// float, far neither above near nor +Inf, far/near above 2^126) give the far end
 // (1 standard, 0 reversed).
 // a / b for b > 0 within WGSL's specified range of divisors: b beyond 2^126 is scaled, with a,
 // by 2^-64 first (b is never below 2^-126 here).
@@ -174,11 +174,11 @@ fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32
     let infinite = bitcast<u32>(far) == 0x7f800000u;
     let far_end = select(1.0, 0.0, reversed != 0u);
     let vz_bits = bitcast<u32>(vz);
-    // far/near below 2^126 for a finite far (from the exponents), so f/vz stays finite; near
+    // far/near at most 2^126 (as Projection::new; exact from the bits), so f/vz stays finite; near
     // normal, so no divisor below is subnormal once tiny planes are scaled (next).
     if (!light_volume_finite(near) || !(near >= 1.1754944e-38)
         || !(infinite || (light_volume_finite(far) && far > near
-            && bitcast<u32>(far) - bitcast<u32>(near) < 0x3f000000u))
+            && bitcast<u32>(far) - bitcast<u32>(near) <= 0x3f000000u))
         || (vz_bits & 0x7fffffffu) > 0x7f800000u || vz_bits == 0x7f800000u) {
         return far_end;
     }

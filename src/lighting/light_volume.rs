@@ -205,21 +205,21 @@ fn cone_scaled(apex: Vec3, axis: Vec3, h: f32, k: f32, near_corner_distance: f32
 ///
 /// **Bad input (every result finite):** `vz` is clamped to `[near, far]`; NaN or `+∞` `vz` and
 /// planes no projection has (`near` not a normal positive float, `far` neither above `near` nor
-/// `+∞`, `far/near ≥ 2^126`) give the far end (1 standard, 0 reversed). The WGSL's `reversed` argument is 0 for
-/// standard and anything else for reversed.
+/// `+∞`, `far/near > 2^126`) give the far end (1 standard, 0 reversed). The WGSL's `reversed`
+/// argument is 0 for standard and anything else for reversed.
 pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: DepthConvention) -> f32 {
     let infinite = far == f32::INFINITY;
     let far_end = match convention {
         DepthConvention::Standard => 1.0,
         DepthConvention::Reversed => 0.0,
     };
-    // far/near below 2^126 for a finite far (from the exponents), so f/vz stays finite.
+    // far/near at most 2^126 (as Projection::new; exact from the bits), so f/vz stays finite.
     if !light_volume_finite(near)
         || near < f32::MIN_POSITIVE
         || !(infinite
             || (light_volume_finite(far)
                 && far > near
-                && far.to_bits() - near.to_bits() < 0x3f00_0000))
+                && far.to_bits() - near.to_bits() <= 0x3f00_0000))
         || vz.is_nan()
         || vz == f32::INFINITY
     {

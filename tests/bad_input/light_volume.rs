@@ -143,7 +143,7 @@ pub const ROWS: &[Row] = &[
     Row { func: "light_volume_window_depth", case: "−Inf view depth", args: &[V::F32(-INF), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::F32(0.0), why: "−Inf → the near plane" },
     Row { func: "light_volume_window_depth", case: "NaN near", args: &[V::F32(1.5), V::F32(NAN), V::F32(2.0), V::U32(1)], expect: V::F32(0.0), why: "no projection has it → the far end" },
     Row { func: "light_volume_window_depth", case: "far ≤ near", args: &[V::F32(1.5), V::F32(2.0), V::F32(1.0), V::U32(0)], expect: V::F32(1.0), why: "no projection has it → the far end" },
-    Row { func: "light_volume_window_depth", case: "far/near ≥ 2^126", args: &[V::F32(1.0), V::F32(1e-30), V::F32(1e30), V::U32(1)], expect: V::F32(0.0), why: "no projection has it → the far end" },
+    Row { func: "light_volume_window_depth", case: "far/near > 2^126", args: &[V::F32(1.0), V::F32(1e-30), V::F32(1e30), V::U32(1)], expect: V::F32(0.0), why: "no projection has it → the far end" },
     Row { func: "light_volume_sphere_depth_bounds", case: "NaN centre", args: &[V::F32(NAN), V::F32(1.0), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range: culls nothing" },
     Row { func: "light_volume_sphere_depth_bounds", case: "+Inf radius", args: &[V::F32(1.5), V::F32(INF), V::F32(1.0), V::F32(2.0), V::U32(1)], expect: V::Vec2([0.0, 1.0]), why: "full range" },
     Row { func: "light_volume_sphere_depth_bounds", case: "negative radius", args: &[V::F32(1.5), V::F32(-1.0), V::F32(1.0), V::F32(2.0), V::U32(0)], expect: V::Vec2([0.0, 1.0]), why: "full range" },
