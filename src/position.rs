@@ -27,13 +27,29 @@ use glam::{Mat3, Vec2, Vec3};
 /// to `±LIMIT`, NaN lanes read as 0 (WGSL `pos_sane`).
 pub const LIMIT: f32 = 1_099_511_627_776.0;
 
-/// One lane made finite and clamped to `[−LIMIT, LIMIT]` (WGSL `pos_sane`).
-fn sane(x: f32) -> f32 {
+/// A lane as the WGSL reads it from its bits before computing with it: NaN → 0, clamped to
+/// `[−limit, limit]` (±∞ included). Shared by the position, lighting and aggregate-light twins
+/// (WGSL `pos_sane`, `lpp_luminance`, `aggregate_light_sane3`).
+pub(crate) fn read_finite(x: f32, limit: f32) -> f32 {
     if x.is_nan() {
         0.0
     } else {
-        x.clamp(-LIMIT, LIMIT)
+        x.clamp(-limit, limit)
     }
+}
+
+/// [`read_finite`] per lane of a `Vec3`.
+pub(crate) fn read_finite3(v: Vec3, limit: f32) -> Vec3 {
+    Vec3::new(
+        read_finite(v.x, limit),
+        read_finite(v.y, limit),
+        read_finite(v.z, limit),
+    )
+}
+
+/// One lane made finite and clamped to `[−LIMIT, LIMIT]` (WGSL `pos_sane`).
+fn sane(x: f32) -> f32 {
+    read_finite(x, LIMIT)
 }
 
 fn sane2(v: Vec2) -> Vec2 {
@@ -41,7 +57,7 @@ fn sane2(v: Vec2) -> Vec2 {
 }
 
 fn sane3(v: Vec3) -> Vec3 {
-    Vec3::new(sane(v.x), sane(v.y), sane(v.z))
+    read_finite3(v, LIMIT)
 }
 
 /// View ray through `ndc_xy` with z = +1 (left-handed view space, +z forward). Twin of WGSL

@@ -40,14 +40,7 @@ pub const AGGREGATE_LIGHT_LIMIT: f32 = 1.267_650_6e30;
 /// `v` with every lane finite and within `±limit` (WGSL `aggregate_light_sane3`): NaN → 0,
 /// ±∞ → ±limit.
 fn sane3(v: Vec3, limit: f32) -> Vec3 {
-    let lane = |x: f32| {
-        if x.is_nan() {
-            0.0
-        } else {
-            x.clamp(-limit, limit)
-        }
-    };
-    Vec3::new(lane(v.x), lane(v.y), lane(v.z))
+    crate::position::read_finite3(v, limit)
 }
 
 fn sane4(v: Vec4, limit: f32) -> Vec4 {

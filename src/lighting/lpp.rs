@@ -65,8 +65,7 @@ pub(crate) fn pow2_scale(m: f32) -> f32 {
 /// clamp colours with [`lpp_clamp_colour`] first).
 pub fn lpp_luminance(rgb: Vec3) -> f32 {
     const BIG: f32 = 8.507_059e37; // 2^126
-    let lane = |c: f32| if c.is_nan() { 0.0 } else { c.clamp(-BIG, BIG) };
-    Vec3::new(lane(rgb.x), lane(rgb.y), lane(rgb.z)).dot(LPP_LUMINANCE)
+    crate::position::read_finite3(rgb, BIG).dot(LPP_LUMINANCE)
 }
 
 /// `x^y` for a cosine `x` and exponent `y ≥ 0`, computed as `exp2(y·log2 x)`: 0 for `x ≤ 0`
