@@ -2,8 +2,8 @@
 //!
 //! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
 //!
-//! The talk's inverse `vz = 1/(z·a + b)` (`a = (f−n)/(−f·n)`, `b = 1/n`; seed `000`,
-//! "Recovering linear depth") cancels near the far plane and loses precision like
+//! The textbook inverse `vz = 1/(z·a + b)` (`a = (f−n)/(−f·n)`, `b = 1/n`, as the
+//! light-pre-pass talks recover linear depth) cancels near the far plane and loses precision like
 //! `(f/n)·2^-24` — about 8 % at `f/n = 10^6`. Rearranged so that every term is non-negative:
 //!
 //! - standard float: `vz = n / ((1 − z) + z·(n/f))` for `z ≥ 0.5` (`1 − z` exact there) and
@@ -48,7 +48,9 @@
 //! returns view-space `z = −vz`.
 
 use crate::depth24::DEPTH24_MAX;
-use crate::projection::{Depth24Consts, DepthConsts, ReversedDepthConsts};
+use crate::projection::{
+    Depth24Consts, DepthConsts, DepthConvention, DepthUniform, ReversedDepthConsts,
+};
 
 /// The view distance every function here returns for the sky (and for NaN depth and invalid
 /// planes): `f32::MAX`, the largest finite `f32` (WGSL `3.4028234e38`, which rounds to it).
@@ -213,6 +215,68 @@ pub fn view_z_from_reversed_depth_consts(z: f32, k: ReversedDepthConsts) -> f32 
     reversed_checked(z, k)
 }
 
+/// `|k.w|` of a depth uniform, from its bits (WGSL `ld_uniform_near_times_max`).
+fn uniform_near_times_max(k: DepthUniform) -> f32 {
+    f32::from_bits(k.signed_near_times_max.to_bits() & 0x7fff_ffff)
+}
+
+/// Whether `k` is a uniform some projection gives (WGSL `ld_uniform_ok`).
+fn uniform_ok(k: DepthUniform) -> bool {
+    consts_ok(k.near, k.near_over_far, k.one_minus_near_over_far)
+        && consts_ok(uniform_near_times_max(k), 0.0, 0.0)
+}
+
+/// View distance of a float depth in the projection's own convention, from its
+/// [`DepthUniform`] (twin of WGSL `view_z_from_depth_uniform`): for a standard uniform
+/// [`view_z_from_depth_consts`], for a reversed one [`view_z_from_reversed_depth_consts`], on
+/// the same constants, so the same bits and the same error bounds
+/// ([`bounds::ulp`] of those functions). A vector no projection gives returns [`SKY`].
+pub fn view_z_from_depth_uniform(z: f32, k: DepthUniform) -> f32 {
+    if !uniform_ok(k) {
+        return SKY;
+    }
+    match k.convention() {
+        DepthConvention::Standard => standard_checked(
+            z,
+            DepthConsts {
+                near: k.near,
+                near_over_far: k.near_over_far,
+                one_minus_near_over_far: k.one_minus_near_over_far,
+            },
+        ),
+        DepthConvention::Reversed => reversed_checked(
+            z,
+            ReversedDepthConsts {
+                near: k.near,
+                one_minus_near_over_far: k.one_minus_near_over_far,
+                near_over_far: k.near_over_far,
+            },
+        ),
+    }
+}
+
+/// View distance of a 24-bit depth code in the projection's own convention, from its
+/// [`DepthUniform`] (twin of WGSL `view_z_from_depth24_uniform`). Reversed depth is exactly
+/// `1 −` standard depth, so a reversed code `d` reads as the standard code `2^24 − 1 − d`: the
+/// result is [`view_z_from_depth24_consts`] of that code, bit for bit, with its error bound.
+pub fn view_z_from_depth24_uniform(d: u32, k: DepthUniform) -> f32 {
+    if !uniform_ok(k) {
+        return SKY;
+    }
+    let code = d.min(DEPTH24_MAX);
+    let standard = match k.convention() {
+        DepthConvention::Standard => code,
+        DepthConvention::Reversed => DEPTH24_MAX - code,
+    };
+    depth24_checked(
+        standard,
+        Depth24Consts {
+            near_times_max: uniform_near_times_max(k),
+            near_over_far: k.near_over_far,
+        },
+    )
+}
+
 /// Error bounds of every function here, in f32 ULPs of the exact distance, kept once: the tests,
 /// the fuzz targets and the docs read them from here.
 ///
@@ -274,7 +338,7 @@ pub mod bounds {
     /// derivation table it comes from. `None` for names not in this module.
     pub fn of(function: &str) -> Option<(f64, f64, &'static str)> {
         Some(match function {
-            "view_z_from_depth24_consts" => (
+            "view_z_from_depth24_consts" | "view_z_from_depth24_uniform" => (
                 DEPTH24_CONSTS_CORRECTLY_ROUNDED,
                 DEPTH24_CONSTS_CONFORMING,
                 "ε_n u + ε_+ + (ε_× + ε_k u) + ε_/ (linear_depth::bounds)",
@@ -284,7 +348,9 @@ pub mod bounds {
                 DEPTH24_CONFORMING,
                 "ε_n (n·D) + ε_+ + (ε_× + ε_k = n/f) + ε_/ (linear_depth::bounds)",
             ),
-            "view_z_from_depth_consts" | "view_z_from_reversed_depth_consts" => (
+            "view_z_from_depth_consts"
+            | "view_z_from_reversed_depth_consts"
+            | "view_z_from_depth_uniform" => (
                 FLOAT_CONSTS_CORRECTLY_ROUNDED,
                 FLOAT_CONSTS_CONFORMING,
                 "ε_+ + (ε_× + ε_k u) + ε_/, exact 1 − z (linear_depth::bounds)",

@@ -60,6 +60,15 @@ fn sane3(v: Vec3) -> Vec3 {
     read_finite3(v, LIMIT)
 }
 
+/// `tan_half_fov` for WGSL `frustum_ray_rh` / `fullscreen_triangle_ray_rh` from a perspective
+/// matrix of your own (glam's, Bevy's, or [`crate::projection::Projection::perspective_rh`]):
+/// `(1/m[0][0], 1/m[1][1])`, computed in f64 and rounded once. Any convention and far plane:
+/// the x and y scales do not depend on them.
+pub fn tan_half_fov_of(perspective: glam::Mat4) -> [f32; 2] {
+    let inv = |x: f32| (1.0 / f64::from(x)) as f32;
+    [inv(perspective.x_axis.x), inv(perspective.y_axis.y)]
+}
+
 /// View ray through `ndc_xy` with z = +1 (left-handed view space, +z forward). Twin of WGSL
 /// `frustum_ray`.
 pub fn frustum_ray(ndc_xy: Vec2, tan_half_fov: Vec2) -> Vec3 {

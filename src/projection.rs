@@ -1,8 +1,13 @@
 //! `Projection`: near/far planes and depth convention, validated, with the constants the WGSL
-//!
-//! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
 //! per-pixel functions take (computed in f64, rounded once) and the exact forward maps
 //! (view distance → window depth / 24-bit code) used as references.
+//!
+//! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
+//!
+//! A renderer uploads one [`DepthUniform`] ([`Projection::depth_uniform`]) and calls WGSL
+//! `view_z_from_depth_uniform` or `view_z_from_depth24_uniform`: the convention travels with
+//! the constants. The per-convention constants (`depth_consts`, `reversed_depth_consts`,
+//! `depth24_consts`) are refused for a projection of the other convention.
 //!
 //! View distance `vz` is the positive distance along the view axis (`+z` forward left-handed,
 //! `−z` forward right-handed as wgpu/Bevy: then view-space z is `−vz`). Window depth in `[0, 1]`:
@@ -25,7 +30,7 @@ impl DepthConvention {
     /// `light_volume_window_depth`, `light_volume_sphere_depth_bounds` and
     /// `light_volume_sphere_depth_bounds24`): 0 standard, 1 reversed. The WGSL reads any
     /// non-zero value as reversed.
-    pub fn wgsl(self) -> u32 {
+    pub fn to_wgsl(self) -> u32 {
         match self {
             Self::Standard => 0,
             Self::Reversed => 1,
@@ -122,6 +127,81 @@ impl ReversedDepthConsts {
         }
     }
 }
+
+/// The one depth uniform: the constants of WGSL `view_z_from_depth_uniform(z, k)` (float depth)
+/// and `view_z_from_depth24_uniform(d, k)` (24-bit codes), for either convention, in one
+/// `vec4<f32>` (16 bytes, `#[repr(C)]`, no padding: `Pod` with feature `bytemuck`):
+///
+/// `k = (n, n/f, (f − n)/f, ±n·(2^24 − 1))`, the sign bit of `k.w` set for a reversed
+/// projection.
+///
+/// Only [`Projection::depth_uniform`] makes one, so the convention always travels with the
+/// constants: a reversed projection cannot hand a shader standard constants. Each entry is
+/// computed in f64 and rounded once; the WGSL reads the same values the per-convention
+/// `*_consts` functions read, so results (and error bounds, `linear_depth::bounds`) are those
+/// of `view_z_from_depth_consts` / `view_z_from_reversed_depth_consts` /
+/// `view_z_from_depth24_consts`, bit for bit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[repr(C)]
+pub struct DepthUniform {
+    /// `n`, the near plane (`k.x`).
+    pub near: f32,
+    /// `n/f`, exactly 0 for an infinite far plane (`k.y`).
+    pub near_over_far: f32,
+    /// `(f − n)/f`, exactly 1 for an infinite far plane (`k.z`).
+    pub one_minus_near_over_far: f32,
+    /// `n·(2^24 − 1)`, negated for a reversed projection: the 24-bit numerator, and by its sign
+    /// the convention (`k.w`).
+    pub signed_near_times_max: f32,
+}
+
+impl DepthUniform {
+    /// The vector the WGSL takes, in its order.
+    pub fn to_wgsl(self) -> [f32; 4] {
+        [
+            self.near,
+            self.near_over_far,
+            self.one_minus_near_over_far,
+            self.signed_near_times_max,
+        ]
+    }
+
+    /// The uniform from that vector (the inverse of [`to_wgsl`](Self::to_wgsl)); the shader
+    /// functions give the sky for vectors no [`Projection`] makes.
+    pub fn from_wgsl(k: [f32; 4]) -> Self {
+        Self {
+            near: k[0],
+            near_over_far: k[1],
+            one_minus_near_over_far: k[2],
+            signed_near_times_max: k[3],
+        }
+    }
+
+    /// The 16 bytes a uniform buffer holds (little-endian `vec4<f32>`), without bytemuck.
+    pub fn to_le_bytes(self) -> [u8; 16] {
+        let mut out = [0; 16];
+        for (o, k) in out.chunks_exact_mut(4).zip(self.to_wgsl()) {
+            o.copy_from_slice(&k.to_le_bytes());
+        }
+        out
+    }
+
+    /// The convention the sign of `k.w` carries.
+    pub fn convention(self) -> DepthConvention {
+        if self.signed_near_times_max.is_sign_negative() {
+            DepthConvention::Reversed
+        } else {
+            DepthConvention::Standard
+        }
+    }
+}
+
+// SAFETY: four f32 fields, `#[repr(C)]`, no padding; every bit pattern is a valid value.
+#[cfg(feature = "bytemuck")]
+unsafe impl bytemuck::Zeroable for DepthUniform {}
+// SAFETY: as above; `Copy + 'static`.
+#[cfg(feature = "bytemuck")]
+unsafe impl bytemuck::Pod for DepthUniform {}
 
 /// A rejected [`Projection`] parameter: which field, and why.
 #[derive(Clone, Debug, PartialEq)]
@@ -224,25 +304,75 @@ impl Projection {
         }
     }
 
-    /// Constants for WGSL `view_z_from_depth24_consts(d, k)`: `k = (n·(2^24 − 1), n/f)`, each
-    /// computed in f64 and rounded once (standard convention codes). Upload
-    /// [`Depth24Consts::to_wgsl`].
-    pub fn depth24_consts(&self) -> Depth24Consts {
-        Depth24Consts {
-            near_times_max: (f64::from(self.near) * f64::from(DEPTH24_MAX)) as f32,
-            near_over_far: self.ratio() as f32,
-        }
-    }
-
-    /// Constants for WGSL `view_z_from_depth_consts(z, k)`: `k = (n, n/f, (f − n)/f)`
-    /// (standard convention; `(0, 1)` in the last two when infinite), the last two computed in
-    /// f64 and rounded once. Upload [`DepthConsts::to_wgsl`].
-    pub fn depth_consts(&self) -> DepthConsts {
-        DepthConsts {
+    /// The depth uniform for this projection, in its convention: what a renderer uploads for
+    /// WGSL `view_z_from_depth_uniform` (float depth) and `view_z_from_depth24_uniform`
+    /// (24-bit codes). See [`DepthUniform`].
+    ///
+    /// ```
+    /// use prepass::projection::{DepthConvention, Projection};
+    /// let p = Projection::new(0.1, f32::INFINITY, DepthConvention::Reversed)?;
+    /// let k = p.depth_uniform();
+    /// assert_eq!(k.convention(), DepthConvention::Reversed);
+    /// let vz = prepass::linear_depth::view_z_from_depth_uniform(0.01, k); // n/z = 10
+    /// assert!((vz - 10.0).abs() < 1e-5);
+    /// # Ok::<(), prepass::projection::ProjectionError>(())
+    /// ```
+    pub fn depth_uniform(&self) -> DepthUniform {
+        let near_times_max = self.near_times_max();
+        DepthUniform {
             near: self.near,
             near_over_far: self.ratio() as f32,
             one_minus_near_over_far: self.one_minus_ratio() as f32,
+            signed_near_times_max: match self.convention {
+                DepthConvention::Standard => near_times_max,
+                DepthConvention::Reversed => -near_times_max,
+            },
         }
+    }
+
+    /// `n·(2^24 − 1)`, the exact product rounded once (it fits an f64).
+    fn near_times_max(&self) -> f32 {
+        (f64::from(self.near) * f64::from(DEPTH24_MAX)) as f32
+    }
+
+    /// An error unless this projection has convention `want` (for the per-convention
+    /// constants).
+    fn expect(&self, want: DepthConvention, wgsl: &str) -> Result<(), ProjectionError> {
+        if self.convention == want {
+            return Ok(());
+        }
+        Err(ProjectionError {
+            field: "convention",
+            reason: format!(
+                "`{wgsl}` reads {want:?} depth, but this projection is {:?}: use \
+                 `depth_uniform()` (either convention) or the matching constants",
+                self.convention
+            ),
+        })
+    }
+
+    /// Constants for WGSL `view_z_from_depth24_consts(d, k)`: `k = (n·(2^24 − 1), n/f)`, each
+    /// computed in f64 and rounded once. The codes that function reads are of standard depth,
+    /// so a reversed projection is an error (its codes read through
+    /// `view_z_from_depth24_uniform`). Upload [`Depth24Consts::to_wgsl`].
+    pub fn depth24_consts(&self) -> Result<Depth24Consts, ProjectionError> {
+        self.expect(DepthConvention::Standard, "view_z_from_depth24_consts")?;
+        Ok(Depth24Consts {
+            near_times_max: self.near_times_max(),
+            near_over_far: self.ratio() as f32,
+        })
+    }
+
+    /// Constants for WGSL `view_z_from_depth_consts(z, k)`: `k = (n, n/f, (f − n)/f)`
+    /// (`(0, 1)` in the last two when infinite), the last two computed in f64 and rounded
+    /// once. A reversed projection is an error. Upload [`DepthConsts::to_wgsl`].
+    pub fn depth_consts(&self) -> Result<DepthConsts, ProjectionError> {
+        self.expect(DepthConvention::Standard, "view_z_from_depth_consts")?;
+        Ok(DepthConsts {
+            near: self.near,
+            near_over_far: self.ratio() as f32,
+            one_minus_near_over_far: self.one_minus_ratio() as f32,
+        })
     }
 
     /// `(f − n)/f` in f64 (1 for an infinite far plane).
@@ -255,14 +385,19 @@ impl Projection {
     }
 
     /// Constants for WGSL `view_z_from_reversed_depth_consts(z, k)`:
-    /// `k = (n, (f − n)/f, n/f)` (reversed convention; `(1, 0)` in the last two when infinite),
-    /// the last two computed in f64 and rounded once. Upload [`ReversedDepthConsts::to_wgsl`].
-    pub fn reversed_depth_consts(&self) -> ReversedDepthConsts {
-        ReversedDepthConsts {
+    /// `k = (n, (f − n)/f, n/f)` (`(1, 0)` in the last two when infinite), the last two computed
+    /// in f64 and rounded once. A standard projection is an error. Upload
+    /// [`ReversedDepthConsts::to_wgsl`].
+    pub fn reversed_depth_consts(&self) -> Result<ReversedDepthConsts, ProjectionError> {
+        self.expect(
+            DepthConvention::Reversed,
+            "view_z_from_reversed_depth_consts",
+        )?;
+        Ok(ReversedDepthConsts {
             near: self.near,
             one_minus_near_over_far: self.one_minus_ratio() as f32,
             near_over_far: self.ratio() as f32,
-        }
+        })
     }
 
     /// Exact window depth of view distance `vz` under this projection's convention (f64).
@@ -297,15 +432,17 @@ impl Projection {
     /// View distance from a float window depth in this projection's convention (the Rust twin
     /// of the matching WGSL function; see [`crate::linear_depth`]).
     pub fn view_z_from_depth(&self, z: f32) -> f32 {
-        match self.convention {
-            DepthConvention::Standard => {
-                crate::linear_depth::view_z_from_depth_consts(z, self.depth_consts())
-            }
-            DepthConvention::Reversed => crate::linear_depth::view_z_from_reversed_depth_consts(
-                z,
-                self.reversed_depth_consts(),
-            ),
-        }
+        crate::linear_depth::view_z_from_depth_uniform(z, self.depth_uniform())
+    }
+
+    /// `tan(fov/2)` along x and y, the `tan_half_fov` of WGSL `frustum_ray_rh` /
+    /// `fullscreen_triangle_ray_rh` (and the left-handed forms), for the matrix
+    /// [`perspective_rh`](Self::perspective_rh)`(fov_y, aspect)` builds: `(aspect·t, t)` with
+    /// `t = tan(fov_y/2)`, computed in f64 and rounded once. For a matrix of your own use
+    /// [`crate::position::tan_half_fov_of`].
+    pub fn tan_half_fov(fov_y: f32, aspect: f32) -> [f32; 2] {
+        let t = (f64::from(fov_y) / 2.0).tan();
+        [(f64::from(aspect) * t) as f32, t as f32]
     }
 
     /// A right-handed (−z forward, wgpu/Bevy) perspective matrix with this depth mapping, for
@@ -359,22 +496,54 @@ mod tests {
     #[test]
     fn named_constants_reach_the_wgsl_in_its_order() {
         let p = Projection::new(0.5, 100.0, DepthConvention::Standard).unwrap();
-        let k24 = p.depth24_consts();
+        let pr = Projection::new(0.5, 100.0, DepthConvention::Reversed).unwrap();
+        let k24 = p.depth24_consts().unwrap();
         assert_eq!(k24.to_wgsl(), [k24.near_times_max, k24.near_over_far]);
         assert_eq!(Depth24Consts::from_wgsl(k24.to_wgsl()), k24);
-        let k = p.depth_consts();
+        let k = p.depth_consts().unwrap();
         assert_eq!(
             k.to_wgsl(),
             [k.near, k.near_over_far, k.one_minus_near_over_far]
         );
         assert_eq!(DepthConsts::from_wgsl(k.to_wgsl()), k);
-        let kr = p.reversed_depth_consts();
+        let kr = pr.reversed_depth_consts().unwrap();
         assert_eq!(
             kr.to_wgsl(),
             [kr.near, kr.one_minus_near_over_far, kr.near_over_far]
         );
         assert_eq!(ReversedDepthConsts::from_wgsl(kr.to_wgsl()), kr);
         assert_eq!((k.near_over_far, kr.near_over_far), (0.005, 0.005));
+        for (proj, sign) in [(p, 1.0), (pr, -1.0)] {
+            let u = proj.depth_uniform();
+            assert_eq!(u.to_wgsl(), [0.5, 0.005, 0.995, sign * k24.near_times_max]);
+            assert_eq!(DepthUniform::from_wgsl(u.to_wgsl()), u);
+            assert_eq!(u.convention(), proj.convention());
+            assert_eq!(u.to_le_bytes()[..4], 0.5f32.to_le_bytes());
+        }
+    }
+
+    #[test]
+    fn per_convention_constants_refuse_the_other_convention() {
+        let s = Projection::new(0.5, 100.0, DepthConvention::Standard).unwrap();
+        let r = Projection::new(0.5, 100.0, DepthConvention::Reversed).unwrap();
+        assert_eq!(r.depth_consts().unwrap_err().field, "convention");
+        assert_eq!(r.depth24_consts().unwrap_err().field, "convention");
+        assert_eq!(s.reversed_depth_consts().unwrap_err().field, "convention");
+        let e = r.depth_consts().unwrap_err().to_string();
+        assert!(e.contains("depth_uniform"), "{e}");
+    }
+
+    #[test]
+    fn tan_half_fov_matches_the_matrix() {
+        let p = Projection::new(0.1, f32::INFINITY, DepthConvention::Reversed).unwrap();
+        let (fov_y, aspect) = (1.2f32, 16.0 / 9.0);
+        let t = Projection::tan_half_fov(fov_y, aspect);
+        let m = crate::position::tan_half_fov_of(p.perspective_rh(fov_y, aspect));
+        for (a, b) in t.into_iter().zip(m) {
+            // The matrix entries are rounded once, their reciprocals once more: 2 ULP apart at most.
+            assert!((a - b).abs() <= 2.0 * f32::EPSILON * a, "{t:?} vs {m:?}");
+        }
+        assert!((t[1] - 0.6f32.tan()).abs() < 1e-6);
     }
 
     #[test]

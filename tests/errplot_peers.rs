@@ -127,7 +127,8 @@ fn depth_points() -> Vec<Point> {
         prepass::projection::DepthConvention::Standard,
     )
     .expect("valid projection")
-    .depth24_consts();
+    .depth24_consts()
+    .expect("a projection of the convention these constants read");
     for (function, extra) in [
         (
             "view_z_from_depth24",

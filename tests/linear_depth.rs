@@ -63,7 +63,10 @@ fn depth24_every_code_on_the_stiff_grid() {
         )
         .unwrap();
         check("view_z_from_depth24", n, f, &s);
-        let k = case.projection(Standard).depth24_consts();
+        let k = case
+            .projection(Standard)
+            .depth24_consts()
+            .expect("a projection of the convention these constants read");
         let twin = move |d: u32| ld::view_z_from_depth24_consts(d, k);
         let (s, _) = codes_sweep(
             gpu(),
@@ -97,7 +100,10 @@ fn standard_float_depths_on_the_stiff_grid() {
         )
         .unwrap();
         check("view_z_from_depth", n, f, &s);
-        let k = case.projection(Standard).depth_consts();
+        let k = case
+            .projection(Standard)
+            .depth_consts()
+            .expect("a projection of the convention these constants read");
         let twin = move |z: f32| ld::view_z_from_depth_consts(z, k);
         let (s, _) = float_sweep(
             gpu(),
@@ -134,7 +140,10 @@ fn reversed_float_depths_on_the_stiff_grid() {
         )
         .unwrap();
         check("view_z_from_reversed_depth", n, f, &s);
-        let k = case.projection(Reversed).reversed_depth_consts();
+        let k = case
+            .projection(Reversed)
+            .reversed_depth_consts()
+            .expect("a projection of the convention these constants read");
         let twin = move |z: f32| ld::view_z_from_reversed_depth_consts(z, k);
         let (s, _) = float_sweep(
             gpu(),
@@ -325,4 +334,134 @@ fn every_path_holds_its_conforming_bound_under_emulation() {
         "linear-depth",
         &format!("{line}\n{table}"),
     );
+}
+
+/// The depth uniform (`Projection::depth_uniform`, one `vec4` for either convention) reads the
+/// same constants as the per-convention forms, so it must give their bits exactly: float depth
+/// in both conventions, and 24-bit codes, a reversed code `d` as the standard code
+/// `2^24 − 1 − d`. Checked on the adapter and on the twins, on every stiff-grid case with 2^16
+/// depths and 2^16 codes per case (a sample suffices: the claim is identity of two operation
+/// sequences, not a bound, and every depth/code class the sweeps above visit is in it —
+/// `float_depths` spans [0, 1] by exponent, the codes are spread over all 2^24 with both ends).
+#[test]
+fn the_depth_uniform_gives_the_per_convention_results_bit_for_bit() {
+    use prepass::depth24::DEPTH24_MAX;
+    let depths = float_depths(1 << 16);
+    let mut codes: Vec<u32> = (0..1u32 << 16)
+        .map(|i| i.wrapping_mul(257) & DEPTH24_MAX)
+        .collect();
+    codes.extend([
+        0,
+        1,
+        DEPTH24_MAX - 1,
+        DEPTH24_MAX,
+        DEPTH24_MAX + 1,
+        u32::MAX,
+    ]);
+    let n = |v: usize| v as u64;
+    let bits = |o: &prepass::harness::Output| o.as_u32().to_vec();
+    for case in stiff_grid() {
+        for conv in [Standard, Reversed] {
+            let p = case.projection(conv);
+            let u = p.depth_uniform();
+            let k = [Arg::splat_vec(&u.to_wgsl())];
+            // Float depth: the uniform against the per-convention constants.
+            let via_uniform = run_kernel(
+                LINEAR_DEPTH,
+                "view_z_from_depth_uniform",
+                &[Arg::column(&depths), k[0]],
+                n(depths.len()),
+            );
+            let (per_conv, twin): (_, Box<dyn Fn(f32) -> f32>) = match conv {
+                Standard => {
+                    let kc = p.depth_consts().unwrap();
+                    (
+                        run_kernel(
+                            LINEAR_DEPTH,
+                            "view_z_from_depth_consts",
+                            &[Arg::column(&depths), Arg::splat_vec(&kc.to_wgsl())],
+                            n(depths.len()),
+                        ),
+                        Box::new(move |z| ld::view_z_from_depth_consts(z, kc)),
+                    )
+                }
+                Reversed => {
+                    let kc = p.reversed_depth_consts().unwrap();
+                    (
+                        run_kernel(
+                            LINEAR_DEPTH,
+                            "view_z_from_reversed_depth_consts",
+                            &[Arg::column(&depths), Arg::splat_vec(&kc.to_wgsl())],
+                            n(depths.len()),
+                        ),
+                        Box::new(move |z| ld::view_z_from_reversed_depth_consts(z, kc)),
+                    )
+                }
+            };
+            assert_eq!(
+                bits(&via_uniform),
+                bits(&per_conv),
+                "{case:?} {conv:?}: view_z_from_depth_uniform differs from the per-convention form"
+            );
+            for &z in &depths {
+                assert_eq!(
+                    ld::view_z_from_depth_uniform(z, u).to_bits(),
+                    twin(z).to_bits(),
+                    "{case:?} {conv:?} z {z:e}: twin"
+                );
+            }
+            // 24-bit codes: the uniform against view_z_from_depth24_consts of the standard code.
+            let standard = case.projection(Standard).depth24_consts().unwrap();
+            let as_standard: Vec<u32> = codes
+                .iter()
+                .map(|&d| match conv {
+                    Standard => d,
+                    Reversed => DEPTH24_MAX - d.min(DEPTH24_MAX),
+                })
+                .collect();
+            let via_uniform = run_kernel(
+                LINEAR_DEPTH,
+                "view_z_from_depth24_uniform",
+                &[Arg::column(&codes), k[0]],
+                n(codes.len()),
+            );
+            let per_conv = run_kernel(
+                LINEAR_DEPTH,
+                "view_z_from_depth24_consts",
+                &[
+                    Arg::column(&as_standard),
+                    Arg::splat_vec(&standard.to_wgsl()),
+                ],
+                n(codes.len()),
+            );
+            assert_eq!(
+                bits(&via_uniform),
+                bits(&per_conv),
+                "{case:?} {conv:?}: view_z_from_depth24_uniform differs from view_z_from_depth24_consts"
+            );
+            for (&d, &s) in codes.iter().zip(&as_standard) {
+                assert_eq!(
+                    ld::view_z_from_depth24_uniform(d, u).to_bits(),
+                    ld::view_z_from_depth24_consts(s, standard).to_bits(),
+                    "{case:?} {conv:?} code {d:#x}: twin"
+                );
+            }
+            // And the reversed code of a distance is the standard code's complement, so the
+            // reading above is the right one: the projection's own forward map says so.
+            if conv == Reversed {
+                for vz in [f64::from(case.near) * 1.5, f64::from(case.near) * 1e3] {
+                    let (dr, ds) = (
+                        p.depth24_from_view_z(vz),
+                        case.projection(Standard).depth24_from_view_z(vz),
+                    );
+                    assert!(
+                        dr + ds == DEPTH24_MAX
+                            || dr + ds == DEPTH24_MAX + 1
+                            || dr + ds + 1 == DEPTH24_MAX,
+                        "{case:?} vz {vz}: codes {dr} + {ds}"
+                    );
+                }
+            }
+        }
+    }
 }

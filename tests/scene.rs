@@ -44,14 +44,21 @@ fn a_depth_only_scene_contains_only_its_depth_function_and_helpers() {
         PositionChoice::None,
     );
     let names = function_names(&s.wgsl().unwrap());
-    // Checked through naga's function list: the root and the helpers it calls, nothing else.
+    // Checked through naga's function list: the roots and the helpers they call, nothing else.
+    // The uniform form decides the convention at run time, so it brings the standard path too.
     let want: BTreeSet<String> = [
         "view_z_from_reversed_depth_consts",
+        "view_z_from_depth_uniform",
         "ld_is_nan",
         "ld_divide_or_sky",
         "ld_consts_ok",
         "ld_clamp_unit",
         "ld_view_z_reversed",
+        "ld_view_z_standard",
+        "ld_one_minus",
+        "ld_uniform_near_times_max",
+        "ld_uniform_ok",
+        "ld_uniform_reversed",
     ]
     .map(String::from)
     .into();
@@ -201,6 +208,12 @@ fn every_valid_combination_composes_validates_and_translates() {
             scope.spawn(move || {
                 for (roots, s) in part {
                     let wgsl = lib.compose(roots.iter().copied()).unwrap();
+                    // The default-feature composer (text alone) emits naga's text exactly.
+                    assert_eq!(
+                        s.wgsl().unwrap(),
+                        wgsl,
+                        "{s:?}: Scene::wgsl (text) differs from Library::compose (naga)"
+                    );
                     prepass::wgsl::translate_all(&wgsl)
                         .unwrap_or_else(|e| panic!("{s:?}: {e}\n{wgsl}"));
                     // Every root is there, and nothing the roots do not reach.

@@ -186,3 +186,47 @@ fn view_z_from_reversed_depth_consts(z: f32, k: vec3<f32>) -> f32 {
     }
     return ld_view_z_reversed(z, k);
 }
+
+// The 24-bit numerator |k.w| of a depth uniform k = (n, n/f, (f - n)/f, +-n·(2^24 - 1)), from
+// its bits; whether k.w's sign bit marks a reversed projection is ld_uniform_reversed.
+fn ld_uniform_near_times_max(k: vec4<f32>) -> f32 {
+    return bitcast<f32>(bitcast<u32>(k.w) & 0x7fffffffu);
+}
+
+// Whether k is a depth uniform some Projection gives: n, n/f, (f - n)/f as ld_consts_ok
+// checks, and |k.w| positive and finite.
+fn ld_uniform_ok(k: vec4<f32>) -> bool {
+    return ld_consts_ok(k.xyz) && ld_consts_ok(vec3<f32>(ld_uniform_near_times_max(k), 0.0, 0.0));
+}
+
+// Whether the depth uniform k is of a reversed projection (the sign bit of k.w).
+fn ld_uniform_reversed(k: vec4<f32>) -> bool {
+    return bitcast<u32>(k.w) >= 0x80000000u;
+}
+
+// View distance of a float depth in the projection's own convention, from its depth uniform
+// k = (n, n/f, (f - n)/f, +-n·(2^24 - 1)) (Projection::depth_uniform; k.w negative: reversed).
+// The same value as view_z_from_depth_consts or view_z_from_reversed_depth_consts, bit for
+// bit, on the same constants. A vector no Projection gives returns the sky.
+fn view_z_from_depth_uniform(z: f32, k: vec4<f32>) -> f32 {
+    if (!ld_uniform_ok(k)) {
+        return 3.4028234e38;
+    }
+    if (ld_uniform_reversed(k)) {
+        return ld_view_z_reversed(z, vec3<f32>(k.x, k.z, k.y));
+    }
+    return ld_view_z_standard(z, k.xyz);
+}
+
+// View distance of a 24-bit depth code in the projection's own convention, from its depth
+// uniform k (Projection::depth_uniform). A reversed code d stores the same depth as the standard
+// code 2^24 - 1 - d (reversed depth is exactly 1 - standard depth), so the result is
+// view_z_from_depth24_consts of that code, bit for bit. Codes above 2^24 - 1 saturate first.
+fn view_z_from_depth24_uniform(d: u32, k: vec4<f32>) -> f32 {
+    if (!ld_uniform_ok(k)) {
+        return 3.4028234e38;
+    }
+    let code = min(d, 0xffffffu);
+    let standard = select(code, 0xffffffu - code, ld_uniform_reversed(k));
+    return ld_view_z_depth24(standard, vec2<f32>(ld_uniform_near_times_max(k), k.y));
+}

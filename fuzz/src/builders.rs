@@ -12,11 +12,24 @@ pub const BUILDERS: &[Entry] = &[
             Ok(p) => {
                 // Documented: every per-pixel constant is finite and n·(2^24 − 1), n/f are normal
                 // or zero (n/f = 0 exactly when far = +Inf).
-                let k24 = p.depth24_consts().to_wgsl();
-                let k = p.depth_consts().to_wgsl();
-                let kr = p.reversed_depth_consts().to_wgsl();
-                for c in k24.iter().chain(&k).chain(&kr) {
+                // Every convention's constants come from the one uniform; the per-convention
+                // ones only for their own convention.
+                let u = p.depth_uniform().to_wgsl();
+                let k24 = [u[3].abs(), u[1]];
+                assert_eq!(u[3].is_sign_negative(), p.convention() == DepthConvention::Reversed);
+                for c in u.iter().take(3).chain(&k24) {
                     assert!(c.is_finite() && *c >= 0.0, "{p:?}: constant {c}");
+                }
+                match p.convention() {
+                    DepthConvention::Standard => {
+                        assert_eq!(p.depth24_consts().map(|k| k.to_wgsl()), Ok(k24));
+                        assert_eq!(p.depth_consts().map(|k| k.to_wgsl()), Ok([u[0], u[1], u[2]]));
+                        assert!(p.reversed_depth_consts().is_err());
+                    }
+                    DepthConvention::Reversed => {
+                        assert_eq!(p.reversed_depth_consts().map(|k| k.to_wgsl()), Ok([u[0], u[2], u[1]]));
+                        assert!(p.depth_consts().is_err() && p.depth24_consts().is_err());
+                    }
                 }
                 assert!(k24[0].is_normal(), "{p:?}");
                 assert_eq!(k24[1] == 0.0, p.is_infinite(), "{p:?}");

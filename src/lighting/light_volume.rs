@@ -254,14 +254,14 @@ pub fn light_volume_window_depth(vz: f32, near: f32, far: f32, convention: Depth
 /// `[0, 1]`; `(1, 0)` when the sphere lies wholly outside `[near, far]`.
 ///
 /// The planes and convention can come straight from a [`Projection`](crate::projection::Projection)
-/// (for the WGSL, pass `convention.wgsl()` as its `reversed` argument):
+/// (for the WGSL, pass `convention.to_wgsl()` as its `reversed` argument):
 /// ```
 /// use prepass::lighting::light_volume::light_volume_sphere_depth_bounds;
 /// use prepass::projection::{DepthConvention, Projection};
 /// let p = Projection::new(0.1, 100.0, DepthConvention::Reversed).unwrap();
 /// let b = light_volume_sphere_depth_bounds(10.0, 1.0, p.near(), p.far(), p.convention());
 /// assert!(b.x < b.y && b.y < 0.02);
-/// assert_eq!(p.convention().wgsl(), 1);
+/// assert_eq!(p.convention().to_wgsl(), 1);
 /// ```
 pub fn light_volume_sphere_depth_bounds(
     center_z: f32,

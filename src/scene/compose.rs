@@ -9,6 +9,7 @@
 //! roots, emitted in the registry's file order and each file's source order, so adding a root
 //! only inserts items: the text of the others never changes.
 
+use super::items::{identifiers, leading_comment};
 use crate::wgsl::{FILES, WgslError, WgslFile, parse_and_validate};
 use naga::{Block, Expression, Handle, Module, Statement, Type, TypeInner};
 use std::collections::{BTreeSet, HashMap};
@@ -71,25 +72,6 @@ impl std::fmt::Display for ComposeError {
 }
 
 impl std::error::Error for ComposeError {}
-
-/// The comment lines directly above byte offset `start` (no blank line between).
-fn leading_comment(source: &str, start: usize) -> usize {
-    let mut begin = start;
-    let before = &source[..start];
-    let mut lines: Vec<&str> = before.split_inclusive('\n').collect();
-    // The item starts at a line start; drop the (empty) partial line before it, if any.
-    if lines.last().is_some_and(|l| !l.ends_with('\n')) {
-        lines.pop();
-    }
-    for line in lines.iter().rev() {
-        if line.trim_start().starts_with("//") {
-            begin -= line.len();
-        } else {
-            break;
-        }
-    }
-    begin
-}
 
 fn walk_calls(block: &Block, out: &mut Vec<Handle<naga::Function>>) {
     for stmt in block.iter() {
@@ -296,14 +278,6 @@ fn top_level_declaration(line: &str) -> Option<&str> {
         .then(|| rest.trim_start())
 }
 
-/// The identifier tokens of WGSL text, comments skipped.
-fn identifiers(text: &str) -> impl Iterator<Item = &str> {
-    text.lines()
-        .map(|l| l.split("//").next().unwrap_or(""))
-        .flat_map(|l| l.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_')))
-        .filter(|t| t.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_'))
-}
-
 fn collect_global(
     m: &Module,
     e: Handle<Expression>,
@@ -414,19 +388,4 @@ impl Library {
         })?;
         Ok(out)
     }
-}
-
-/// A shipped file as a naga_oil module: `#define_import_path prepass::<stem>` followed by the
-/// file's text. Register it with `naga_oil::compose::Composer::add_composable_module` and import
-/// with `#import prepass::<stem>::<function>` (or `#import prepass::<stem>` and `<stem>::<fn>`).
-pub fn naga_oil_module(file: &WgslFile) -> String {
-    let stem = file.name.trim_end_matches(".wgsl");
-    format!("#define_import_path prepass::{stem}\n\n{}", file.source)
-}
-
-/// A shipped file as a WESL module: plain WGSL is valid WESL, so the text is the file itself,
-/// placed at `<package root>/<stem>.wesl` and imported with `import package::<stem>::<fn>;`
-/// (or `import prepass::<stem>::<fn>;` when mounted as a package named `prepass`).
-pub fn wesl_module(file: &WgslFile) -> (String, &'static str) {
-    (file.name.replace(".wgsl", ".wesl"), file.source)
 }

@@ -19,10 +19,13 @@
 #[cfg(feature = "validate")]
 mod compose;
 pub mod gbuffer;
+mod import;
+mod items;
 mod roots;
 
 #[cfg(feature = "validate")]
-pub use compose::{ComposeError, Item, Library, naga_oil_module, wesl_module};
+pub use compose::{ComposeError, Item, Library};
+pub use import::{naga_oil_module, wesl_module};
 
 use crate::projection::DepthConvention;
 
@@ -271,10 +274,17 @@ impl Scene {
         Ok(())
     }
 
-    /// The composed WGSL module for this scene: only what its roots reach, validated by naga.
-    #[cfg(feature = "validate")]
-    pub fn wgsl(&self) -> Result<String, Box<dyn std::error::Error + Send + Sync>> {
+    /// The composed WGSL module for this scene: only the shipped functions, constants and
+    /// types its roots ([`roots`](Self::roots)) reach, each with its comment, in the shipped
+    /// files' order. Append your entry points and bindings and create one shader module.
+    ///
+    /// Cut from the files' text, on every feature set (no naga). `tests/scene.rs` proves it is
+    /// the text of naga's composition ([`Library::compose`], feature `validate`, which parses
+    /// and validates it) for every distinct scene, and compiles each with naga and Tint; to
+    /// validate your own module, `prepass::wgsl::parse_and_validate` (feature `validate`).
+    pub fn wgsl(&self) -> Result<String, SceneError> {
         let roots = self.roots()?;
-        Ok(Library::shipped()?.compose(roots)?)
+        // `roots` names only shipped items (the scene tests check every one).
+        Ok(items::compose(roots).expect("every root is a shipped item"))
     }
 }

@@ -68,6 +68,12 @@ impl Scene {
             DepthStorage::Code24 => {}
             DepthStorage::Code24Rgba8 => r.extend(["pack_depth24", "depth24_from_rgb8"]),
         }
+        // The convention-aware uniform form (`Projection::depth_uniform`), beside the
+        // per-convention constants form.
+        r.push(match d.storage {
+            DepthStorage::Float32 => "view_z_from_depth_uniform",
+            DepthStorage::Code24 | DepthStorage::Code24Rgba8 => "view_z_from_depth24_uniform",
+        });
         match (d.storage, d.convention) {
             (DepthStorage::Float32, DepthConvention::Standard) => {
                 r.push("view_z_from_depth_consts")

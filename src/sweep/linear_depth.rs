@@ -316,7 +316,11 @@ pub fn grid_table(
             };
             let row = match path {
                 DepthPath::Code24 => {
-                    let k = [Arg::splat_vec(&p.depth24_consts().to_wgsl())];
+                    let k = [Arg::splat_vec(
+                        &p.depth24_consts()
+                            .expect("a projection of the convention these constants read")
+                            .to_wgsl(),
+                    )];
                     GridRow {
                         path,
                         case,
@@ -327,7 +331,11 @@ pub fn grid_table(
                     }
                 }
                 DepthPath::FloatStandard => {
-                    let k = [Arg::splat_vec(&p.depth_consts().to_wgsl())];
+                    let k = [Arg::splat_vec(
+                        &p.depth_consts()
+                            .expect("a projection of the convention these constants read")
+                            .to_wgsl(),
+                    )];
                     GridRow {
                         path,
                         case,
@@ -338,7 +346,11 @@ pub fn grid_table(
                     }
                 }
                 DepthPath::FloatReversed => {
-                    let k = [Arg::splat_vec(&p.reversed_depth_consts().to_wgsl())];
+                    let k = [Arg::splat_vec(
+                        &p.reversed_depth_consts()
+                            .expect("a projection of the convention these constants read")
+                            .to_wgsl(),
+                    )];
                     GridRow {
                         path,
                         case,
@@ -435,9 +447,21 @@ pub fn sampled_worst(path: &Path, run: &RunBatch<'_>) -> Result<(f64, String), H
         let (n, f) = (case.near, case.far);
         let p = case.projection(path.convention);
         let k: Vec<f32> = match (path.code, path.convention) {
-            (true, _) => p.depth24_consts().to_wgsl().to_vec(),
-            (false, DepthConvention::Standard) => p.depth_consts().to_wgsl().to_vec(),
-            (false, DepthConvention::Reversed) => p.reversed_depth_consts().to_wgsl().to_vec(),
+            (true, _) => p
+                .depth24_consts()
+                .expect("a projection of the convention these constants read")
+                .to_wgsl()
+                .to_vec(),
+            (false, DepthConvention::Standard) => p
+                .depth_consts()
+                .expect("a projection of the convention these constants read")
+                .to_wgsl()
+                .to_vec(),
+            (false, DepthConvention::Reversed) => p
+                .reversed_depth_consts()
+                .expect("a projection of the convention these constants read")
+                .to_wgsl()
+                .to_vec(),
         };
         let mut args = vec![if path.code {
             Arg::column(&codes)

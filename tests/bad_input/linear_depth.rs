@@ -3,7 +3,7 @@
 
 use super::{Func, INF, MAX24, NAN, Row, SUB_MAX, SUB_MIN, V};
 use prepass::linear_depth as ld;
-use prepass::projection::{Depth24Consts, DepthConsts, ReversedDepthConsts};
+use prepass::projection::{Depth24Consts, DepthConsts, DepthUniform, ReversedDepthConsts};
 
 pub const FUNCS: &[Func] = &[
     func!(prepass::wgsl::LINEAR_DEPTH; linear_depth; view_z_from_depth24(u32, f32, f32) -> F32),
@@ -39,6 +39,26 @@ pub const FUNCS: &[Func] = &[
             V::F32(ld::view_z_from_reversed_depth_consts(
                 a[0].f32(),
                 ReversedDepthConsts::from_wgsl(a[1].vec3().to_array()),
+            ))
+        },
+    },
+    Func {
+        rust: "linear_depth::view_z_from_depth_uniform",
+        wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth_uniform")),
+        twin: |a| {
+            V::F32(ld::view_z_from_depth_uniform(
+                a[0].f32(),
+                DepthUniform::from_wgsl(a[1].vec4().to_array()),
+            ))
+        },
+    },
+    Func {
+        rust: "linear_depth::view_z_from_depth24_uniform",
+        wgsl: Some((prepass::wgsl::LINEAR_DEPTH, "view_z_from_depth24_uniform")),
+        twin: |a| {
+            V::F32(ld::view_z_from_depth24_uniform(
+                a[0].u32(),
+                DepthUniform::from_wgsl(a[1].vec4().to_array()),
             ))
         },
     },
@@ -86,12 +106,27 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
         "private to linear_depth.wgsl: planes a projection can have, exercised by the bad-plane rows",
     ),
     (
+        "ld_uniform_near_times_max",
+        "private to linear_depth.wgsl: |k.w| of a depth uniform from its bits, exercised by every depth24 uniform row",
+    ),
+    (
+        "ld_uniform_ok",
+        "private to linear_depth.wgsl: uniforms a Projection can give, exercised by the bad-uniform rows",
+    ),
+    (
+        "ld_uniform_reversed",
+        "private to linear_depth.wgsl: the convention from the sign bit of k.w, exercised by the reversed uniform rows",
+    ),
+    (
         "ld_clamp_unit",
         "private to linear_depth.wgsl: z clamped to [0, 1] from its bits, exercised by the ±Inf and out-of-range rows",
     ),
 ];
 
 const SKY: f32 = prepass::linear_depth::SKY;
+/// `Projection::new(1, 2, ·).depth_uniform()`, standard and reversed.
+const U_STD: [f32; 4] = [1.0, 0.5, 0.5, 16_777_215.0];
+const U_REV: [f32; 4] = [1.0, 0.5, 0.5, -16_777_215.0];
 /// 2^104, the largest near plane `Projection::new` takes.
 const NEAR_MAX: f32 = 20_282_409_603_651_670_423_947_251_286_016.0;
 
@@ -130,6 +165,21 @@ pub const ROWS: &[Row] = &[
     Row { func: "view_z_from_depth_consts", case: "+Inf constant", args: &[V::F32(0.75), V::Vec3([1.0, INF, 0.5])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
     Row { func: "view_z_from_depth_consts", case: "out-of-range constant", args: &[V::F32(0.75), V::Vec3([1.0, 0.5, 2.0])], expect: V::F32(SKY), why: "ratios outside [0, 1] → the sky" },
     Row { func: "view_z_from_reversed_depth_consts", case: "negative near", args: &[V::F32(0.5), V::Vec3([-1.0, 0.5, 0.5])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
+    // The uniform of near 1, far 2: (n, n/f, (f − n)/f, ±n·(2^24 − 1)), k.w negative when reversed.
+    Row { func: "view_z_from_depth_uniform", case: "NaN, standard", args: &[V::F32(NAN), V::Vec4(U_STD)], expect: V::F32(SKY), why: "NaN → the sky" },
+    Row { func: "view_z_from_depth_uniform", case: "+Inf, standard", args: &[V::F32(INF), V::Vec4(U_STD)], expect: V::F32(2.0), why: "clamped to 1 = far" },
+    Row { func: "view_z_from_depth_uniform", case: "+Inf, reversed", args: &[V::F32(INF), V::Vec4(U_REV)], expect: V::F32(1.0), why: "clamped to 1 = near (reversed)" },
+    Row { func: "view_z_from_depth_uniform", case: "−Inf, reversed", args: &[V::F32(-INF), V::Vec4(U_REV)], expect: V::F32(2.0), why: "clamped to 0 = far (reversed)" },
+    Row { func: "view_z_from_depth_uniform", case: "zero, reversed infinite (the sky)", args: &[V::F32(0.0), V::Vec4([1.0, 0.0, 1.0, -16_777_215.0])], expect: V::F32(SKY), why: "the sky → f32::MAX" },
+    Row { func: "view_z_from_depth_uniform", case: "k.w = −0", args: &[V::F32(0.5), V::Vec4([1.0, 0.5, 0.5, -0.0])], expect: V::F32(SKY), why: "no Projection gives it (|k.w| = 0) → the sky" },
+    Row { func: "view_z_from_depth_uniform", case: "k.w NaN", args: &[V::F32(0.5), V::Vec4([1.0, 0.5, 0.5, NAN])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
+    Row { func: "view_z_from_depth_uniform", case: "ratio above 1", args: &[V::F32(0.5), V::Vec4([1.0, 0.5, 1.5, 16_777_215.0])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
+    Row { func: "view_z_from_depth24_uniform", case: "out-of-range code, standard", args: &[V::U32(u32::MAX), V::Vec4(U_STD)], expect: V::F32(2.0), why: "saturates to the far code" },
+    Row { func: "view_z_from_depth24_uniform", case: "out-of-range code, reversed", args: &[V::U32(u32::MAX), V::Vec4(U_REV)], expect: V::F32(1.0), why: "saturates to 2^24 − 1 = near (reversed)" },
+    Row { func: "view_z_from_depth24_uniform", case: "code 0, reversed", args: &[V::U32(0), V::Vec4(U_REV)], expect: V::F32(2.0), why: "reversed code 0 = far" },
+    Row { func: "view_z_from_depth24_uniform", case: "code 0, reversed infinite (the sky)", args: &[V::U32(0), V::Vec4([1.0, 0.0, 1.0, -16_777_215.0])], expect: V::F32(SKY), why: "the sky → f32::MAX" },
+    Row { func: "view_z_from_depth24_uniform", case: "k.w +Inf", args: &[V::U32(7), V::Vec4([1.0, 0.5, 0.5, INF])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
+    Row { func: "view_z_from_depth24_uniform", case: "NaN near", args: &[V::U32(7), V::Vec4([NAN, 0.5, 0.5, 16_777_215.0])], expect: V::F32(SKY), why: "no Projection gives it → the sky" },
     Row { func: "view_z_from_reversed_depth_consts", case: "huge constant, tiny depth", args: &[V::F32(1e-30), V::Vec3([3e38, 1.0, 0.0])], expect: V::F32(SKY), why: "n/s ≥ 2^127: no division overflows" },
 
 ];

@@ -461,7 +461,9 @@ pub fn gbuffer_error(
                         .view_z_from_depth(prepass::depth24::hyperbolic_depth_from_depth24(code)),
                     DepthConvention::Standard => prepass::linear_depth::view_z_from_depth24_consts(
                         code,
-                        projection.depth24_consts(),
+                        projection
+                            .depth24_consts()
+                            .expect("a projection of the convention these constants read"),
                     ),
                 }
             }

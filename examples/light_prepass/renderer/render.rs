@@ -456,7 +456,10 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
     let reversed = cfg.convention == DepthConvention::Reversed;
     let depth_k = match (cfg.storage, reversed) {
         (_, true) => {
-            let k = projection.reversed_depth_consts().to_wgsl();
+            let k = projection
+                .reversed_depth_consts()
+                .expect("a projection of the convention these constants read")
+                .to_wgsl();
             [k[0], k[1], k[2], 0.0]
         }
         (
@@ -466,11 +469,17 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
             },
             false,
         ) => {
-            let k = projection.depth24_consts().to_wgsl();
+            let k = projection
+                .depth24_consts()
+                .expect("a projection of the convention these constants read")
+                .to_wgsl();
             [k[0], k[1], 0.0, 0.0]
         }
         (_, false) => {
-            let k = projection.depth_consts().to_wgsl();
+            let k = projection
+                .depth_consts()
+                .expect("a projection of the convention these constants read")
+                .to_wgsl();
             [k[0], k[1], k[2], 0.0]
         }
     };

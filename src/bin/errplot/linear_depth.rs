@@ -119,7 +119,10 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         };
         let (near, far) = (case.near, case.far);
         let ab = textbook_consts(case, DepthConvention::Standard);
-        let k24 = case.projection(DepthConvention::Standard).depth24_consts();
+        let k24 = case
+            .projection(DepthConvention::Standard)
+            .depth24_consts()
+            .expect("a projection of the convention these constants read");
         let forms: [Form; 3] = [
             (
                 "stable",
@@ -212,7 +215,10 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     };
     let (near, far) = (case.near, case.far);
     let ab = textbook_consts(case, DepthConvention::Standard);
-    let k24 = case.projection(DepthConvention::Standard).depth24_consts();
+    let k24 = case
+        .projection(DepthConvention::Standard)
+        .depth24_consts()
+        .expect("a projection of the convention these constants read");
     let tile = timing_codes();
     for (function, stats) in variant_errors {
         let (args, twin) = match function {
