@@ -22,17 +22,27 @@
 //! | `harness` | any | run any WGSL function on a wgpu adapter (feature `harness`) |
 //! | `conforming` | any | the worst conforming adapter emulated on yours: any module rewritten so every operation the WGSL spec leaves free lands at a chosen end of its interval (feature `validate`; run with `harness`) |
 //!
-//! Features: none by default (glam + half only); `validate` adds naga, `harness` adds wgpu,
-//! `proptest` adds strategies for downstream precision suites, `rayon` splits long batches of
-//! [`batch`] across threads.
+//! Features: none by default (glam + half only: the WGSL, the scene composer, the uniforms and
+//! the twins); `bytemuck` adds `Pod` for the uniform structs, `validate` adds naga, `harness`
+//! adds wgpu, `proptest` adds strategies for downstream precision suites, `rayon` splits long
+//! batches of [`batch`] across threads. Each gated item is labelled with its feature on
+//! docs.rs.
 
 #![warn(missing_docs)]
+// docs.rs builds with `--cfg docsrs` on nightly: label every feature-gated item with its feature.
+#![cfg_attr(docsrs, feature(doc_cfg))]
+
+/// The glam version the twins take and return (`Vec3`, `Mat3`, …), so a renderer needs no
+/// direct dependency to call them.
+pub use glam;
 
 pub mod batch;
 #[cfg(feature = "validate")]
+#[cfg_attr(docsrs, doc(cfg(feature = "validate")))]
 pub mod conforming;
 pub mod depth24;
 #[cfg(feature = "harness")]
+#[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub mod harness;
 pub mod lighting;
 pub mod linear_depth;
@@ -43,10 +53,13 @@ pub mod projection;
 pub mod roughness;
 pub mod scene;
 #[cfg(feature = "harness")]
+#[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub mod sweep;
 pub mod wgsl;
 
-/// The README's code examples, compiled and run as doctests so they cannot rot.
-#[cfg(all(doctest, feature = "harness", feature = "proptest"))]
+/// The README's code examples, compiled and run as doctests so they cannot rot: the first on
+/// every feature set (the lean build included), the feature-gated ones where their features are
+/// on (each carries its own `cfg`).
+#[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;

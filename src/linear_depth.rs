@@ -2,6 +2,16 @@
 //!
 //! Conventions (spaces, handedness, depth, byte order, units, NaN policy): README, "Conventions".
 //!
+//! **Sign:** every `view_z_*` function returns the positive view distance `vz`. Right-handed
+//! view space (wgpu, Bevy) has `z = −vz`: Bevy's `depth_ndc_to_view_z(d)` is
+//! `-view_z_from_depth_uniform(d, k)`.
+//!
+//! **Which to call:** upload [`Projection::depth_uniform`](crate::projection::Projection::depth_uniform)
+//! and call [`view_z_from_depth_uniform`] (float depth) or [`view_z_from_depth24_uniform`]
+//! (24-bit codes): the convention travels with the constants. The `_consts` forms take one
+//! convention's constants (fewer instructions: no run-time branch on the convention); the
+//! near/far forms compute the constants per pixel.
+//!
 //! The textbook inverse `vz = 1/(z·a + b)` (`a = (f−n)/(−f·n)`, `b = 1/n`, as the
 //! light-pre-pass talks recover linear depth) cancels near the far plane and loses precision like
 //! `(f/n)·2^-24` — about 8 % at `f/n = 10^6`. Rearranged so that every term is non-negative:
@@ -41,11 +51,9 @@
 //!   outside `[2^-126, 2^104]`, `far ≤ near`, ratios outside `[0, 1]`.
 //!
 //! Special inputs are recognised from their bits, as the WGSL does. A lighting pass tests
-//! `vz >= SKY` for the sky (`vz >= 3.4028234e38` in WGSL, which rounds to it: Tint rejects the
-//! usual `3.4028235e38`, which lies above `f32::MAX`).
-//!
-//! **Sign against Bevy:** these return the positive distance `vz`; Bevy's `depth_ndc_to_view_z`
-//! returns view-space `z = −vz`.
+//! `vz >= SKY` for the sky (`vz >= VIEW_Z_SKY` in WGSL, the shipped constant
+//! `3.4028234e38`, which rounds to it: Tint rejects the usual `3.4028235e38`, which lies above
+//! `f32::MAX`).
 
 use crate::depth24::DEPTH24_MAX;
 use crate::projection::{
@@ -53,7 +61,8 @@ use crate::projection::{
 };
 
 /// The view distance every function here returns for the sky (and for NaN depth and invalid
-/// planes): `f32::MAX`, the largest finite `f32` (WGSL `3.4028234e38`, which rounds to it).
+/// planes): `f32::MAX`, the largest finite `f32` (WGSL `const VIEW_Z_SKY`, written
+/// `3.4028234e38`, which rounds to it).
 /// Finite, because WGSL leaves a run-time ±∞ indeterminate and rejects a constant one.
 pub const SKY: f32 = f32::MAX;
 
@@ -230,7 +239,7 @@ fn uniform_ok(k: DepthUniform) -> bool {
 /// [`DepthUniform`] (twin of WGSL `view_z_from_depth_uniform`): for a standard uniform
 /// [`view_z_from_depth_consts`], for a reversed one [`view_z_from_reversed_depth_consts`], on
 /// the same constants, so the same bits and the same error bounds
-/// ([`bounds::ulp`] of those functions). A vector no projection gives returns [`SKY`].
+/// ([`bounds::of`] those functions). A vector no projection gives returns [`SKY`].
 pub fn view_z_from_depth_uniform(z: f32, k: DepthUniform) -> f32 {
     if !uniform_ok(k) {
         return SKY;
@@ -309,7 +318,7 @@ pub fn view_z_from_depth24_uniform(d: u32, k: DepthUniform) -> f32 {
 /// under half of it: the same sum with `w ≤ 1`.) The correctly rounded figures are the
 /// lavapipe promise; the conforming ones hold on every conforming adapter, and
 /// `tests/linear_depth.rs` checks both, the second under emulation
-/// ([`crate::conforming`]).
+/// (`prepass::conforming`, feature `validate`).
 pub mod bounds {
     /// Second-order terms of the first-order sums below.
     const SECOND_ORDER: f64 = 0.01;

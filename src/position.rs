@@ -71,6 +71,9 @@ pub fn tan_half_fov_of(perspective: glam::Mat4) -> [f32; 2] {
 
 /// View ray through `ndc_xy` with z = +1 (left-handed view space, +z forward). Twin of WGSL
 /// `frustum_ray`.
+///
+/// `tan_half_fov = (tan(fov_x/2), tan(fov_y/2)) = (aspect·tan(fov_y/2), tan(fov_y/2))`, from
+/// [`crate::projection::Projection::tan_half_fov`] or [`tan_half_fov_of`] a matrix.
 pub fn frustum_ray(ndc_xy: Vec2, tan_half_fov: Vec2) -> Vec3 {
     (sane2(ndc_xy) * sane2(tan_half_fov)).extend(1.0)
 }

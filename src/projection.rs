@@ -198,9 +198,11 @@ impl DepthUniform {
 
 // SAFETY: four f32 fields, `#[repr(C)]`, no padding; every bit pattern is a valid value.
 #[cfg(feature = "bytemuck")]
+#[cfg_attr(docsrs, doc(cfg(feature = "bytemuck")))]
 unsafe impl bytemuck::Zeroable for DepthUniform {}
 // SAFETY: as above; `Copy + 'static`.
 #[cfg(feature = "bytemuck")]
+#[cfg_attr(docsrs, doc(cfg(feature = "bytemuck")))]
 unsafe impl bytemuck::Pod for DepthUniform {}
 
 /// A rejected [`Projection`] parameter: which field, and why.

@@ -151,3 +151,49 @@ fn depth24() {
     }
     publish_measured("docs/figures.md", "depth24", &s);
 }
+
+/// The README's size of the example to copy (`examples/deferred_minimal`): lines of Rust and of
+/// WGSL, counted from the files (`bash .ci/test` runs the example itself and checks its image).
+#[test]
+fn deferred_minimal_example_size() {
+    let lines = |p: &str| {
+        std::fs::read_to_string(format!("{}/{p}", env!("CARGO_MANIFEST_DIR")))
+            .unwrap_or_else(|e| panic!("{p}: {e}"))
+            .lines()
+            .count()
+    };
+    let (rust, wgsl) = (
+        lines("examples/deferred_minimal/main.rs"),
+        lines("examples/deferred_minimal/deferred.wgsl"),
+    );
+    common::publish(
+        "README.md",
+        "deferred-minimal",
+        &format!(
+            "`examples/deferred_minimal`: {rust} lines of Rust (`main.rs`) and {wgsl} of WGSL \
+             (`deferred.wgsl`), beside the {} lines prepass composes for its scene.\n",
+            deferred_minimal_scene_lines()
+        ),
+    );
+}
+
+/// Lines of `Scene::wgsl` for the example's scene (reversed-Z infinite D32F, oct24, view
+/// positions), as the example builds it.
+fn deferred_minimal_scene_lines() -> usize {
+    use prepass::projection::DepthConvention;
+    use prepass::scene::*;
+    let scene = Scene {
+        depth: DepthChoice {
+            storage: DepthStorage::Float32,
+            convention: DepthConvention::Reversed,
+            infinite_far: true,
+        },
+        normal: NormalChoice {
+            encoding: Some(NormalEncoding::Oct24),
+            fast_encoder: false,
+        },
+        position: PositionChoice::View,
+        ..Scene::default()
+    };
+    scene.wgsl().unwrap().lines().count()
+}

@@ -3,7 +3,7 @@
 // Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
 // View distance vz is the positive distance along the view axis (right-handed view space has
-// z = -vz). Window depth: standard z = f(vz - n) / ((f - n) vz), reversed z = n(f - vz) / ((f - n) vz);
+// z = -vz: Bevy's depth_ndc_to_view_z(d) is -view_z_from_depth_uniform(d, k)). Window depth: standard z = f(vz - n) / ((f - n) vz), reversed z = n(f - vz) / ((f - n) vz);
 // far may be +inf (standard z = 1 - n/vz, reversed z = n/vz).
 //
 // The textbook inverse 1/(z·a + b) with a = (f - n)/(-f n), b = 1/n subtracts two nearly equal
@@ -230,3 +230,8 @@ fn view_z_from_depth24_uniform(d: u32, k: vec4<f32>) -> f32 {
     let standard = select(code, 0xffffffu - code, ld_uniform_reversed(k));
     return ld_view_z_depth24(standard, vec2<f32>(ld_uniform_near_times_max(k), k.y));
 }
+
+// The sky sentinel every function here returns for the sky (f32::MAX, Rust linear_depth::SKY):
+// a lighting pass tests `vz >= VIEW_Z_SKY`. Written 3.4028234e38, which rounds to f32::MAX
+// (Tint rejects 3.4028235e38, which lies above it).
+const VIEW_Z_SKY: f32 = 3.4028234e38;

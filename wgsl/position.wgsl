@@ -34,6 +34,8 @@ fn pos_sane3(v: vec3<f32>) -> vec3<f32> {
 }
 
 // View ray through ndc_xy in a frustum with tan(fov/2) = tan_half_fov (x, y), with z = +1.
+// tan_half_fov = (aspect·tan(fov_y/2), tan(fov_y/2)), or (1/m[0][0], 1/m[1][1]) of a perspective
+// matrix m: Rust Projection::tan_half_fov(fov_y, aspect) or position::tan_half_fov_of(m).
 fn frustum_ray(ndc_xy: vec2<f32>, tan_half_fov: vec2<f32>) -> vec3<f32> {
     return vec3<f32>(pos_sane2(ndc_xy) * pos_sane2(tan_half_fov), 1.0);
 }

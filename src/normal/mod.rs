@@ -15,7 +15,7 @@
 //! `+ − ×` either way, err 2.5 ULP on `/` and 2 on `inverseSqrt`, fuse and reassociate — the
 //! WGSL encoder's code is within one code step of the twin's (per lane, two codes of one exact
 //! direction counting as equal), every decode is finite and unit within
-//! [`crate::sweep::conforming::UNIT_TOLERANCE_CONFORMING`] (`18·2^-24`, derived there), and the
+//! `prepass::sweep::conforming::UNIT_TOLERANCE_CONFORMING` (`18·2^-24`, derived there; feature `harness`), and the
 //! precise encoders stay within 5× their correctly rounded optimality tolerance: checked under
 //! the worst-case emulation by `tests/conforming.rs`; the figures are in `docs/figures.md`. The WGSL avoids the expressions an implementation may
 //! legitimately evaluate differently: no `a*b + c` whose fusion into an fma would change the

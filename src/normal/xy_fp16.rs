@@ -7,7 +7,7 @@
 //! decodes mirrored through the xy plane. Under perspective a visible surface's normal does
 //! reach `z < 0` (down to −sin of the view ray's angle off the axis) — the "viewspace normal
 //! myth" of Mark Lee, "Pre-lighting in Resistance 2" (Insomniac Games, GDC 2009).
-//! [`crate::sweep::normal::killzone_myth`] measures it.
+//! `prepass::sweep::normal::killzone_myth` (feature `harness`) measures it.
 
 use super::{dot, sanitize};
 use glam::{Vec2, Vec3};
@@ -51,7 +51,7 @@ pub fn encode_normal_xy_fp16(n: Vec3) -> u32 {
 }
 
 /// Decode to `(x, y, √z2) / √(s + z2)` with `(x, y) = unpack2x16float(p)`, `s = x² + y²`,
-/// `z2 = max(0, 1 − s)`: the issue's `z = +sqrt(max(0, 1 − x² − y²))`, normalised.
+/// `z2 = max(0, 1 − s)`: Killzone 2's `z = +sqrt(max(0, 1 − x² − y²))`, normalised.
 ///
 /// **Error bound:** for codes written by the encoder, `x² + y² ≤ 1` up to the halves' rounding
 /// and the final normalise only corrects that rounding; see the README for measured errors.

@@ -12,10 +12,12 @@
 
 pub mod assert;
 #[cfg(all(feature = "proptest", feature = "harness"))]
+#[cfg_attr(docsrs, doc(cfg(all(feature = "proptest", feature = "harness"))))]
 pub mod check;
 pub mod inputs;
 pub mod metrics;
 #[cfg(feature = "proptest")]
+#[cfg_attr(docsrs, doc(cfg(feature = "proptest")))]
 pub mod strategies;
 #[cfg(all(feature = "proptest", feature = "harness"))]
 mod value;

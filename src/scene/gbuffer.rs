@@ -1,6 +1,6 @@
 //! The render targets a scene's choices imply ([`Scene::gbuffer`]), their bytes per pixel,
 //! and their memory at a resolution and MSAA count. Plain data: no wgpu needed (feature
-//! `harness` adds [`TargetFormat::to_wgpu`]).
+//! `harness` adds `TargetFormat::to_wgpu`).
 
 use super::{
     DepthStorage, LightBuffers, Lights, NormalEncoding, RoughnessChoice, Scene, SceneError,
@@ -45,6 +45,7 @@ impl TargetFormat {
 
     /// The WebGPU/wgpu format.
     #[cfg(feature = "harness")]
+    #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
     pub fn to_wgpu(self) -> wgpu::TextureFormat {
         use wgpu::TextureFormat as T;
         match self {

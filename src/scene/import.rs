@@ -17,3 +17,21 @@ pub fn naga_oil_module(file: &WgslFile) -> String {
 pub fn wesl_module(file: &WgslFile) -> (String, &'static str) {
     (file.name.replace(".wgsl", ".wesl"), file.source)
 }
+
+/// The manifest of the WESL package [`wesl_package`] lays out: wesl 0.4's `wesl.toml`
+/// (`edition`, and `root`, the folder holding the modules).
+pub const WESL_TOML: &str = "edition = \"2026_pre\"\nroot = \"./shaders\"\n";
+
+/// Every shipped file as a WESL package named by its folder (`prepass/` in the README): paths
+/// relative to the package folder and their text, `wesl.toml` ([`WESL_TOML`]) first, then
+/// `shaders/<stem>.wesl` per file. Write them out, point `wesl::PkgBuilder::scan_toml` (or an
+/// application's `[dependencies]`) at the folder, and import `prepass::<stem>::<fn>`.
+/// `tests/imports.rs` compiles an application against exactly this package.
+pub fn wesl_package() -> Vec<(String, &'static str)> {
+    std::iter::once(("wesl.toml".to_string(), WESL_TOML))
+        .chain(crate::wgsl::FILES.iter().map(|f| {
+            let (name, text) = wesl_module(f);
+            (format!("shaders/{name}"), text)
+        }))
+        .collect()
+}

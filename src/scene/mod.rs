@@ -1,6 +1,8 @@
 //! Leave out what a scene does not need: a renderer declares its choices, and gets one WGSL
-//! module holding only the functions, constants and types those choices reach (composed by
-//! following naga's call graph, feature `validate`), and the G-buffer layout they imply.
+//! module holding only the functions, constants and types those choices reach
+//! ([`Scene::wgsl`], default features), and the G-buffer layout they imply. Feature `validate`
+//! adds `Library`, the same composition from naga's IR (call graph, constants, types), for
+//! your own files too; the tests prove the two give the same text for every scene.
 //!
 //! ```
 //! use prepass::scene::{DepthChoice, DepthStorage, PositionChoice, Scene};
@@ -24,8 +26,9 @@ mod items;
 mod roots;
 
 #[cfg(feature = "validate")]
+#[cfg_attr(docsrs, doc(cfg(feature = "validate")))]
 pub use compose::{ComposeError, Item, Library};
-pub use import::{naga_oil_module, wesl_module};
+pub use import::{WESL_TOML, naga_oil_module, wesl_module, wesl_package};
 
 use crate::projection::DepthConvention;
 
@@ -279,7 +282,7 @@ impl Scene {
     /// files' order. Append your entry points and bindings and create one shader module.
     ///
     /// Cut from the files' text, on every feature set (no naga). `tests/scene.rs` proves it is
-    /// the text of naga's composition ([`Library::compose`], feature `validate`, which parses
+    /// the text of naga's composition (`Library::compose`, feature `validate`, which parses
     /// and validates it) for every distinct scene, and compiles each with naga and Tint; to
     /// validate your own module, `prepass::wgsl::parse_and_validate` (feature `validate`).
     pub fn wgsl(&self) -> Result<String, SceneError> {

@@ -74,6 +74,7 @@ impl Scene {
             DepthStorage::Float32 => "view_z_from_depth_uniform",
             DepthStorage::Code24 | DepthStorage::Code24Rgba8 => "view_z_from_depth24_uniform",
         });
+        r.push("VIEW_Z_SKY");
         match (d.storage, d.convention) {
             (DepthStorage::Float32, DepthConvention::Standard) => {
                 r.push("view_z_from_depth_consts")
@@ -90,11 +91,20 @@ impl Scene {
         }
         match self.position {
             PositionChoice::None => {}
-            PositionChoice::View => r.extend(["fullscreen_triangle_ray_rh", "view_position"]),
-            PositionChoice::World => {
-                r.extend(["fullscreen_triangle_ray_rh", "world_ray", "world_position"])
-            }
+            // Every full-screen pass also needs its vertices' clip position.
+            PositionChoice::View => r.extend([
+                "fullscreen_triangle_ndc",
+                "fullscreen_triangle_ray_rh",
+                "view_position",
+            ]),
+            PositionChoice::World => r.extend([
+                "fullscreen_triangle_ndc",
+                "fullscreen_triangle_ray_rh",
+                "world_ray",
+                "world_position",
+            ]),
             PositionChoice::CameraRelative => r.extend([
+                "fullscreen_triangle_ndc",
                 "fullscreen_triangle_ray_rh",
                 "world_ray",
                 "camera_relative_position",

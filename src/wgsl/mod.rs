@@ -8,10 +8,12 @@ mod naga_check;
 #[cfg(feature = "validate")]
 mod spirv_cost;
 #[cfg(feature = "validate")]
+#[cfg_attr(docsrs, doc(cfg(feature = "validate")))]
 pub use naga_check::{
     CALL_ALL_ENTRY, Checked, Translations, WgslError, parse_and_validate, translate_all,
 };
 #[cfg(feature = "validate")]
+#[cfg_attr(docsrs, doc(cfg(feature = "validate")))]
 pub use spirv_cost::{SpirvCost, spirv_instruction_count};
 
 /// One shipped WGSL file.

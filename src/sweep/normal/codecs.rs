@@ -26,7 +26,8 @@ pub struct Codec {
     pub reference_encode: fn([f64; 3]) -> u32,
     /// The exact direction a code stands for, in f64.
     pub reference_decode: fn(u32) -> [f64; 3],
-    /// The targets (mean°, max°) from its float64 reproduction, where it gives them.
+    /// Published targets (mean°, max°) from an independent float64 reproduction of the
+    /// algorithm, where one exists.
     pub target: Option<(f64, f64)>,
 }
 

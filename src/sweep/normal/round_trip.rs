@@ -96,7 +96,7 @@ pub fn round_trip(
 }
 
 /// The f64 reproduction of `codec`'s algorithm on the same inputs: reference encoder, exact
-/// decode, angle to the input. The row the targets come from.
+/// decode, angle to the input: the row the published targets are compared with.
 pub fn reference_error(codec: &Codec, inputs: &[[f32; 3]]) -> ErrorStats {
     let parts = par_fold(inputs.len(), |r| {
         let mut e = ErrorStats::default();
