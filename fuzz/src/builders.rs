@@ -16,18 +16,27 @@ pub const BUILDERS: &[Entry] = &[
                 // ones only for their own convention.
                 let u = p.depth_uniform().to_wgsl();
                 let k24 = [u[3].abs(), u[1]];
-                assert_eq!(u[3].is_sign_negative(), p.convention() == DepthConvention::Reversed);
+                assert_eq!(
+                    u[3].is_sign_negative(),
+                    p.convention() == DepthConvention::Reversed
+                );
                 for c in u.iter().take(3).chain(&k24) {
                     assert!(c.is_finite() && *c >= 0.0, "{p:?}: constant {c}");
                 }
                 match p.convention() {
                     DepthConvention::Standard => {
                         assert_eq!(p.depth24_consts().map(|k| k.to_wgsl()), Ok(k24));
-                        assert_eq!(p.depth_consts().map(|k| k.to_wgsl()), Ok([u[0], u[1], u[2]]));
+                        assert_eq!(
+                            p.depth_consts().map(|k| k.to_wgsl()),
+                            Ok([u[0], u[1], u[2]])
+                        );
                         assert!(p.reversed_depth_consts().is_err());
                     }
                     DepthConvention::Reversed => {
-                        assert_eq!(p.reversed_depth_consts().map(|k| k.to_wgsl()), Ok([u[0], u[2], u[1]]));
+                        assert_eq!(
+                            p.reversed_depth_consts().map(|k| k.to_wgsl()),
+                            Ok([u[0], u[2], u[1]])
+                        );
                         assert!(p.depth_consts().is_err() && p.depth24_consts().is_err());
                     }
                 }

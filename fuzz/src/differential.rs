@@ -128,4 +128,49 @@ pub const DIFFERENTIAL: &[Entry] = &[
             );
         },
     },
+    Entry {
+        name: "linear_depth::view_z_from_depth_uniform / _depth24_uniform vs exact (linear_depth::bounds::FLOAT_CONSTS_CORRECTLY_ROUNDED, DEPTH24_CONSTS_CORRECTLY_ROUNDED)",
+        check: |i| {
+            let (z, d) = (i.f32(), i.u32());
+            let Ok(p) = projection(i) else { return };
+            let (n, f, k) = (p.near(), p.far(), p.depth_uniform());
+            // A reversed 24-bit code stores the depth of the standard code 2^24 − 1 − d.
+            let max = prepass::depth24::DEPTH24_MAX;
+            let standard_code = match p.convention() {
+                DepthConvention::Standard => d.min(max),
+                DepthConvention::Reversed => max - d.min(max),
+            };
+            let got = ld::view_z_from_depth24_uniform(d, k);
+            let e = ld::exact::view_z_from_depth24(standard_code, n, f);
+            assert_distance(
+                got,
+                e,
+                false,
+                (
+                    ld::bounds::DEPTH24_CONSTS_CORRECTLY_ROUNDED,
+                    "linear_depth::bounds::DEPTH24_CONSTS_CORRECTLY_ROUNDED",
+                ),
+                format_args!("{d:#x} {p:?}: {got} vs {e}"),
+            );
+            let got = ld::view_z_from_depth_uniform(z, k);
+            if z.is_nan() {
+                assert_eq!(got, ld::SKY, "NaN depth gives the sky sentinel");
+                return;
+            }
+            let e = match p.convention() {
+                DepthConvention::Standard => ld::exact::view_z_from_depth(z, n, f),
+                DepthConvention::Reversed => ld::exact::view_z_from_reversed_depth(z, n, f),
+            };
+            assert_distance(
+                got,
+                e,
+                f.is_infinite() && z.abs() < f32::MIN_POSITIVE,
+                (
+                    ld::bounds::FLOAT_CONSTS_CORRECTLY_ROUNDED,
+                    "linear_depth::bounds::FLOAT_CONSTS_CORRECTLY_ROUNDED",
+                ),
+                format_args!("{z:?} {p:?}: {got} vs {e}"),
+            );
+        },
+    },
 ];
