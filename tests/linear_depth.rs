@@ -50,7 +50,13 @@ fn check(name: &str, near: f32, far: f32, s: &LinearStats) {
 
 #[test]
 fn depth24_every_code_on_the_stiff_grid() {
-    for case in stiff_grid() {
+    let grid = stiff_grid();
+    for (i, &case) in grid.iter().enumerate() {
+        common::progress(
+            "depth24_every_code_on_the_stiff_grid: stiff-grid cases",
+            i,
+            grid.len(),
+        );
         let (n, f) = (case.near, case.far);
         let twin = move |d: u32| ld::view_z_from_depth24(d, n, f);
         let (s, _) = codes_sweep(
@@ -84,7 +90,13 @@ fn depth24_every_code_on_the_stiff_grid() {
 #[test]
 fn standard_float_depths_on_the_stiff_grid() {
     let depths = float_depths(1 << 24);
-    for case in stiff_grid() {
+    let grid = stiff_grid();
+    for (i, &case) in grid.iter().enumerate() {
+        common::progress(
+            "standard_float_depths_on_the_stiff_grid: stiff-grid cases",
+            i,
+            grid.len(),
+        );
         let (n, f) = (case.near, case.far);
         let twin = move |z: f32| ld::view_z_from_depth(z, n, f);
         let (s, _) = float_sweep(
@@ -124,7 +136,13 @@ fn standard_float_depths_on_the_stiff_grid() {
 #[test]
 fn reversed_float_depths_on_the_stiff_grid() {
     let depths = float_depths(1 << 24);
-    for case in stiff_grid() {
+    let grid = stiff_grid();
+    for (i, &case) in grid.iter().enumerate() {
+        common::progress(
+            "reversed_float_depths_on_the_stiff_grid: stiff-grid cases",
+            i,
+            grid.len(),
+        );
         let (n, f) = (case.near, case.far);
         let twin = move |z: f32| ld::view_z_from_reversed_depth(z, n, f);
         let (s, _) = float_sweep(
@@ -164,7 +182,13 @@ fn reversed_float_depths_on_the_stiff_grid() {
 #[test]
 fn textbook_baseline_loses_precision_like_far_over_near() {
     let src = format!("{LINEAR_DEPTH}\n{BASELINES}");
-    for case in stiff_grid() {
+    let grid = stiff_grid();
+    for (i, &case) in grid.iter().enumerate() {
+        common::progress(
+            "textbook_baseline_loses_precision_like_far_over_near: stiff-grid cases",
+            i,
+            grid.len(),
+        );
         let ab = textbook_consts(case, Standard);
         let (s, _) = codes_sweep(
             gpu(),
@@ -360,7 +384,13 @@ fn the_depth_uniform_gives_the_per_convention_results_bit_for_bit() {
     ]);
     let n = |v: usize| v as u64;
     let bits = |o: &prepass::harness::Output| o.as_u32().to_vec();
-    for case in stiff_grid() {
+    let grid = stiff_grid();
+    for (i, &case) in grid.iter().enumerate() {
+        common::progress(
+            "the_depth_uniform_gives_the_per_convention_results_bit_for_bit: stiff-grid cases",
+            i,
+            grid.len(),
+        );
         for conv in [Standard, Reversed] {
             let p = case.projection(conv);
             let u = p.depth_uniform();

@@ -203,11 +203,15 @@ fn every_valid_combination_composes_validates_and_translates() {
     }
     let work: Vec<(&Vec<&str>, &Scene)> = by_roots.iter().collect();
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let (done, total) = (std::sync::atomic::AtomicUsize::new(0), work.len());
+    let done = &done;
     std::thread::scope(|scope| {
         for part in work.chunks(work.len().div_ceil(threads)) {
             let lib = &lib;
             scope.spawn(move || {
                 for (roots, s) in part {
+                    let k = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                    common::progress("distinct modules composed and translated", k, total);
                     let wgsl = lib.compose(roots.iter().copied()).unwrap();
                     // The default-feature composer (text alone) emits naga's text exactly.
                     assert_eq!(

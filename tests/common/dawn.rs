@@ -53,8 +53,25 @@ pub fn run(mut jobs: Vec<Job>) -> (String, Vec<Outcome>) {
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     let mut results: Vec<Option<(String, Vec<Outcome>)>> =
         (0..chunks.len()).map(|_| None).collect();
+    let total: usize = chunks.iter().map(Vec::len).sum();
+    let mut done = 0;
     let mut pending: Vec<(usize, Vec<Job>)> = chunks.into_iter().enumerate().rev().collect();
     while !pending.is_empty() {
+        // Progress on long runs (thousands of modules), straight to stderr: the test harness
+        // captures only the print macros.
+        if total > 4 * JOBS_PER_PROCESS
+            && done % (8 * JOBS_PER_PROCESS) < threads * JOBS_PER_PROCESS
+        {
+            use std::io::Write as _;
+            let line = format!("  … Dawn (Tint): {done}/{total} jobs\n");
+            let _ = std::io::stderr().write_all(line.as_bytes());
+        }
+        done += pending
+            .iter()
+            .rev()
+            .take(threads)
+            .map(|(_, c)| c.len())
+            .sum::<usize>();
         let batch: Vec<(usize, Vec<Job>)> = (0..threads).filter_map(|_| pending.pop()).collect();
         std::thread::scope(|scope| {
             let handles: Vec<_> = batch

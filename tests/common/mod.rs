@@ -276,3 +276,34 @@ pub fn corpus_args(words: &[usize]) -> Vec<Vec<u32>> {
     }
     columns
 }
+
+/// One progress line for long work (a sweep over the stiff grid, thousands of modules), so a
+/// person watching `bash .ci/test` sees what runs and how far it is. Written straight to the
+/// process's stderr — the test harness captures only the print macros — when a label is first
+/// seen, then at most every 10 s, and when `done` reaches `total`.
+#[allow(dead_code)]
+pub fn progress(label: &str, done: usize, total: usize) {
+    use std::collections::HashMap;
+    use std::io::Write as _;
+    use std::sync::Mutex;
+    use std::time::{Duration, Instant};
+    static SEEN: Mutex<Option<HashMap<String, (Instant, Instant)>>> = Mutex::new(None);
+    let now = Instant::now();
+    let mut seen = SEEN.lock().unwrap_or_else(|e| e.into_inner());
+    let (started, last) = *seen
+        .get_or_insert_with(HashMap::new)
+        .entry(label.to_string())
+        .or_insert((now, now - Duration::from_secs(60)));
+    if done < total && now - last < Duration::from_secs(10) {
+        return;
+    }
+    seen.as_mut()
+        .unwrap()
+        .insert(label.to_string(), (started, now));
+    let line = format!(
+        "  … {label}: {done}/{total} ({:.0} %, {:.0} s)\n",
+        100.0 * done as f64 / total.max(1) as f64,
+        (now - started).as_secs_f64()
+    );
+    let _ = std::io::stderr().write_all(line.as_bytes());
+}
