@@ -10,10 +10,11 @@ use prepass::harness::Arg;
 use prepass::precision::inputs::{ChannelError, all_codes_rgb8};
 use prepass::precision::metrics::Mismatches;
 use prepass::sweep::depth24::{
-    CODES, RECOVERY_CASES, hyperbolic_all, measure_hyperbolic, recover_all,
+    CODES, Hyperbolic, RECOVERY_CASES, hyperbolic_all, measure_hyperbolic, recover_all,
 };
 use prepass::wgsl::DEPTH24;
 use prepass::{assert_at_least, assert_within};
+use std::sync::OnceLock;
 
 const BASELINES: &str = include_str!("baselines/depth24.wgsl");
 
@@ -21,21 +22,54 @@ fn with_baselines() -> String {
     format!("{DEPTH24}\n{BASELINES}")
 }
 
+/// Each recovery sweep, run once per test binary: the assertion tests below and the published
+/// table ([`figures_are_published`]) read the same measurement. Per case: the shipped function's
+/// mismatches (the Rust twin checked on the same channels, inside) and the unrounded
+/// baseline's.
+struct RecoveryRow {
+    ours: Mismatches<u32>,
+    twin: Mismatches<u32>,
+    baseline: u64,
+}
+
+fn recovery(case: usize) -> &'static RecoveryRow {
+    static ROWS: [OnceLock<RecoveryRow>; RECOVERY_CASES.len()] =
+        [const { OnceLock::new() }; RECOVERY_CASES.len()];
+    ROWS[case].get_or_init(|| {
+        let (error, flip) = RECOVERY_CASES[case];
+        let r = recover_all(gpu(), DEPTH24, "depth24_from_rgb8", error, flip).unwrap();
+        let rgb = all_codes_rgb8(error, flip);
+        let twin = Mismatches::count(&r.codes, |i| depth24::depth24_from_rgb8(Vec3::from(rgb[i])));
+        let src = with_baselines();
+        let base = recover_all(
+            gpu(),
+            &src,
+            "baseline_depth24_from_rgb8_unrounded",
+            error,
+            flip,
+        )
+        .unwrap();
+        RecoveryRow {
+            ours: r.mismatches,
+            twin,
+            baseline: base.mismatches.count,
+        }
+    })
+}
+
 /// Recovery with per-channel rounding returns every code exactly under each channel error, and
 /// the Rust twin returns the same codes from the same channels.
 fn recovery_case(case: usize) {
     let (error, flip) = RECOVERY_CASES[case];
-    let r = recover_all(gpu(), DEPTH24, "depth24_from_rgb8", error, flip).unwrap();
+    let r = recovery(case);
     // Bound: 0 mismatches. Each channel is within 0.45/255 (or 3 ULP ≈ 1e-7) of byte/255, so
     // 255·c is within 0.45 + 2^-16 of the byte and round() cannot pick a neighbour.
     assert_eq!(
-        r.mismatches.count, 0,
+        r.ours.count, 0,
         "{error} (flip {flip}): first (code, got, want) = {:?}",
-        r.mismatches.first
+        r.ours.first
     );
-    let rgb = all_codes_rgb8(error, flip);
-    let twin = Mismatches::count(&r.codes, |i| depth24::depth24_from_rgb8(Vec3::from(rgb[i])));
-    assert_eq!(twin.count, 0, "Rust twin differs: {:?}", twin.first);
+    assert_eq!(r.twin.count, 0, "Rust twin differs: {:?}", r.twin.first);
 }
 
 #[test]
@@ -57,32 +91,40 @@ fn rgb8_recovery_045_over_255_up_and_down_all_codes() {
 
 #[test]
 fn unrounded_baseline_reproduces_the_talks_problem() {
-    let src = with_baselines();
-    let mut report = Vec::new();
-    for (error, flip) in RECOVERY_CASES {
-        let r = recover_all(
-            gpu(),
-            &src,
-            "baseline_depth24_from_rgb8_unrounded",
-            error,
-            flip,
-        )
-        .unwrap();
-        report.push((error, flip, r.mismatches.count));
+    for (case, (error, flip)) in RECOVERY_CASES.into_iter().enumerate() {
+        let m = recovery(case).baseline;
         if matches!(error, ChannelError::Offset(_)) {
             // ±0.45/255 on r alone moves the unrounded total by 0.45·65536 codes: nearly every
             // code must come back wrong. If this passes with few mismatches the sweep is broken.
             assert_at_least!(
-                r.mismatches.count,
+                m,
                 > CODES / 2,
                 "comment above: ±0.45/255 on r moves 0.45·65536 codes, nearly all wrong",
                 "{error}: mismatches"
             );
         }
+        eprintln!("unrounded baseline, channels {error} (flip {flip}): {m} of {CODES} codes wrong");
     }
-    for (e, f, m) in report {
-        eprintln!("unrounded baseline, channels {e} (flip {f}): {m} of {CODES} codes wrong");
-    }
+}
+
+/// Each hyperbolic-depth sweep over all 2^24 codes, run once per test binary (shipped function
+/// and baselines, on the adapter).
+fn hyperbolic(function: &str) -> &'static Hyperbolic {
+    static ROWS: OnceLock<Vec<(&'static str, OnceLock<Hyperbolic>)>> = OnceLock::new();
+    let rows = ROWS.get_or_init(|| {
+        [
+            "hyperbolic_depth_from_depth24",
+            "baseline_hyperbolic_divide",
+            "baseline_hyperbolic_reciprocal",
+        ]
+        .map(|f| (f, OnceLock::new()))
+        .into()
+    });
+    let (_, cell) = rows
+        .iter()
+        .find(|(f, _)| *f == function)
+        .expect("a measured function");
+    cell.get_or_init(|| hyperbolic_all(gpu(), &with_baselines(), function).unwrap())
 }
 
 #[test]
@@ -125,7 +167,7 @@ fn packed_paths_are_exact_and_match_the_twin_for_every_code() {
 
 #[test]
 fn hyperbolic_depth_is_correctly_rounded_for_every_code() {
-    let h = hyperbolic_all(gpu(), DEPTH24, "hyperbolic_depth_from_depth24").unwrap();
+    let h = hyperbolic("hyperbolic_depth_from_depth24");
     // Bound: correctly rounded (≤ 0.5 ULP). The integer construction has no rounding step, so
     // anything above 0.5 is a bug, not an accuracy allowance.
     assert_eq!(h.ulps.nan_count, 0);
@@ -156,12 +198,11 @@ fn hyperbolic_depth_is_correctly_rounded_for_every_code() {
 
 #[test]
 fn hyperbolic_baselines_are_measured() {
-    let src = with_baselines();
     for f in [
         "baseline_hyperbolic_divide",
         "baseline_hyperbolic_reciprocal",
     ] {
-        let h = hyperbolic_all(gpu(), &src, f).unwrap();
+        let h = hyperbolic(f);
         // WGSL allows `/` 2.5 ULP; the reciprocal form rounds twice (≤ 0.5 + 0.5·(1+2^-23) ULP
         // plus the constant's own 0.5 ULP relative error): both stay within 2.5 ULP, so a
         // conforming adapter cannot exceed this.
@@ -346,4 +387,68 @@ fn recovery_survives_emulation() {
             m.first
         );
     }
+}
+
+/// The 24-bit figures of `docs/figures.md` (block `depth24`), from the measurements the tests
+/// above assert (run once: [`recovery`], [`hyperbolic`]), plus hyperbolic depth on the worst
+/// conforming adapter (emulated, every policy of `Policy::WORST`), whose promise — correctly
+/// rounded everywhere — is asserted here.
+#[test]
+fn figures_are_published() {
+    use prepass::conforming::{Emulation, Policy, emulate};
+    use std::fmt::Write as _;
+    let mut s = common::adapter_line();
+    s.push_str("\n| channels | `depth24_from_rgb8`: wrong codes of 2^24 | the unrounded baseline: wrong codes |\n|---|---|---|\n");
+    for (case, (error, flip)) in RECOVERY_CASES.into_iter().enumerate() {
+        let r = recovery(case);
+        // The promise (README): every code recovered, on the adapter, whatever its driver.
+        assert_eq!(
+            r.ours.count, 0,
+            "depth24_from_rgb8 with channels off by {error} (flip {flip}): codes not recovered"
+        );
+        let _ = writeln!(
+            s,
+            "| {error}{} | {} | {} |",
+            if flip { " (signs flipped)" } else { "" },
+            r.ours.count,
+            r.baseline
+        );
+    }
+    s.push_str("\n| hyperbolic depth `d / (2^24 − 1)` | adapter | max ULP | codes not returned by the exact inverse |\n|---|---|---|---|\n");
+    for (name, src, f) in [
+        (
+            "`hyperbolic_depth_from_depth24`",
+            DEPTH24,
+            "hyperbolic_depth_from_depth24",
+        ),
+        (
+            "baseline `f32(d) / 16777215.0`",
+            BASELINES,
+            "baseline_hyperbolic_divide",
+        ),
+    ] {
+        let h = hyperbolic(f);
+        let _ = writeln!(
+            s,
+            "| {name} | this adapter | {:.3} | {} |",
+            h.ulps.max, h.exact_roundtrip_failures
+        );
+        let (mut max, mut fails) = (0.0f64, 0u64);
+        for policy in Policy::WORST {
+            let e = emulate(src, &Emulation::new(policy)).unwrap();
+            let h = hyperbolic_all(gpu(), &e.source, e.function_name(f).unwrap()).unwrap();
+            max = max.max(h.ulps.max);
+            fails = fails.max(h.exact_roundtrip_failures);
+        }
+        let _ = writeln!(s, "| {name} | worst emulated | {max:.3} | {fails} |");
+        if f == "hyperbolic_depth_from_depth24" {
+            // The promise: correctly rounded on every conforming adapter (≤ 0.5 ULP, every code
+            // returned by the exact inverse).
+            assert!(
+                max <= 0.5 && fails == 0,
+                "{name}: {max} ULP, {fails} codes not returned under emulation (correctly rounded: ≤ 0.5 ULP, 0)"
+            );
+        }
+    }
+    common::publish_measured("docs/figures.md", "depth24", &s);
 }

@@ -1,5 +1,6 @@
 //! The published figures: the README's generated tables and `docs/figures.md` (the linear-depth
-//! table is published by `tests/linear_depth.rs`, which measures it), computed here on
+//! table is published by `tests/linear_depth.rs` and the 24-bit one by `tests/depth24.rs`,
+//! which measure them for their assertions), computed here on
 //! the adapter and, under the conforming-adapter emulation, on the worst conforming adapter.
 //!
 //! `bash .ci/docs` writes them (`PREPASS_WRITE_DOCS=1`); otherwise every test here recomputes its
@@ -10,7 +11,7 @@
 mod common;
 
 use common::{adapter_line, gpu, publish_measured};
-use prepass::conforming::{Emulation, Policy};
+use prepass::conforming::Policy;
 use std::fmt::Write as _;
 
 #[test]
@@ -71,85 +72,6 @@ fn normal_encodings() {
     }
     publish_measured("README.md", "normal-encodings", &readme);
     publish_measured("docs/figures.md", "normal-encodings", &full);
-}
-
-#[test]
-fn depth24() {
-    use prepass::conforming::emulate;
-    use prepass::sweep::depth24::{RECOVERY_CASES, hyperbolic_all, recover_all};
-    let mut s = adapter_line();
-    s.push_str("\n| channels | `depth24_from_rgb8`: wrong codes of 2^24 | the unrounded baseline: wrong codes |\n|---|---|---|\n");
-    let baselines = include_str!("baselines/depth24.wgsl");
-    let both = format!("{}\n{baselines}", prepass::wgsl::DEPTH24);
-    for (error, flip) in RECOVERY_CASES {
-        let ours = recover_all(
-            gpu(),
-            prepass::wgsl::DEPTH24,
-            "depth24_from_rgb8",
-            error,
-            flip,
-        )
-        .unwrap();
-        let base = recover_all(
-            gpu(),
-            &both,
-            "baseline_depth24_from_rgb8_unrounded",
-            error,
-            flip,
-        )
-        .unwrap();
-        // The promise (README): every code recovered, on the adapter, whatever its driver.
-        assert_eq!(
-            ours.mismatches.count, 0,
-            "depth24_from_rgb8 with channels off by {error} (flip {flip}): codes not recovered"
-        );
-        let _ = writeln!(
-            s,
-            "| {error}{} | {} | {} |",
-            if flip { " (signs flipped)" } else { "" },
-            ours.mismatches.count,
-            base.mismatches.count
-        );
-    }
-    s.push_str("\n| hyperbolic depth `d / (2^24 − 1)` | adapter | max ULP | codes not returned by the exact inverse |\n|---|---|---|---|\n");
-    for (name, src, f) in [
-        (
-            "`hyperbolic_depth_from_depth24`",
-            prepass::wgsl::DEPTH24,
-            "hyperbolic_depth_from_depth24",
-        ),
-        (
-            "baseline `f32(d) / 16777215.0`",
-            baselines,
-            "baseline_hyperbolic_divide",
-        ),
-    ] {
-        let h = hyperbolic_all(gpu(), src, f).unwrap();
-        let _ = writeln!(
-            s,
-            "| {name} | this adapter | {:.3} | {} |",
-            h.ulps.max, h.exact_roundtrip_failures
-        );
-        let (mut max, mut fails) = (0.0f64, 0u64);
-        for policy in Policy::WORST {
-            let e = emulate(src, &Emulation::new(policy)).unwrap();
-            let h = hyperbolic_all(gpu(), &e.source, e.function_name(f).unwrap()).unwrap();
-            max = max.max(h.ulps.max);
-            fails = fails.max(h.exact_roundtrip_failures);
-        }
-        let _ = writeln!(s, "| {name} | worst emulated | {max:.3} | {fails} |");
-        if f == "hyperbolic_depth_from_depth24" {
-            // The promise: correctly rounded on every conforming adapter (≤ 0.5 ULP, every
-            // code returned by the exact inverse).
-            assert!(
-                h.ulps.max <= 0.5 && max <= 0.5 && h.exact_roundtrip_failures == 0 && fails == 0,
-                "{name}: {} / {max} ULP, {} / {fails} codes not returned (correctly rounded: ≤ 0.5 ULP, 0)",
-                h.ulps.max,
-                h.exact_roundtrip_failures
-            );
-        }
-    }
-    publish_measured("docs/figures.md", "depth24", &s);
 }
 
 /// The README's size of the example to copy (`examples/deferred_minimal`): lines of Rust and of
