@@ -43,10 +43,24 @@ impl<'g> EmulatedKernel<'g> {
 
     /// Run `n` elements: the results, and per element whether an operation of its evaluation
     /// left the spec's domain (its result is then not defined by the spec).
+    ///
+    /// The two kernels run on two threads: the first run of each compiles its pipeline, which on
+    /// a CPU adapter (lavapipe) costs far more than the dispatch, and the two compile at once.
     pub fn run(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<bool>), HarnessError> {
-        let out = self.values.run(args, n)?;
-        let flags = match &self.undefined {
-            Some(k) => k.run(args, n)?.as_u32().iter().map(|&f| f != 0).collect(),
+        let (out, flags) = std::thread::scope(|scope| {
+            let flags = self
+                .undefined
+                .as_ref()
+                .map(|k| scope.spawn(move || k.run(args, n)));
+            let out = self.values.run(args, n);
+            (
+                out,
+                flags.map(|h| h.join().expect("the flag kernel's thread panicked")),
+            )
+        });
+        let out = out?;
+        let flags = match flags {
+            Some(f) => f?.as_u32().iter().map(|&f| f != 0).collect(),
             None => vec![false; out.len()],
         };
         Ok((out, flags))

@@ -307,3 +307,11 @@ pub fn progress(label: &str, done: usize, total: usize) {
     );
     let _ = std::io::stderr().write_all(line.as_bytes());
 }
+
+/// Whether the full-strength run was asked for (`PREPASS_FULL=1 bash .ci/test`, CONTRIBUTING.md):
+/// the tests that sample where a sample proves the same bound (each says why) then run every
+/// case instead.
+#[allow(dead_code)]
+pub fn full_strength() -> bool {
+    std::env::var_os("PREPASS_FULL").is_some_and(|v| v != "0")
+}
