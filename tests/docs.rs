@@ -1,78 +1,15 @@
-//! The published figures: the README's generated tables and `docs/figures.md` (the linear-depth
-//! table is published by `tests/linear_depth.rs` and the 24-bit one by `tests/depth24.rs`,
-//! which measure them for their assertions), computed here on
-//! the adapter and, under the conforming-adapter emulation, on the worst conforming adapter.
+//! Published text that no measuring suite computes: the README's size of the example to copy.
+//! Every measured figure is published by the suite that measures it for its assertions, so it
+//! is measured once: linear depth by `tests/linear_depth.rs`, 24-bit depth by
+//! `tests/depth24.rs`, the normal encodings by `tests/conforming.rs`, the bad-input table by
+//! `tests/bad_input.rs`, the implementations table by `tests/implementations.rs`, the frame by
+//! `tests/light_prepass.rs`, the peers by `tests/errplot_peers.rs`.
 //!
-//! `bash .ci/docs` writes them (`PREPASS_WRITE_DOCS=1`); otherwise every test here recomputes its
-//! block and FAILS when the committed text differs, naming that command. Nothing in those blocks
-//! is typed by hand. The figures are lavapipe's (CI's adapter): on another adapter the
-//! last digits may differ, and the failure says so.
+//! `bash .ci/docs` writes every block (`PREPASS_WRITE_DOCS=1`); otherwise each test recomputes
+//! its block and FAILS when the committed text differs, naming that command. Nothing in those
+//! blocks is typed by hand.
 
 mod common;
-
-use common::{adapter_line, gpu, publish_measured};
-use prepass::conforming::Policy;
-use std::fmt::Write as _;
-
-#[test]
-fn normal_encodings() {
-    use prepass::sweep::conforming::normal_figures;
-    use prepass::sweep::normal::{adversarial_directions, fibonacci_directions};
-    // One sample for the adapter and the emulation, so the columns compare.
-    let mut inputs = fibonacci_directions(1 << 18);
-    inputs.extend(adversarial_directions());
-    let rows = normal_figures(
-        gpu(),
-        &inputs,
-        &[Policy::Upper, Policy::Lower, Policy::Seeded(1)],
-    )
-    .unwrap();
-    let mut readme = String::from(
-        "| encoding | bits | target format | max° | mean° | max° on the worst conforming adapter | SPIR-V encode / decode |\n|---|---|---|---|---|---|---|\n",
-    );
-    let mut full = adapter_line();
-    let _ = writeln!(
-        full,
-        "\n| encoding | bits | max° | mean° | emulated max° (upper / lower / seeded) | emulated mean° | codes ≠ Rust twin (emulated, of {}) | max \\|len − 1\\| of emulated decodes |\n|---|---|---|---|---|---|---|---|",
-        inputs.len()
-    );
-    for r in &rows {
-        let worst = r.emulated_max.iter().copied().fold(0.0, f64::max);
-        let _ = writeln!(
-            readme,
-            "| {} | {} | {} | {:.4} | {:.4} | {worst:.4} | {} / {} |",
-            r.name,
-            r.bits,
-            r.target,
-            r.adapter.max,
-            r.adapter.mean(),
-            r.spirv.0,
-            r.spirv.1
-        );
-        let _ = writeln!(
-            full,
-            "| {} | {} | {:.6} | {:.6} | {:.6} / {:.6} / {:.6} | {:.6} | {} | {:.3e} |",
-            r.name,
-            r.bits,
-            r.adapter.max,
-            r.adapter.mean(),
-            r.emulated_max[0],
-            r.emulated_max[1],
-            r.emulated_max[2],
-            r.emulated_mean,
-            r.twin_changed,
-            r.max_len_error
-        );
-    }
-    // Measured blocks: compared as text on the adapter they were published from; elsewhere the
-    // differences are printed and the encodings' bounds are what must hold — asserted on every
-    // adapter by tests/normal_*.rs (the adapter) and tests/conforming.rs (the emulation).
-    for r in &rows {
-        assert_eq!(r.adapter.nan_count, 0, "{}: NaN round trips", r.name);
-    }
-    publish_measured("README.md", "normal-encodings", &readme);
-    publish_measured("docs/figures.md", "normal-encodings", &full);
-}
 
 /// The README's size of the example to copy (`examples/deferred_minimal`): lines of Rust and of
 /// WGSL, counted from the files (`bash .ci/test` runs the example itself and checks its image).

@@ -182,12 +182,38 @@ pub struct NormalFigures {
     pub spirv: (usize, usize),
 }
 
+/// 65,536 codes spread over a `bits`-bit code space (every code of a 16-bit one): 65,521 is
+/// odd, so `i·65,521 mod 2^16` is every 16-bit code once.
+pub fn spread_codes(bits: u32) -> Vec<u32> {
+    (0..1u64 << 16)
+        .map(|i| ((i * 65_521) % (1u64 << bits)) as u32)
+        .collect()
+}
+
 /// [`NormalFigures`] of every codec over `inputs`, under each of `policies`; each decoder also
-/// over 65,536 codes spread over its code space (every code of a 16-bit one).
+/// over [`spread_codes`].
 pub fn normal_figures(
     gpu: &Gpu,
     inputs: &[[f32; 3]],
     policies: &[crate::conforming::Policy],
+) -> Result<Vec<NormalFigures>, HarnessError> {
+    normal_figures_with(
+        gpu,
+        inputs,
+        policies,
+        &|c| spread_codes(c.bits),
+        &mut |_, _, _| {},
+    )
+}
+
+/// [`normal_figures`] with the decoder's codes chosen per codec, and every emulated sweep handed
+/// to `inspect` as it is measured (a suite asserts on the same measurement it publishes).
+pub fn normal_figures_with(
+    gpu: &Gpu,
+    inputs: &[[f32; 3]],
+    policies: &[crate::conforming::Policy],
+    codes_for: &dyn Fn(&Codec) -> Vec<u32>,
+    inspect: &mut dyn FnMut(&Codec, crate::conforming::Policy, &EmulatedCodec),
 ) -> Result<Vec<NormalFigures>, HarnessError> {
     use crate::scene::{NormalChoice, NormalEncoding, Scene};
     let mut rows = Vec::new();
@@ -197,10 +223,7 @@ pub fn normal_figures(
             if hemisphere { rt.error_upper } else { rt.error }
         };
         let adapter = pick(&round_trip(gpu, c, inputs)?);
-        // 65,521 is odd: i·65,521 mod 2^16 is every 16-bit code once.
-        let codes: Vec<u32> = (0..1u64 << 16)
-            .map(|i| ((i * 65_521) % (1u64 << c.bits)) as u32)
-            .collect();
+        let codes = codes_for(c);
         let mut row = NormalFigures {
             name: c.name,
             bits: c.bits,
@@ -214,6 +237,7 @@ pub fn normal_figures(
         };
         for &policy in policies {
             let e = emulated_codec_sweep(gpu, c, &Emulation::new(policy), inputs, &codes)?;
+            inspect(c, policy, &e);
             let s = pick(&e.round_trip);
             row.emulated_max.push(s.max);
             row.emulated_mean = row.emulated_mean.max(s.mean());
