@@ -107,24 +107,23 @@ fn unrounded_baseline_reproduces_the_talks_problem() {
     }
 }
 
+/// The functions of [`hyperbolic`]: the shipped one and the two baselines.
+const HYPERBOLIC: [&str; 3] = [
+    "hyperbolic_depth_from_depth24",
+    "baseline_hyperbolic_divide",
+    "baseline_hyperbolic_reciprocal",
+];
+
 /// Each hyperbolic-depth sweep over all 2^24 codes, run once per test binary (shipped function
 /// and baselines, on the adapter).
 fn hyperbolic(function: &str) -> &'static Hyperbolic {
-    static ROWS: OnceLock<Vec<(&'static str, OnceLock<Hyperbolic>)>> = OnceLock::new();
-    let rows = ROWS.get_or_init(|| {
-        [
-            "hyperbolic_depth_from_depth24",
-            "baseline_hyperbolic_divide",
-            "baseline_hyperbolic_reciprocal",
-        ]
-        .map(|f| (f, OnceLock::new()))
-        .into()
-    });
-    let (_, cell) = rows
+    static ROWS: [OnceLock<Hyperbolic>; HYPERBOLIC.len()] =
+        [const { OnceLock::new() }; HYPERBOLIC.len()];
+    let k = HYPERBOLIC
         .iter()
-        .find(|(f, _)| *f == function)
+        .position(|f| *f == function)
         .expect("a measured function");
-    cell.get_or_init(|| hyperbolic_all(gpu(), &with_baselines(), function).unwrap())
+    ROWS[k].get_or_init(|| hyperbolic_all(gpu(), &with_baselines(), function).unwrap())
 }
 
 #[test]

@@ -394,40 +394,40 @@ fn the_depth_uniform_gives_the_per_convention_results_bit_for_bit() {
         for conv in [Standard, Reversed] {
             let p = case.projection(conv);
             let u = p.depth_uniform();
-            let k = [Arg::splat_vec(&u.to_wgsl())];
+            let k = Arg::splat_vec(&u.to_wgsl());
             // Float depth: the uniform against the per-convention constants.
             let via_uniform = run_kernel(
                 LINEAR_DEPTH,
                 "view_z_from_depth_uniform",
-                &[Arg::column(&depths), k[0]],
+                &[Arg::column(&depths), k],
                 n(depths.len()),
             );
-            let (per_conv, twin): (_, Box<dyn Fn(f32) -> f32>) = match conv {
+            let (function, kc, twin): (_, Vec<f32>, Box<dyn Fn(f32) -> f32>) = match conv {
                 Standard => {
                     let kc = p.depth_consts().unwrap();
+                    let twin = move |z| ld::view_z_from_depth_consts(z, kc);
                     (
-                        run_kernel(
-                            LINEAR_DEPTH,
-                            "view_z_from_depth_consts",
-                            &[Arg::column(&depths), Arg::splat_vec(&kc.to_wgsl())],
-                            n(depths.len()),
-                        ),
-                        Box::new(move |z| ld::view_z_from_depth_consts(z, kc)),
+                        "view_z_from_depth_consts",
+                        kc.to_wgsl().into(),
+                        Box::new(twin),
                     )
                 }
                 Reversed => {
                     let kc = p.reversed_depth_consts().unwrap();
+                    let twin = move |z| ld::view_z_from_reversed_depth_consts(z, kc);
                     (
-                        run_kernel(
-                            LINEAR_DEPTH,
-                            "view_z_from_reversed_depth_consts",
-                            &[Arg::column(&depths), Arg::splat_vec(&kc.to_wgsl())],
-                            n(depths.len()),
-                        ),
-                        Box::new(move |z| ld::view_z_from_reversed_depth_consts(z, kc)),
+                        "view_z_from_reversed_depth_consts",
+                        kc.to_wgsl().into(),
+                        Box::new(twin),
                     )
                 }
             };
+            let per_conv = run_kernel(
+                LINEAR_DEPTH,
+                function,
+                &[Arg::column(&depths), Arg::splat_vec(&kc)],
+                n(depths.len()),
+            );
             assert_eq!(
                 bits(&via_uniform),
                 bits(&per_conv),
@@ -452,7 +452,7 @@ fn the_depth_uniform_gives_the_per_convention_results_bit_for_bit() {
             let via_uniform = run_kernel(
                 LINEAR_DEPTH,
                 "view_z_from_depth24_uniform",
-                &[Arg::column(&codes), k[0]],
+                &[Arg::column(&codes), k],
                 n(codes.len()),
             );
             let per_conv = run_kernel(

@@ -9,7 +9,7 @@
 //! are unique and prefixed, so a match is a use).
 
 use crate::wgsl::{FILES, WgslFile};
-use std::collections::BTreeSet;
+use std::collections::{BTreeSet, HashMap};
 
 /// One top-level item of a shipped file, cut from its text.
 #[derive(Clone, Debug)]
@@ -117,7 +117,12 @@ pub(crate) fn items_of(file: &WgslFile) -> Vec<TextItem> {
 /// names a root no shipped file defines.
 pub(crate) fn compose<'a>(roots: impl IntoIterator<Item = &'a str>) -> Result<String, String> {
     let items: Vec<TextItem> = FILES.iter().flat_map(items_of).collect();
-    let index = |n: &str| items.iter().position(|i| i.name == n);
+    let by_name: HashMap<&str, usize> = items
+        .iter()
+        .enumerate()
+        .map(|(k, i)| (i.name.as_str(), k))
+        .collect();
+    let index = |n: &str| by_name.get(n).copied();
     let mut keep = BTreeSet::new();
     let mut stack = Vec::new();
     for r in roots {

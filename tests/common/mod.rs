@@ -283,23 +283,22 @@ pub fn corpus_args(words: &[usize]) -> Vec<Vec<u32>> {
 /// seen, then at most every 10 s, and when `done` reaches `total`.
 #[allow(dead_code)]
 pub fn progress(label: &str, done: usize, total: usize) {
-    use std::collections::HashMap;
+    use std::collections::BTreeMap;
     use std::io::Write as _;
     use std::sync::Mutex;
     use std::time::{Duration, Instant};
-    static SEEN: Mutex<Option<HashMap<String, (Instant, Instant)>>> = Mutex::new(None);
+    // Per label: when it was first seen, and when a line was last written.
+    static SEEN: Mutex<BTreeMap<String, (Instant, Instant)>> = Mutex::new(BTreeMap::new());
     let now = Instant::now();
     let mut seen = SEEN.lock().unwrap_or_else(|e| e.into_inner());
-    let (started, last) = *seen
-        .get_or_insert_with(HashMap::new)
+    let entry = seen
         .entry(label.to_string())
         .or_insert((now, now - Duration::from_secs(60)));
-    if done < total && now - last < Duration::from_secs(10) {
+    if done < total && now - entry.1 < Duration::from_secs(10) {
         return;
     }
-    seen.as_mut()
-        .unwrap()
-        .insert(label.to_string(), (started, now));
+    entry.1 = now;
+    let started = entry.0;
     let line = format!(
         "  … {label}: {done}/{total} ({:.0} %, {:.0} s)\n",
         100.0 * done as f64 / total.max(1) as f64,
