@@ -176,4 +176,34 @@ pub mod bounds {
     /// On every conforming adapter, each product rounded to either neighbour (`2u`): `4u`, plus
     /// `2^-42` for the second-order term.
     pub const XY_CONFORMING: f64 = 4.0 * U + 1.0 / 4_398_046_511_104.0;
+
+    /// The relative error of one rounding: `u = 2^-24` where every operation rounds to nearest,
+    /// `2^-23` on every conforming adapter (WGSL lets `+ − ×` round to either neighbour).
+    pub const fn unit(conforming: bool) -> f64 {
+        if conforming { 2.0 * U } else { U }
+    }
+
+    /// `γn = n·u / (1 − n·u)`: the relative error of a chain of `n` roundings (Higham, *Accuracy
+    /// and Stability of Numerical Algorithms*, §3.1).
+    pub fn gamma(n: f64, u: f64) -> f64 {
+        n * u / (1.0 - n * u)
+    }
+
+    /// `camera_relative_position(world_ray(r, m), vz)`, each component `c`, absolute error: the
+    /// matrix × vector lane is a 3-term dot product (3 products, 2 sums, in any order, fused or
+    /// not: at most 3 roundings on any path), within `γ3·Σj |m_cj·r_j|`, and `· vz` rounds once
+    /// more: `γ4·scale` with `scale = vz·Σj |m_cj·r_j|`.
+    pub fn camera_relative_abs(scale: f64, conforming: bool) -> f64 {
+        gamma(4.0, unit(conforming)) * scale
+    }
+
+    /// `world_position(world_ray(r, m), vz, cam)`, each component, absolute error: the offset's
+    /// error (`γ5·scale` covers it with the addition fused into the last product), plus the
+    /// addition's own rounding of the result, at most `u·(|w| + γ5·scale)` for the exact
+    /// component `w`.
+    pub fn world_abs(scale: f64, exact_abs: f64, conforming: bool) -> f64 {
+        let u = unit(conforming);
+        let offset = gamma(5.0, u) * scale;
+        offset + u * (exact_abs + offset)
+    }
 }

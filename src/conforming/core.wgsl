@@ -23,6 +23,7 @@ const PREPASS_CF_FLUSH: u32 = 64u;
 const PREPASS_CF_FUSION: u32 = 128u;
 const PREPASS_CF_REASSOCIATION: u32 = 256u;
 const PREPASS_CF_INHERITED: u32 = 512u;
+const PREPASS_CF_CONVERSION: u32 = 1024u;
 
 // Mark the current evaluation as outside the spec's domain (indeterminate result).
 fn prepass_cf_undefined_if(c: bool) {
@@ -46,11 +47,28 @@ fn prepass_cf_rand(site: u32, x: f32, y: f32) -> u32 {
     return prepass_cf_hash(PREPASS_CF_SEED ^ prepass_cf_hash(site ^ h));
 }
 
+// The direction table of the searched policy (PREPASS_CF_POLICY 4): one bit per slot, 1 = the
+// upper end (or larger form), 0 = the lower; a site reads slot hash(site) % 256. The table
+// wrappers the rewrite adds set it from their last two arguments, so one compiled module
+// serves every table.
+// Slots read in this evaluation, for the search to enumerate only those.
+var<private> prepass_cf_dirs: array<vec4<u32>, 2>;
+var<private> prepass_cf_touched: array<vec4<u32>, 2>;
+
+fn prepass_cf_table_dir(site: u32) -> i32 {
+    let slot = prepass_cf_hash(site) & 255u;
+    let word = (slot >> 5u) & 3u;
+    prepass_cf_touched[slot >> 7u][word] = prepass_cf_touched[slot >> 7u][word] | (1u << (slot & 31u));
+    let bit = (prepass_cf_dirs[slot >> 7u][word] >> (slot & 31u)) & 1u;
+    return select(-1, 1, bit == 1u);
+}
+
 fn prepass_cf_on(freedom: u32) -> bool {
     return PREPASS_CF_POLICY != 0u && (PREPASS_CF_FREEDOMS & freedom) != 0u;
 }
 
-// Direction of a push inside an interval: +1 (upper end), -1 (lower end), or seeded -1/0/+1.
+// Direction of a push inside an interval: +1 (upper end), -1 (lower end), seeded -1/0/+1, or
+// the searched table's.
 fn prepass_cf_dir(freedom: u32, site: u32, x: f32, y: f32) -> i32 {
     if (!prepass_cf_on(freedom)) {
         return 0;
@@ -60,6 +78,9 @@ fn prepass_cf_dir(freedom: u32, site: u32, x: f32, y: f32) -> i32 {
     }
     if (PREPASS_CF_POLICY == 2u) {
         return -1;
+    }
+    if (PREPASS_CF_POLICY == 4u) {
+        return prepass_cf_table_dir(site);
     }
     return i32(prepass_cf_rand(site, x, y) % 3u) - 1;
 }
@@ -74,6 +95,9 @@ fn prepass_cf_pick(freedom: u32, site: u32, a: f32, b: f32) -> f32 {
     }
     if (PREPASS_CF_POLICY == 2u) {
         return min(a, b);
+    }
+    if (PREPASS_CF_POLICY == 4u) {
+        return select(min(a, b), max(a, b), prepass_cf_table_dir(site ^ 0x5bd1e995u) > 0);
     }
     return select(a, b, (prepass_cf_rand(site ^ 0x5bd1e995u, a, b) & 1u) == 1u);
 }
@@ -632,9 +656,177 @@ fn prepass_cf_pack2x16snorm(site: u32, v: vec2<f32>) -> u32 {
     return r;
 }
 
-// pack2x16float: indeterminate when a lane leaves +-65504 (the rounding of in-range lanes to
-// either neighbouring f16 is not emulated).
+// One of the two ends lo <= hi of a choice between neighbours: the upper policy takes hi, the
+// lower lo, a seeded one either or the host's own result.
+fn prepass_cf_choose(freedom: u32, site: u32, host: f32, lo: f32, hi: f32) -> f32 {
+    let dir = prepass_cf_dir(freedom, site, lo, hi);
+    if (dir > 0) {
+        return hi;
+    }
+    if (dir < 0) {
+        return lo;
+    }
+    return host;
+}
+
+// The f16 value of an f16-subnormal x flushed to zero (keeping its sign) or kept: pack and
+// unpack intermediates may be flushed.
+fn prepass_cf_ftz16(site: u32, x: f32) -> f32 {
+    if (x == 0.0 || abs(x) >= bitcast<f32>(0x38800000u)) { // 2^-14, the smallest normal f16
+        return x;
+    }
+    return prepass_cf_pick(PREPASS_CF_FLUSH, site, x, bitcast<f32>(bitcast<u32>(x) & 0x80000000u));
+}
+
+// One lane of pack2x16float, in range: either neighbouring f16 of x (the host's code is one of
+// them; the other is one f16 step away, toward x), then flushed or not if f16-subnormal. The
+// chosen value is an f16, so the final conversion is exact on any adapter.
+fn prepass_cf_f16_lane(site: u32, x0: f32) -> u32 {
+    let x = prepass_cf_ftz(site + 1u, x0);
+    let h = pack2x16float(vec2<f32>(x, 0.0)) & 0xffffu;
+    let vh = unpack2x16float(h).x;
+    var lo = vh;
+    var hi = vh;
+    if (vh != x) {
+        let toward = select(h - 1u, h + 1u, abs(x) > abs(vh));
+        let vo = unpack2x16float(toward & 0xffffu).x;
+        lo = min(vh, vo);
+        hi = max(vh, vo);
+    }
+    let c = prepass_cf_ftz16(site + 3u, prepass_cf_choose(PREPASS_CF_PACK, site, vh, lo, hi));
+    return pack2x16float(vec2<f32>(c, 0.0)) & 0xffffu;
+}
+
+// pack2x16float: either neighbouring f16 per lane, f16 subnormals flushed or not; indeterminate
+// when a lane leaves +-65504.
 fn prepass_cf_pack2x16float(site: u32, v: vec2<f32>) -> u32 {
     prepass_cf_undefined_if(!(abs(v.x) <= 65504.0 && abs(v.y) <= 65504.0));
-    return pack2x16float(v);
+    if (!prepass_cf_on(PREPASS_CF_PACK | PREPASS_CF_FLUSH)) {
+        return pack2x16float(v);
+    }
+    return prepass_cf_f16_lane(site, v.x) | (prepass_cf_f16_lane(site + 8u, v.y) << 16u);
+}
+
+// unpack2x16float: exact, but an f16-subnormal lane may be flushed.
+fn prepass_cf_unpack2x16float(site: u32, p: u32) -> vec2<f32> {
+    let v = unpack2x16float(p);
+    if (!prepass_cf_on(PREPASS_CF_FLUSH)) {
+        return v;
+    }
+    return vec2<f32>(prepass_cf_ftz16(site, v.x), prepass_cf_ftz16(site + 8u, v.y));
+}
+
+// The f32 neighbours (down, up) of an unsigned integer: equal where x is exact (below 2^24 or
+// with few enough significant bits). Both are exact conversions of integers with at most 24
+// significant bits (the up one may be 2^32).
+fn prepass_cf_u32_neighbours(x: u32) -> vec2<f32> {
+    let lz = countLeadingZeros(x);
+    if (lz >= 8u) {
+        let f = f32(x);
+        return vec2<f32>(f, f);
+    }
+    let shift = 8u - lz;
+    let down = (x >> shift) << shift;
+    let lo = f32(down);
+    if (down == x) {
+        return vec2<f32>(lo, lo);
+    }
+    return vec2<f32>(lo, lo + f32(1u << shift));
+}
+
+// f32(u32): exact where representable, otherwise either neighbour (WGSL "Floating Point
+// Conversion").
+fn prepass_cf_f32_from_u32(site: u32, x: u32) -> f32 {
+    if (!prepass_cf_on(PREPASS_CF_CONVERSION)) {
+        return f32(x);
+    }
+    let n = prepass_cf_u32_neighbours(x);
+    return prepass_cf_choose(PREPASS_CF_CONVERSION, site, f32(x), n.x, n.y);
+}
+
+// f32(i32), the same on the magnitude (|i32::MIN| = 2^31 is exact).
+fn prepass_cf_f32_from_i32(site: u32, x: i32) -> f32 {
+    if (!prepass_cf_on(PREPASS_CF_CONVERSION)) {
+        return f32(x);
+    }
+    let neg = x < 0;
+    let n = prepass_cf_u32_neighbours(select(bitcast<u32>(x), 0u - bitcast<u32>(x), neg));
+    if (neg) {
+        return prepass_cf_choose(PREPASS_CF_CONVERSION, site, f32(x), -n.y, -n.x);
+    }
+    return prepass_cf_choose(PREPASS_CF_CONVERSION, site, f32(x), n.x, n.y);
+}
+
+// The exactly rounded operations of the accuracy table whose inputs and outputs may be flushed
+// (a flushed negative subnormal floors to -0 instead of -1, say).
+fn prepass_cf_floor(site: u32, x: f32) -> f32 {
+    return prepass_cf_ftz(site + 3u, floor(prepass_cf_ftz(site + 1u, x)));
+}
+
+fn prepass_cf_ceil(site: u32, x: f32) -> f32 {
+    return prepass_cf_ftz(site + 3u, ceil(prepass_cf_ftz(site + 1u, x)));
+}
+
+fn prepass_cf_trunc(site: u32, x: f32) -> f32 {
+    return prepass_cf_ftz(site + 3u, trunc(prepass_cf_ftz(site + 1u, x)));
+}
+
+fn prepass_cf_round_even(site: u32, x: f32) -> f32 {
+    return prepass_cf_ftz(site + 3u, round(prepass_cf_ftz(site + 1u, x)));
+}
+
+fn prepass_cf_abs(site: u32, x: f32) -> f32 {
+    return prepass_cf_ftz(site + 3u, abs(prepass_cf_ftz(site + 1u, x)));
+}
+
+fn prepass_cf_sign(site: u32, x: f32) -> f32 {
+    return sign(prepass_cf_ftz(site + 1u, x));
+}
+
+fn prepass_cf_saturate(site: u32, x: f32) -> f32 {
+    return prepass_cf_ftz(site + 3u, saturate(prepass_cf_ftz(site + 1u, x)));
+}
+
+fn prepass_cf_min(site: u32, a: f32, b: f32) -> f32 {
+    return prepass_cf_ftz(site + 3u, min(prepass_cf_ftz(site + 1u, a), prepass_cf_ftz(site + 2u, b)));
+}
+
+fn prepass_cf_max(site: u32, a: f32, b: f32) -> f32 {
+    return prepass_cf_ftz(site + 3u, max(prepass_cf_ftz(site + 1u, a), prepass_cf_ftz(site + 2u, b)));
+}
+
+fn prepass_cf_step(site: u32, edge: f32, x: f32) -> f32 {
+    return step(prepass_cf_ftz(site + 1u, edge), prepass_cf_ftz(site + 2u, x));
+}
+
+fn prepass_cf_clamp(site: u32, x: f32, lo: f32, hi: f32) -> f32 {
+    let a = prepass_cf_ftz(site + 1u, x);
+    let l = prepass_cf_ftz(site + 2u, lo);
+    let h = prepass_cf_ftz(site + 4u, hi);
+    return prepass_cf_ftz(site + 3u, clamp(a, l, h));
+}
+
+// Comparisons are exact, but their operands may be flushed.
+fn prepass_cf_lt(site: u32, a: f32, b: f32) -> bool {
+    return prepass_cf_ftz(site + 1u, a) < prepass_cf_ftz(site + 2u, b);
+}
+
+fn prepass_cf_le(site: u32, a: f32, b: f32) -> bool {
+    return prepass_cf_ftz(site + 1u, a) <= prepass_cf_ftz(site + 2u, b);
+}
+
+fn prepass_cf_gt(site: u32, a: f32, b: f32) -> bool {
+    return prepass_cf_ftz(site + 1u, a) > prepass_cf_ftz(site + 2u, b);
+}
+
+fn prepass_cf_ge(site: u32, a: f32, b: f32) -> bool {
+    return prepass_cf_ftz(site + 1u, a) >= prepass_cf_ftz(site + 2u, b);
+}
+
+fn prepass_cf_eq(site: u32, a: f32, b: f32) -> bool {
+    return prepass_cf_ftz(site + 1u, a) == prepass_cf_ftz(site + 2u, b);
+}
+
+fn prepass_cf_ne(site: u32, a: f32, b: f32) -> bool {
+    return prepass_cf_ftz(site + 1u, a) != prepass_cf_ftz(site + 2u, b);
 }

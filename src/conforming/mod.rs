@@ -4,9 +4,12 @@
 //! WGSL pins few f32 results. `+ − ×` may round to either neighbour; `/` may be 2.5 ULP off,
 //! `inverseSqrt` 2 ULP, `exp`/`exp2` `3 + 2|x|` ULP, `log`/`log2` 3 ULP (absolute 2^-21 on
 //! [0.5, 2]), the `unpack*norm` builtins 3 ULP; `sqrt`, `length`, `normalize`, `distance`, `dot`,
-//! `pow`, `fma`, `mix`, `fract`, `cross` and `reflect` inherit the accuracy of their defining
-//! expressions; `pack*norm` may store either integer at a .5 tie; subnormal inputs and outputs may
-//! be flushed; `a·b + c` may be fused; and an implementation may reassociate,
+//! `pow`, `fma`, `mix`, `fract`, `cross`, `reflect` and matrix × vector inherit the accuracy of
+//! their defining expressions; `pack*norm` may store either integer at a .5 tie; `pack2x16float`
+//! may round each lane to either neighbouring f16; `f32` of an integer no f32 holds may be either
+//! neighbour; subnormal inputs and outputs may be flushed (of every operation in the accuracy
+//! table, comparisons, `min`, `max`, `clamp`, `floor` and the rest included, and of f16 pack and
+//! unpack intermediates); `a·b + c` may be fused; and an implementation may reassociate,
 //! `(a+b)+c ↔ a+(b+c)`, `(a−b)+c ↔ (a+c)−b`, `(a·b)/c ↔ (a/c)·b` (WGSL spec, "Floating Point
 //! Evaluation"). A correctly rounded adapter such as lavapipe uses none of that freedom, so a
 //! figure measured there holds on one adapter.
@@ -21,7 +24,7 @@
 //! let src = "fn to_unit(d: u32) -> f32 { return f32(d) / 16777215.0; }";
 //! let worst = emulate(src, &Emulation::new(Policy::Upper))?;
 //! assert!(worst.source.contains("fn to_unit("));
-//! assert_eq!(worst.sites, 1); // the one division
+//! assert_eq!(worst.sites, 2); // the conversion f32(d) (exact below 2^24) and the division
 //! # Ok::<(), prepass::conforming::EmulateError>(())
 //! ```
 //!
@@ -35,8 +38,12 @@
 //!   operation's site and its operands' bits — among the lower end, the host's result and the
 //!   upper end (both ends included), and between the forms.
 //!
+//! - [`Policy::Searched`]: each site at the end a direction table says, the table passed with
+//!   every element; [`search`] climbs from the greedy tables to the worst one it finds.
+//!
 //! The fixed policies are greedy — each operation at its own extreme — which is not always the
-//! composite's extreme; the seeded policy explores mixtures. Neither is a proof: the
+//! composite's extreme (errors of opposite sign cancel); the seeded policy explores mixtures,
+//! and the search looks for the worst mixture per input. Neither is a proof: the
 //! everywhere-bounds in [`crate::linear_depth`] and the other modules are derived by hand from the
 //! accuracy table, and the emulation checks that the functions stay inside them.
 //!
@@ -56,12 +63,20 @@
 //! Dekker's split is skipped where it could overflow or underflow (operands beyond 2^±60,
 //! products below 2^-100): there the host's rounding, one allowed neighbour, stands.
 //!
+//! `m * v` and `v * m` are rewritten as one inherited `dot` per result lane (a row of `m`, or
+//! a column, with `v`), so every product and sum of them has the freedoms of `dot`.
+//!
 //! # Not emulated
 //! Left at the host's accuracy, and listed in [`Emulated::uncovered`] when a module uses them:
 //! trigonometric and hyperbolic functions, `smoothstep`, `refract`, `faceForward`, `%` on f32,
-//! `quantizeToF16`, matrix arithmetic, and the rounding of in-range `pack2x16float` lanes to
-//! either neighbouring f16 (its out-of-range lanes are flagged). `sqrt(±0)` returns 0: the
-//! inherited interval `1/inverseSqrt(0)` is unbounded, and every implementation known returns 0.
+//! `quantizeToF16`, `ldexp`, `modf`, `frexp`, `determinant`, `inverse`, matrix arithmetic other
+//! than matrix × vector, and conversion to f16 — any f32 operation the pass does not rewrite is
+//! listed, under naga's name for it, except the exact ones (negation, `select`, `transpose`,
+//! bitcasts). `tests/conforming.rs` fails when a shipped module, a composed scene module or the
+//! example renderer's shader lists anything. Texel conversions at texture reads and render
+//! target writes follow WebGPU's texel-format rules, not WGSL's accuracy table, and are taken as
+//! the host does them. `sqrt(±0)` returns 0: the inherited interval `1/inverseSqrt(0)` is
+//! unbounded, and every implementation known returns 0.
 //!
 //! # Indeterminate results
 //! An operation outside its domain — a divisor outside ±[2^-126, 2^126], `inverseSqrt`, `log`
@@ -82,6 +97,8 @@ mod rewrite;
 mod kernel;
 #[cfg(feature = "harness")]
 pub use kernel::EmulatedKernel;
+#[cfg(feature = "harness")]
+pub mod search;
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -97,6 +114,10 @@ pub enum Policy {
     Lower,
     /// A per-operation, per-invocation choice from this seed, both ends included.
     Seeded(u32),
+    /// Each site's end read from a direction table passed with every element
+    /// ([`search::DirectionTable`], feature `harness`): the policy of the worst-case search,
+    /// where one compiled module serves every table.
+    Searched,
 }
 
 impl Policy {
@@ -115,6 +136,7 @@ impl Policy {
             Policy::Upper => (1, 0),
             Policy::Lower => (2, 0),
             Policy::Seeded(s) => (3, s),
+            Policy::Searched => (4, 0),
         }
     }
 }
@@ -126,6 +148,7 @@ impl std::fmt::Display for Policy {
             Policy::Upper => write!(f, "upper"),
             Policy::Lower => write!(f, "lower"),
             Policy::Seeded(s) => write!(f, "seeded({s})"),
+            Policy::Searched => write!(f, "searched"),
         }
     }
 }
@@ -144,21 +167,26 @@ impl Freedoms {
     pub const EXP_LOG: Freedoms = Freedoms(4);
     /// `unpack4x8unorm/snorm`, `unpack2x16unorm/snorm` within 3 ULP.
     pub const UNPACK: Freedoms = Freedoms(8);
-    /// `pack4x8unorm/snorm`, `pack2x16unorm/snorm`: either integer at a .5 tie.
+    /// `pack4x8unorm/snorm`, `pack2x16unorm/snorm`: either integer at a .5 tie;
+    /// `pack2x16float`: either neighbouring f16 per lane.
     pub const PACK: Freedoms = Freedoms(16);
     /// `+ − ×` rounded to either neighbour.
     pub const ROUNDING: Freedoms = Freedoms(32);
-    /// Subnormal inputs and outputs flushed to zero.
+    /// Subnormal inputs and outputs flushed to zero (f32, and the f16 lanes of
+    /// `pack2x16float`/`unpack2x16float`), at every operation of the accuracy table: comparisons,
+    /// `min`, `max`, `clamp`, `floor` and the other exactly rounded ones included.
     pub const FLUSH: Freedoms = Freedoms(64);
     /// `a·b + c` fused into one rounding.
     pub const FUSION: Freedoms = Freedoms(128);
     /// The spec's reassociations.
     pub const REASSOCIATION: Freedoms = Freedoms(256);
     /// `sqrt`, `length`, `normalize`, `distance`, `dot`, `pow`, `fma`, `mix`, `fract`,
-    /// `cross`, `reflect` evaluated as their defining expressions.
+    /// `cross`, `reflect`, matrix × vector evaluated as their defining expressions.
     pub const INHERITED: Freedoms = Freedoms(512);
+    /// `f32(u32)`, `f32(i32)`: either neighbour where the integer is not an f32 (above 2^24).
+    pub const CONVERSION: Freedoms = Freedoms(1024);
     /// Every freedom.
-    pub const ALL: Freedoms = Freedoms(1023);
+    pub const ALL: Freedoms = Freedoms(2047);
 
     /// Both sets.
     pub const fn union(self, other: Freedoms) -> Freedoms {
@@ -290,6 +318,7 @@ pub struct Emulated {
     /// The policy it was built for.
     pub emulation: Emulation,
     undefined: BTreeMap<String, String>,
+    tables: BTreeMap<String, [String; 4]>,
     names: BTreeMap<String, String>,
 }
 
@@ -306,6 +335,25 @@ impl Emulated {
     /// wrapper cannot spell (pointers, arrays).
     pub fn undefined_function(&self, function: &str) -> Option<&str> {
         self.undefined.get(function).map(String::as_str)
+    }
+
+    /// Under [`Policy::Searched`]: the names of `function`'s table wrappers, (values, flag),
+    /// which take `function`'s parameters and then the two `vec4<u32>` halves of a
+    /// [`search::DirectionTable`]. `None` under other policies, and for functions without a
+    /// result or with parameters the wrapper cannot spell.
+    pub fn table_functions(&self, function: &str) -> Option<(&str, &str)> {
+        self.tables
+            .get(function)
+            .map(|[v, u, ..]| (v.as_str(), u.as_str()))
+    }
+
+    /// Under [`Policy::Searched`]: the two wrappers (same parameters as
+    /// [`Emulated::table_functions`]) that return which table slots an evaluation reads, as the
+    /// `vec4<u32>` halves of a slot mask.
+    pub fn touched_functions(&self, function: &str) -> Option<(&str, &str)> {
+        self.tables
+            .get(function)
+            .map(|[_, _, a, b]| (a.as_str(), b.as_str()))
     }
 }
 
@@ -351,6 +399,7 @@ pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateE
     text.push_str(source);
     text.push('\n');
     let mut undefined = BTreeMap::new();
+    let mut tables = BTreeMap::new();
     for (_, f) in m1.functions.iter() {
         let Some(name) = f.name.as_deref() else {
             continue;
@@ -368,6 +417,44 @@ pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateE
         let args: Vec<String> = (0..params.len()).map(|k| format!("a{k}")).collect();
         let wrapper = format!("{}undefined__{name}", rewrite::PREFIX);
         let call = format!("{name}({})", args.join(", "));
+        let result = f
+            .result
+            .as_ref()
+            .and_then(|r| rewrite::wgsl_type(&m1, r.ty));
+        if let (Policy::Searched, Some(result)) = (emulation.policy, &result) {
+            // The table wrappers: the direction table from two trailing vec4<u32> arguments.
+            let p = rewrite::PREFIX;
+            let tparams = [
+                params.clone(),
+                vec![format!("{p}t0: vec4<u32>"), format!("{p}t1: vec4<u32>")],
+            ]
+            .concat()
+            .join(", ");
+            let set = format!("{p}dirs = array<vec4<u32>, 2>({p}t0, {p}t1);");
+            let (tv, tu) = (
+                format!("{p}table__{name}"),
+                format!("{p}table_undefined__{name}"),
+            );
+            let _ = writeln!(
+                text,
+                "fn {tv}({tparams}) -> {result} {{\n    {set}\n    return {call};\n}}\n\
+                 fn {tu}({tparams}) -> u32 {{\n    {set}\n    {p}undefined = 0u;\n    _ = {call};\n    return {p}undefined;\n}}"
+            );
+            // The slots the evaluation reads, half by half.
+            let mut touched = Vec::new();
+            for h in 0..2 {
+                let tt = format!("{p}table_touched{h}__{name}");
+                let _ = writeln!(
+                    text,
+                    "fn {tt}({tparams}) -> vec4<u32> {{\n    {set}\n    {p}touched = array<vec4<u32>, 2>(vec4<u32>(0u), vec4<u32>(0u));\n    _ = {call};\n    return {p}touched[{h}];\n}}"
+                );
+                touched.push(tt);
+            }
+            tables.insert(
+                name.to_string(),
+                [tv, tu, touched[0].clone(), touched[1].clone()],
+            );
+        }
         let body = if f.result.is_some() {
             format!("_ = {call};")
         } else {
@@ -410,12 +497,20 @@ pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateE
         .into_iter()
         .filter_map(|(f, w)| Some((f, names.get(&w)?.clone())))
         .collect();
+    let tables = tables
+        .into_iter()
+        .filter_map(|(f, ws): (String, [String; 4])| {
+            let mapped: Option<Vec<String>> = ws.iter().map(|w| names.get(w).cloned()).collect();
+            Some((f, <[String; 4]>::try_from(mapped?).ok()?))
+        })
+        .collect();
     Ok(Emulated {
         source,
         sites,
         uncovered: plan1.uncovered.into_iter().collect(),
         emulation: *emulation,
         undefined,
+        tables,
         names,
     })
 }

@@ -58,10 +58,15 @@ fn f32_lanes(inner: &TypeInner) -> Option<Lanes> {
 }
 
 fn ty_name(lanes: Lanes) -> String {
+    ty_of(lanes, "f32")
+}
+
+/// WGSL type of `lanes` lanes of `scalar` (`f32`, `u32`, `i32`, `bool`).
+fn ty_of(lanes: Lanes, scalar: &str) -> String {
     if lanes == 1 {
-        "f32".into()
+        scalar.into()
     } else {
-        format!("vec{lanes}<f32>")
+        format!("vec{lanes}<{scalar}>")
     }
 }
 
@@ -73,27 +78,34 @@ fn lane(arg: &str, lanes: Lanes, k: u8) -> String {
     }
 }
 
-/// A component-wise wrapper of the scalar core helper `core` for these operand shapes.
+/// A component-wise wrapper of the scalar f32 core helper `core` for these operand shapes.
 fn componentwise(plan: &mut Plan, core: &str, shapes: &[Lanes]) -> String {
-    let n = shapes.iter().copied().max().unwrap_or(1);
+    let typed: Vec<(Lanes, &str)> = shapes.iter().map(|&l| (l, "f32")).collect();
+    componentwise_typed(plan, core, &typed, "f32")
+}
+
+/// A component-wise wrapper of the scalar core helper `core`, whose operands are these
+/// (lanes, scalar type) and whose lanes are of type `ret`.
+fn componentwise_typed(plan: &mut Plan, core: &str, shapes: &[(Lanes, &str)], ret: &str) -> String {
+    let n = shapes.iter().map(|s| s.0).max().unwrap_or(1);
     let core_name = format!("{PREFIX}{core}");
     if n == 1 {
         return core_name;
     }
-    let sig: String = shapes.iter().map(|l| l.to_string()).collect();
+    let sig: String = shapes.iter().map(|s| s.0.to_string()).collect();
     let name = format!("{PREFIX}{core}_v{sig}");
     plan.wrappers.entry(name.clone()).or_insert_with(|| {
         let params: Vec<String> = shapes
             .iter()
             .enumerate()
-            .map(|(i, &l)| format!("a{i}: {}", ty_name(l)))
+            .map(|(i, &(l, t))| format!("a{i}: {}", ty_of(l, t)))
             .collect();
         let lanes: Vec<String> = (0..n)
             .map(|k| {
                 let args: Vec<String> = shapes
                     .iter()
                     .enumerate()
-                    .map(|(i, &l)| lane(&format!("a{i}"), l, k))
+                    .map(|(i, &(l, _))| lane(&format!("a{i}"), l, k))
                     .collect();
                 format!(
                     "{core_name}(site + {}u, {})",
@@ -105,11 +117,59 @@ fn componentwise(plan: &mut Plan, core: &str, shapes: &[Lanes]) -> String {
         format!(
             "fn {name}(site: u32, {}) -> {} {{\n    return {}({});\n}}\n",
             params.join(", "),
-            ty_name(n),
-            ty_name(n),
+            ty_of(n, ret),
+            ty_of(n, ret),
             lanes.join(", ")
         )
     });
+    name
+}
+
+/// `m * v` (`vec_left` false) or `v * m` of an f32 matrix of `columns` × `rows`, as the spec
+/// defines them: each result lane a `dot` of a row (or a column) with the vector, so each inherits
+/// the freedoms of `dot`.
+fn matrix_vector(plan: &mut Plan, columns: Lanes, rows: Lanes, vec_left: bool) -> String {
+    let name = format!(
+        "{PREFIX}{}{columns}x{rows}",
+        if vec_left { "vecmat" } else { "matvec" }
+    );
+    if plan.wrappers.contains_key(&name) {
+        return name;
+    }
+    let m = format!("mat{columns}x{rows}<f32>");
+    let (inner, outer) = if vec_left {
+        (rows, columns)
+    } else {
+        (columns, rows)
+    };
+    let dot = inherited(plan, "dot", inner);
+    let p = PREFIX;
+    let lanes: Vec<String> = (0..outer)
+        .map(|i| {
+            let other = if vec_left {
+                format!("m[{i}]")
+            } else {
+                let row: Vec<String> = (0..columns).map(|c| format!("m[{c}][{i}]")).collect();
+                format!("vec{columns}<f32>({})", row.join(", "))
+            };
+            let (a, b) = if vec_left {
+                ("v".to_string(), other)
+            } else {
+                (other, "v".to_string())
+            };
+            format!("{dot}(site + {}u, {a}, {b})", 8192 * u32::from(i))
+        })
+        .collect();
+    let (params, builtin) = if vec_left {
+        (format!("v: vec{rows}<f32>, m: {m}"), "v * m")
+    } else {
+        (format!("m: {m}, v: vec{columns}<f32>"), "m * v")
+    };
+    let s = format!(
+        "fn {name}(site: u32, {params}) -> vec{outer}<f32> {{\n    if (!{p}on(PREPASS_CF_INHERITED)) {{\n        return {builtin};\n    }}\n    return vec{outer}<f32>({});\n}}\n",
+        lanes.join(", ")
+    );
+    plan.wrappers.insert(name.clone(), s);
     name
 }
 
@@ -235,6 +295,38 @@ fn inherited(plan: &mut Plan, what: &str, n: Lanes) -> String {
     name
 }
 
+/// `a * b` of an f32 `mat{c1}x{r1}` by a `mat{c2}x{c1}`, as the spec defines it: entry (i, j) the
+/// `dot` of row i of `a` with column j of `b`, each with the freedoms of `dot`.
+fn matrix_matrix(plan: &mut Plan, c1: Lanes, r1: Lanes, c2: Lanes) -> String {
+    let name = format!("{PREFIX}matmat{c1}x{r1}_{c2}");
+    if plan.wrappers.contains_key(&name) {
+        return name;
+    }
+    let dot = inherited(plan, "dot", c1);
+    let p = PREFIX;
+    let columns: Vec<String> = (0..c2)
+        .map(|j| {
+            let lanes: Vec<String> = (0..r1)
+                .map(|i| {
+                    let row: Vec<String> = (0..c1).map(|k| format!("a[{k}][{i}]")).collect();
+                    format!(
+                        "{dot}(site + {}u, vec{c1}<f32>({}), b[{j}])",
+                        16384 * u32::from(j) + 4096 * u32::from(i),
+                        row.join(", ")
+                    )
+                })
+                .collect();
+            format!("vec{r1}<f32>({})", lanes.join(", "))
+        })
+        .collect();
+    let s = format!(
+        "fn {name}(site: u32, a: mat{c1}x{r1}<f32>, b: mat{c2}x{c1}<f32>) -> mat{c2}x{r1}<f32> {{\n    if (!{p}on(PREPASS_CF_INHERITED)) {{\n        return a * b;\n    }}\n    return mat{c2}x{r1}<f32>({});\n}}\n",
+        columns.join(", ")
+    );
+    plan.wrappers.insert(name.clone(), s);
+    name
+}
+
 fn binary_operands(
     f: &Function,
     e: Handle<Expression>,
@@ -252,9 +344,20 @@ fn site_for(
     module: &Module,
     f: &Function,
     lanes_of: &dyn Fn(Handle<Expression>) -> Option<Lanes>,
+    inner_of: &dyn Fn(Handle<Expression>) -> TypeInner,
     e: Handle<Expression>,
 ) -> Option<(String, Vec<Handle<Expression>>)> {
     let result = lanes_of(e);
+    let f32_matrix = |h| match inner_of(h) {
+        TypeInner::Matrix {
+            columns,
+            rows,
+            scalar,
+        } if scalar.kind == ScalarKind::Float && scalar.width == 4 => {
+            Some((columns as u8, rows as u8))
+        }
+        _ => None,
+    };
     let ops = |hs: &[Handle<Expression>]| -> Option<Vec<Operand>> {
         hs.iter()
             .map(|&h| lanes_of(h).map(|lanes| Operand { expr: h, lanes }))
@@ -270,10 +373,43 @@ fn site_for(
     };
     match f.expressions[e] {
         Expression::Binary { op, left, right } => {
-            result?;
-            lanes_of(left)?;
-            lanes_of(right)?;
             use BinaryOperator as B;
+            // Matrix × vector and vector × matrix: dot products per lane. Other matrix
+            // arithmetic is not emulated, and is listed.
+            match (f32_matrix(left), f32_matrix(right), op) {
+                (Some((c, r)), None, B::Multiply) if lanes_of(right) == Some(c) && c > 1 => {
+                    return Some((matrix_vector(plan, c, r, false), vec![left, right]));
+                }
+                (None, Some((c, r)), B::Multiply) if lanes_of(left) == Some(r) && r > 1 => {
+                    return Some((matrix_vector(plan, c, r, true), vec![left, right]));
+                }
+                (Some((c1, r1)), Some((c2, r2)), B::Multiply) if r2 == c1 => {
+                    return Some((matrix_matrix(plan, c1, r1, c2), vec![left, right]));
+                }
+                (None, None, _) => {}
+                _ => {
+                    plan.uncovered.insert(format!(
+                        "matrix arithmetic other than matrix products ({op:?})"
+                    ));
+                    return None;
+                }
+            }
+            let (a, b) = (lanes_of(left)?, lanes_of(right)?);
+            // Comparisons are exact; only their operands' flushing is free.
+            let cmp = match op {
+                B::Less => Some("lt"),
+                B::LessEqual => Some("le"),
+                B::Greater => Some("gt"),
+                B::GreaterEqual => Some("ge"),
+                B::Equal => Some("eq"),
+                B::NotEqual => Some("ne"),
+                _ => None,
+            };
+            if let Some(c) = cmp {
+                let name = componentwise_typed(plan, c, &[(a, "f32"), (b, "f32")], "bool");
+                return Some((name, vec![left, right]));
+            }
+            result?;
             let mul = |h| {
                 binary_operands(f, h, B::Multiply)
                     .filter(|&(a, b)| lanes_of(a).is_some() && lanes_of(b).is_some())
@@ -357,6 +493,19 @@ fn site_for(
                 M::Log => call(plan, "log", &[arg]),
                 M::Log2 => call(plan, "log2", &[arg]),
                 M::Fract => call(plan, "fract", &[arg]),
+                // Exactly rounded, but inputs and outputs may be flushed.
+                M::Floor => call(plan, "floor", &[arg]),
+                M::Ceil => call(plan, "ceil", &[arg]),
+                M::Trunc => call(plan, "trunc", &[arg]),
+                M::Round => call(plan, "round_even", &[arg]),
+                M::Abs => call(plan, "abs", &[arg]),
+                M::Sign => call(plan, "sign", &[arg]),
+                M::Saturate => call(plan, "saturate", &[arg]),
+                M::Min => call(plan, "min", &[arg, arg1?]),
+                M::Max => call(plan, "max", &[arg, arg1?]),
+                M::Step => call(plan, "step", &[arg, arg1?]),
+                M::Clamp => call(plan, "clamp", &[arg, arg1?, arg2?]),
+                M::Unpack2x16float => Some((format!("{PREFIX}unpack2x16float"), vec![arg])),
                 M::Pow => call(plan, "pow", &[arg, arg1?]),
                 M::Fma => call(plan, "fma", &[arg, arg1?, arg2?]),
                 M::Mix => call(plan, "mix", &[arg, arg1?, arg2?]),
@@ -389,35 +538,50 @@ fn site_for(
                     };
                     Some((format!("{PREFIX}{name}"), vec![arg]))
                 }
-                M::Sin
-                | M::Cos
-                | M::Tan
-                | M::Asin
-                | M::Acos
-                | M::Atan
-                | M::Atan2
-                | M::Sinh
-                | M::Cosh
-                | M::Tanh
-                | M::Asinh
-                | M::Acosh
-                | M::Atanh
-                | M::SmoothStep
-                | M::Refract
-                | M::FaceForward
-                | M::Degrees
-                | M::Radians
-                | M::Modf
-                | M::Frexp
-                | M::QuantizeToF16 => {
-                    if n.is_some() {
-                        plan.uncovered.insert(format!("{fun:?}"));
+                // Exact (or not an f32 operation).
+                M::Transpose => None,
+                other => {
+                    // Everything else on f32 is left at the host's accuracy, and listed.
+                    let f32_involved = n.is_some()
+                        || result.is_some()
+                        || f32_matrix(arg).is_some()
+                        || f32_matrix(e).is_some();
+                    if f32_involved {
+                        plan.uncovered.insert(format!("{other:?}"));
                     }
                     let _ = module;
                     None
                 }
-                _ => None,
             }
+        }
+        Expression::As {
+            expr,
+            kind: ScalarKind::Float,
+            convert: Some(4),
+        } => {
+            // f32 of an integer: either neighbour where inexact.
+            let (lanes, scalar) = match inner_of(expr) {
+                TypeInner::Scalar(s) => (1, s),
+                TypeInner::Vector { size, scalar } => (size as u8, scalar),
+                _ => return None,
+            };
+            let (core, ty) = match (scalar.kind, scalar.width) {
+                (ScalarKind::Uint, 4) => ("f32_from_u32", "u32"),
+                (ScalarKind::Sint, 4) => ("f32_from_i32", "i32"),
+                _ => return None, // f32 of f32 or of bool: exact
+            };
+            Some((
+                componentwise_typed(plan, core, &[(lanes, ty)], "f32"),
+                vec![expr],
+            ))
+        }
+        Expression::As {
+            kind: ScalarKind::Float,
+            convert: Some(2),
+            ..
+        } => {
+            plan.uncovered.insert("conversion to f16".into());
+            None
         }
         _ => None,
     }
@@ -462,12 +626,13 @@ pub fn plan(module: &Module, info: &naga::valid::ModuleInfo) -> Plan {
         let mut live = HashSet::new();
         emitted(&f.body, &mut live);
         let lanes_of = |h: Handle<Expression>| f32_lanes(fi[h].ty.inner_with(&module.types));
+        let inner_of = |h: Handle<Expression>| fi[h].ty.inner_with(&module.types).clone();
         let mut sites = Vec::new();
         for (h, _) in f.expressions.iter() {
             if !live.contains(&h) {
                 continue;
             }
-            if let Some((helper, operands)) = site_for(plan, module, f, &lanes_of, h) {
+            if let Some((helper, operands)) = site_for(plan, module, f, &lanes_of, &inner_of, h) {
                 sites.push(Site {
                     expr: h,
                     helper,

@@ -14,7 +14,9 @@
 //! CPU decodes exactly like one a shader wrote there. On any conforming adapter — which may round
 //! `+ − ×` either way, err 2.5 ULP on `/` and 2 on `inverseSqrt`, fuse and reassociate — the
 //! WGSL encoder's code is within one code step of the twin's (per lane, two codes of one exact
-//! direction counting as equal), every decode is finite and unit within
+//! direction counting as equal; for xy FP16, an f16 lane within one step of the subnormals that
+//! the adapter flushes to ±0 counts as one step, and `pack2x16float` may pick either
+//! neighbouring f16), every decode is finite and unit within
 //! `prepass::sweep::conforming::UNIT_TOLERANCE_CONFORMING` (`18·2^-24`, derived there; feature `harness`), and the
 //! precise encoders stay within 5× their correctly rounded optimality tolerance: checked under
 //! the worst-case emulation by `tests/conforming.rs`; the figures are in `docs/figures.md`. The WGSL avoids the expressions an implementation may

@@ -99,7 +99,14 @@ fn code_step(codec: &Codec, a: u32, b: u32) -> u32 {
         .iter()
         .map(|&(shift, width)| {
             let m = (1u32 << width) - 1;
-            ordered((a >> shift) & m).abs_diff(ordered((b >> shift) & m)) as u32
+            let (x, y) = (ordered((a >> shift) & m), ordered((b >> shift) & m));
+            // An adapter may flush an f16-subnormal lane to ±0 (WGSL: pack intermediates may be
+            // flushed): a lane at most one step above the subnormals (|code| ≤ 0x400, 2^-14)
+            // stored as zero is that freedom, counted as one step.
+            if halves && (x == 0 || y == 0) && x.abs().max(y.abs()) <= 0x400 {
+                return u32::from(x != y);
+            }
+            x.abs_diff(y) as u32
         })
         .max()
         .unwrap_or(0)
@@ -290,19 +297,34 @@ pub struct LinearFigures {
     pub emulated: f64,
     /// Where that worst error is: the policy and the input.
     pub emulated_at: String,
+    /// The worst error the search found ([`super::linear_depth::searched_worst`], at the
+    /// inputs the policies erred most on).
+    pub searched: f64,
+    /// Where, with the search's record (how it was found, slots read, tables evaluated).
+    pub searched_at: String,
+    /// Over the searched inputs: the fewest and most table slots an evaluation read, and
+    /// whether every input was searched exhaustively (every assignment of those slots).
+    pub searched_slots: (u32, u32, bool),
     /// The bound where `+ − × /` are correctly rounded (`linear_depth::bounds`).
     pub bound_correctly_rounded: f64,
     /// The bound on every conforming adapter.
     pub bound_conforming: f64,
 }
 
-/// [`LinearFigures`] of every shipped path under each of `policies`.
+/// Inputs per path the search runs at in CI: the worst of every policy's sample.
+pub const SEARCHED_INPUTS: usize = 32;
+
+/// [`LinearFigures`] of every shipped path under each of `policies`, then searched at the
+/// `searched_inputs` inputs those policies erred most on (each policy's `searched_inputs / 2`
+/// worst, pooled).
 pub fn linear_depth_figures(
     gpu: &Gpu,
     policies: &[crate::conforming::Policy],
+    searched_inputs: usize,
 ) -> Result<Vec<LinearFigures>, HarnessError> {
-    use super::linear_depth::{PATHS, sampled_worst};
+    use super::linear_depth::{PATHS, sampled_worst, searched_worst, worst_inputs};
     use crate::conforming::EmulatedKernel;
+    use crate::conforming::search::SearchConfig;
     let mut rows = Vec::new();
     for path in &PATHS {
         let (cr, conf, _) =
@@ -310,6 +332,7 @@ pub fn linear_depth_figures(
         let k = gpu.kernel(crate::wgsl::LINEAR_DEPTH, path.function)?;
         let adapter = sampled_worst(path, &|a, n| Ok(k.run(a, n)?.as_f32().to_vec()))?.0;
         let (mut emulated, mut emulated_at) = (0.0f64, String::new());
+        let mut pool = Vec::new();
         for &policy in policies {
             let k = EmulatedKernel::new(
                 gpu,
@@ -318,9 +341,34 @@ pub fn linear_depth_figures(
                 &Emulation::new(policy),
             )?;
             let run = |a: &[crate::harness::Arg<'_>], n: u64| Ok(k.run(a, n)?.0.as_f32().to_vec());
-            let (e, at) = sampled_worst(path, &run)?;
-            if e > emulated {
-                (emulated, emulated_at) = (e, format!("{policy}, {at}"));
+            let worst = worst_inputs(path, &run, searched_inputs.div_ceil(2))?;
+            if let Some(w) = worst.first()
+                && w.error > emulated
+            {
+                (emulated, emulated_at) = (w.error, format!("{policy}, {}", w.at));
+            }
+            pool.extend(worst);
+        }
+        // The pooled inputs, worst first, each once.
+        pool.sort_by(|a, b| b.error.total_cmp(&a.error));
+        let mut seen = std::collections::HashSet::new();
+        pool.retain(|s| seen.insert((s.case.near.to_bits(), s.case.far.to_bits(), s.input_bits)));
+        pool.truncate(searched_inputs);
+        let found = searched_worst(gpu, path, &pool, &SearchConfig::default())?;
+        let config = SearchConfig::default();
+        let searched_slots = (
+            found.iter().map(|f| f.slots).min().unwrap_or(0),
+            found.iter().map(|f| f.slots).max().unwrap_or(0),
+            found.iter().all(|f| f.slots <= config.exhaustive_slots),
+        );
+        let (mut searched, mut searched_at) = (0.0f64, String::new());
+        for (f, s) in found.iter().zip(&pool) {
+            if f.error >= searched {
+                searched = f.error;
+                searched_at = format!(
+                    "at the input where a policy gave {} ({:.2} ULP): {}, {} slots read, {} tables",
+                    s.at, s.error, f.how, f.slots, f.evaluated
+                );
             }
         }
         rows.push(LinearFigures {
@@ -328,6 +376,9 @@ pub fn linear_depth_figures(
             adapter,
             emulated,
             emulated_at,
+            searched,
+            searched_at,
+            searched_slots,
             bound_correctly_rounded: cr,
             bound_conforming: conf,
         });

@@ -435,72 +435,159 @@ pub fn sampled_codes() -> Vec<u32> {
     codes
 }
 
-/// The worst error of one path over the whole stiff grid, sampled ([`sampled_codes`], or 2^16
-/// [`float_depths`]), run by `kernel` (the shipped WGSL, or an emulation of it): the ULP error
-/// and a description of the input. A subnormal float depth that an emulated adapter flushed to
-/// the sky (`+∞` with an infinite far plane) counts as its documented answer.
-pub fn sampled_worst(path: &Path, run: &RunBatch<'_>) -> Result<(f64, String), HarnessError> {
+/// One evaluated input of [`sampled_worst`]'s sample: its stiff case, the constants a
+/// `_consts` path reads (else empty), the input's bits (a code, or a float depth), and the
+/// result's error in ULPs.
+#[derive(Clone, Debug)]
+pub struct SampledInput {
+    /// The stiff-grid case.
+    pub case: StiffCase,
+    /// The per-projection constants (for `_consts` paths; empty otherwise).
+    pub consts: Vec<f32>,
+    /// The code, or the float depth's bits.
+    pub input_bits: u32,
+    /// ULP error of the result ([`distance_error`]); 0 where a flushed subnormal depth gave the
+    /// sky, its documented answer.
+    pub error: f64,
+    /// A description: case, input, result and exact value.
+    pub at: String,
+}
+
+/// The exact view distance of `path` at an input's bits.
+fn exact_of(path: &Path, bits: u32, near: f32, far: f32) -> f64 {
+    let z = f32::from_bits(bits);
+    if path.code {
+        crate::linear_depth::exact::view_z_from_depth24(bits, near, far)
+    } else if path.convention == DepthConvention::Standard {
+        crate::linear_depth::exact::view_z_from_depth(z, near, far)
+    } else {
+        crate::linear_depth::exact::view_z_from_reversed_depth(z, near, far)
+    }
+}
+
+/// The error of `got` for `path` at an input: [`distance_error`], 0 for a flushed subnormal
+/// depth that gave the sky.
+fn error_of(path: &Path, bits: u32, near: f32, far: f32, got: f32) -> f64 {
+    if !path.code && subnormal_sky(f32::from_bits(bits), far, got) {
+        return 0.0;
+    }
+    distance_error(got, exact_of(path, bits, near, far))
+}
+
+fn consts_of(path: &Path, case: &StiffCase) -> Vec<f32> {
+    let p = case.projection(path.convention);
+    let why = "a projection of the convention these constants read";
+    match (path.code, path.convention) {
+        (true, _) => p.depth24_consts().expect(why).to_wgsl().to_vec(),
+        (false, DepthConvention::Standard) => p.depth_consts().expect(why).to_wgsl().to_vec(),
+        (false, DepthConvention::Reversed) => {
+            p.reversed_depth_consts().expect(why).to_wgsl().to_vec()
+        }
+    }
+}
+
+/// Every input of [`sampled_worst`]'s sample, evaluated by `run`, passed to `visit`.
+fn each_sampled(
+    path: &Path,
+    run: &RunBatch<'_>,
+    mut visit: impl FnMut(SampledInput),
+) -> Result<(), HarnessError> {
     let codes = sampled_codes();
-    let depths = float_depths(1 << 16);
-    let mut worst = (0.0f64, String::new());
+    let depths: Vec<u32> = float_depths(1 << 16).iter().map(|z| z.to_bits()).collect();
+    let inputs = if path.code { &codes } else { &depths };
     for case in stiff_grid() {
         let (n, f) = (case.near, case.far);
-        let p = case.projection(path.convention);
-        let k: Vec<f32> = match (path.code, path.convention) {
-            (true, _) => p
-                .depth24_consts()
-                .expect("a projection of the convention these constants read")
-                .to_wgsl()
-                .to_vec(),
-            (false, DepthConvention::Standard) => p
-                .depth_consts()
-                .expect("a projection of the convention these constants read")
-                .to_wgsl()
-                .to_vec(),
-            (false, DepthConvention::Reversed) => p
-                .reversed_depth_consts()
-                .expect("a projection of the convention these constants read")
-                .to_wgsl()
-                .to_vec(),
-        };
-        let mut args = vec![if path.code {
-            Arg::column(&codes)
-        } else {
-            Arg::column(&depths)
-        }];
+        let k = consts_of(path, &case);
+        let mut args = vec![Arg::column(inputs)];
         if path.consts {
             args.push(Arg::splat_vec(&k));
         } else {
             args.extend([Arg::splat_f32(n), Arg::splat_f32(f)]);
         }
-        let len = if path.code { codes.len() } else { depths.len() };
-        let got = run(&args, len as u64)?;
-        for (i, &g) in got.iter().enumerate() {
-            let e = if path.code {
-                crate::linear_depth::exact::view_z_from_depth24(codes[i], n, f)
-            } else if path.convention == DepthConvention::Standard {
-                crate::linear_depth::exact::view_z_from_depth(depths[i], n, f)
+        let got = run(&args, inputs.len() as u64)?;
+        for (&bits, &g) in inputs.iter().zip(&got) {
+            let error = error_of(path, bits, n, f, g);
+            let input = if path.code {
+                format!("code {bits}")
             } else {
-                crate::linear_depth::exact::view_z_from_reversed_depth(depths[i], n, f)
+                format!("z {:e}", f32::from_bits(bits))
             };
-            let flushed_sky = !path.code && subnormal_sky(depths[i], f, g);
-            let err = if flushed_sky {
-                0.0
-            } else {
-                distance_error(g, e)
-            };
-            if err > worst.0 {
-                let input = if path.code {
-                    format!("code {}", codes[i])
-                } else {
-                    format!("z {:e}", depths[i])
-                };
-                worst = (
-                    err,
-                    format!("near {n:e}, far {f:e}, {input}: {g:e} vs exact {e:e}"),
-                );
-            }
+            let e = exact_of(path, bits, n, f);
+            visit(SampledInput {
+                case,
+                consts: if path.consts { k.clone() } else { Vec::new() },
+                input_bits: bits,
+                error,
+                at: format!("near {n:e}, far {f:e}, {input}: {g:e} vs exact {e:e}"),
+            });
         }
     }
+    Ok(())
+}
+
+/// The worst error of one path over the whole stiff grid, sampled ([`sampled_codes`], or 2^16
+/// [`float_depths`]), run by `kernel` (the shipped WGSL, or an emulation of it): the ULP error
+/// and a description of the input. A subnormal float depth that an emulated adapter flushed to
+/// the sky (`+∞` with an infinite far plane) counts as its documented answer.
+pub fn sampled_worst(path: &Path, run: &RunBatch<'_>) -> Result<(f64, String), HarnessError> {
+    let mut worst = (0.0f64, String::new());
+    each_sampled(path, run, |s| {
+        if s.error > worst.0 {
+            worst = (s.error, s.at);
+        }
+    })?;
     Ok(worst)
+}
+
+/// The `k` inputs of [`sampled_worst`]'s sample with the largest errors under `run`, worst
+/// first.
+pub fn worst_inputs(
+    path: &Path,
+    run: &RunBatch<'_>,
+    k: usize,
+) -> Result<Vec<SampledInput>, HarnessError> {
+    let mut top: Vec<SampledInput> = Vec::with_capacity(k + 1);
+    each_sampled(path, run, |s| {
+        if top.len() < k || s.error > top[top.len() - 1].error {
+            let at = top.partition_point(|t| t.error >= s.error);
+            top.insert(at, s);
+            top.truncate(k);
+        }
+    })?;
+    Ok(top)
+}
+
+/// The worst-case search ([`crate::conforming::search::climb`]) at each of `inputs`: per input,
+/// the direction table that makes `path`'s error largest on the emulated adapter. Returns, per
+/// input, the error found and the search's record.
+pub fn searched_worst(
+    gpu: &Gpu,
+    path: &Path,
+    inputs: &[SampledInput],
+    config: &crate::conforming::search::SearchConfig,
+) -> Result<Vec<crate::conforming::search::Found>, HarnessError> {
+    use crate::conforming::{EmulatedKernel, Emulation, Policy, search};
+    let kernel = EmulatedKernel::new(
+        gpu,
+        crate::wgsl::LINEAR_DEPTH,
+        path.function,
+        &Emulation::new(Policy::Searched),
+    )?;
+    let bits: Vec<u32> = inputs.iter().map(|s| s.input_bits).collect();
+    let near: Vec<f32> = inputs.iter().map(|s| s.case.near).collect();
+    let far: Vec<f32> = inputs.iter().map(|s| s.case.far).collect();
+    let consts: Vec<f32> = inputs
+        .iter()
+        .flat_map(|s| s.consts.iter().copied())
+        .collect();
+    let mut args = vec![Arg::column(&bits)];
+    if path.consts {
+        args.push(Arg::column(&consts));
+    } else {
+        args.extend([Arg::column(&near), Arg::column(&far)]);
+    }
+    let error = |i: usize, out: &crate::harness::Output, e: usize| {
+        error_of(path, bits[i], near[i], far[i], out.as_f32()[e])
+    };
+    search::climb(&kernel, &args, inputs.len(), &error, config)
 }

@@ -4,7 +4,7 @@
 
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
 use prepass::conforming::Policy;
-use prepass::sweep::conforming::{linear_depth_figures, normal_figures};
+use prepass::sweep::conforming::{SEARCHED_INPUTS, linear_depth_figures, normal_figures};
 use prepass::sweep::normal::{adversarial_directions, fibonacci_directions};
 
 /// The section: linear depth and normal encodings, adapter beside emulation beside bound.
@@ -30,7 +30,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     } else {
         &Policy::WORST
     };
-    let linear = linear_depth_figures(gpu, policies).map_err(|e| e.to_string())?;
+    let searched = if quick { 8 } else { SEARCHED_INPUTS };
+    let linear = linear_depth_figures(gpu, policies, searched).map_err(|e| e.to_string())?;
     let mut inputs = fibonacci_directions(if quick { 1 << 12 } else { 1 << 18 });
     if !quick {
         inputs.extend(adversarial_directions());
@@ -48,17 +49,22 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         names.join(", ")
     ));
     ctx.line("");
-    ctx.line("| function | max ULP (adapter) | max ULP (worst emulated) | bound, correctly rounded | bound, conforming |");
-    ctx.line("|---|---|---|---|---|");
+    ctx.line(format!(
+        "Searched: `conforming::search` at the {searched} inputs the policies erred most on."
+    ));
+    ctx.line("");
+    ctx.line("| function | max ULP (adapter) | max ULP (worst emulated) | max ULP (searched) | bound, correctly rounded | bound, conforming |");
+    ctx.line("|---|---|---|---|---|---|");
     let mut csv = String::from(
         "family,variant,adapter,worst_emulated,bound_correctly_rounded,bound_conforming\n",
     );
     for r in &linear {
         ctx.line(format!(
-            "| `{}` | {} | {} | {} | {} |",
+            "| `{}` | {} | {} | {} | {} | {} |",
             r.function,
             num(r.adapter),
             num(r.emulated),
+            num(r.searched),
             num(r.bound_correctly_rounded),
             num(r.bound_conforming)
         ));
