@@ -96,8 +96,10 @@ mod rewrite;
 #[cfg(feature = "harness")]
 mod kernel;
 #[cfg(feature = "harness")]
+#[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub use kernel::EmulatedKernel;
 #[cfg(feature = "harness")]
+#[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub mod search;
 
 use std::collections::BTreeMap;
