@@ -678,18 +678,30 @@ fn prepass_cf_ftz16(site: u32, x: f32) -> f32 {
     return prepass_cf_pick(PREPASS_CF_FLUSH, site, x, bitcast<f32>(bitcast<u32>(x) & 0x80000000u));
 }
 
+// The f32 value of a finite f16 code, from its bits alone: a compiler may fold
+// unpack2x16float(pack2x16float(x)) into x (Mesa 25 does), which would hide the rounding.
+fn prepass_cf_f16_value(h: u32) -> f32 {
+    let sign = select(1.0, -1.0, (h & 0x8000u) != 0u);
+    let e = (h >> 10u) & 0x1fu;
+    let m = h & 0x3ffu;
+    if (e == 0u) {
+        return sign * f32(m) * bitcast<f32>(0x33800000u); // m * 2^-24, exact
+    }
+    return sign * bitcast<f32>(((e + 112u) << 23u) | (m << 13u));
+}
+
 // One lane of pack2x16float, in range: either neighbouring f16 of x (the host's code is one of
 // them; the other is one f16 step away, toward x), then flushed or not if f16-subnormal. The
 // chosen value is an f16, so the final conversion is exact on any adapter.
 fn prepass_cf_f16_lane(site: u32, x0: f32) -> u32 {
     let x = prepass_cf_ftz(site + 1u, x0);
     let h = pack2x16float(vec2<f32>(x, 0.0)) & 0xffffu;
-    let vh = unpack2x16float(h).x;
+    let vh = prepass_cf_f16_value(h);
     var lo = vh;
     var hi = vh;
     if (vh != x) {
         let toward = select(h - 1u, h + 1u, abs(x) > abs(vh));
-        let vo = unpack2x16float(toward & 0xffffu).x;
+        let vo = prepass_cf_f16_value(toward & 0xffffu);
         lo = min(vh, vo);
         hi = max(vh, vo);
     }
