@@ -1038,19 +1038,7 @@ fn coverage_modules() -> Vec<(String, String)> {
             }
         }
     }
-    let example = Scene {
-        depth: DepthChoice {
-            storage: DepthStorage::Float32,
-            convention: DepthConvention::Reversed,
-            infinite_far: true,
-        },
-        normal: NormalChoice {
-            encoding: Some(NormalEncoding::Oct24),
-            fast_encoder: false,
-        },
-        position: PositionChoice::View,
-        ..Scene::default()
-    };
+    let example = common::deferred_minimal_scene();
     out.push((
         "examples/deferred_minimal (its scene module + deferred.wgsl)".into(),
         example.wgsl().unwrap() + include_str!("../examples/deferred_minimal/deferred.wgsl"),

@@ -39,20 +39,9 @@ fn deferred_minimal_example_size() {
 /// Lines of `Scene::wgsl` for the example's scene (reversed-Z infinite D32F, oct24, view
 /// positions), as the example builds it.
 fn deferred_minimal_scene_lines() -> usize {
-    use prepass::projection::DepthConvention;
-    use prepass::scene::*;
-    let scene = Scene {
-        depth: DepthChoice {
-            storage: DepthStorage::Float32,
-            convention: DepthConvention::Reversed,
-            infinite_far: true,
-        },
-        normal: NormalChoice {
-            encoding: Some(NormalEncoding::Oct24),
-            fast_encoder: false,
-        },
-        position: PositionChoice::View,
-        ..Scene::default()
-    };
-    scene.wgsl().unwrap().lines().count()
+    common::deferred_minimal_scene()
+        .wgsl()
+        .unwrap()
+        .lines()
+        .count()
 }

@@ -314,3 +314,25 @@ pub fn progress(label: &str, done: usize, total: usize) {
 pub fn full_strength() -> bool {
     std::env::var_os("PREPASS_FULL").is_some_and(|v| v != "0")
 }
+
+/// The `Scene` of `examples/deferred_minimal/main.rs`, as the example builds it (oct24 normals,
+/// reversed-Z infinite `Depth32Float`, view-space positions). The example keeps its own copy so
+/// it reads whole; the tests that read its modules take this one.
+#[allow(dead_code)]
+pub fn deferred_minimal_scene() -> prepass::scene::Scene {
+    use prepass::projection::DepthConvention;
+    use prepass::scene::*;
+    Scene {
+        depth: DepthChoice {
+            storage: DepthStorage::Float32,
+            convention: DepthConvention::Reversed,
+            infinite_far: true,
+        },
+        normal: NormalChoice {
+            encoding: Some(NormalEncoding::Oct24),
+            fast_encoder: false,
+        },
+        position: PositionChoice::View,
+        ..Scene::default()
+    }
+}

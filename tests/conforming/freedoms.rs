@@ -66,6 +66,20 @@ fn expect_all<T: PartialEq + std::fmt::Debug>(
     }
 }
 
+/// Per input, how far the f32 result in `got` (lane 0 of every `stride` words) lies from
+/// `exact` toward an end, in the spec's ULPs: `sign` +1 toward the upper end, −1 the lower.
+fn toward_end(got: &[u32], stride: usize, exact: &[f64], sign: f64) -> Vec<f64> {
+    exact
+        .iter()
+        .enumerate()
+        .map(|(i, &e)| sign * (f64::from(f32::from_bits(got[stride * i])) - e) / ulp32(e))
+        .collect()
+}
+
+fn most(v: &[f64]) -> f64 {
+    v.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+}
+
 fn f16_value(code: u32) -> f32 {
     half::f16::from_bits(code as u16).to_f32()
 }
@@ -392,9 +406,7 @@ fn division_reaches_both_ends(up: Policy, lo: Policy) -> Checked {
         .collect();
     let reach = |policy: Policy, sign: f64| -> f64 {
         let got = run("t_div", policy, Freedoms::ALL, &args, n).0;
-        (0..n)
-            .map(|i| sign * (f64::from(f32::from_bits(got[i])) - exact[i]) / ulp32(exact[i]))
-            .fold(f64::NEG_INFINITY, f64::max)
+        most(&toward_end(&got, 1, &exact, sign))
     };
     let (above, below) = (reach(up, 1.0), reach(lo, -1.0));
     if above < 2.0 || below < 2.0 {
@@ -509,14 +521,8 @@ fn inverse_sqrt_reaches_both_sides(up: Policy, lo: Policy) -> Checked {
             n,
         )
         .0;
-        let d: Vec<f64> = (0..n)
-            .map(|i| sign * (f64::from(f32::from_bits(got[i])) - exact[i]) / ulp32(exact[i]))
-            .collect();
-        let (least, most) = d
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &x| {
-                (a.min(x), b.max(x))
-            });
+        let d = toward_end(&got, 1, &exact, sign);
+        let (least, most) = (d.iter().copied().fold(f64::INFINITY, f64::min), most(&d));
         if least < 0.0 || most < 1.0 {
             return Err(format!(
                 "{policy}: between {least:.3} and {most:.3} ULP toward its end; want ≥ 0 everywhere and ≥ 1 somewhere"
@@ -531,6 +537,7 @@ fn inverse_sqrt_reaches_both_sides(up: Policy, lo: Policy) -> Checked {
 /// rounded down to whole half ULPs) under the upper policy and 2 below under the lower.
 fn unpack_reaches_both_ends(up: Policy, lo: Policy) -> Checked {
     let codes: Vec<u32> = (1..256u32).map(|v| v * 0x0101_0101).collect();
+    let exact: Vec<f64> = (1..256).map(|v| f64::from(v) / 255.0).collect();
     let n = codes.len();
     let mut out = Vec::new();
     for (policy, sign) in [(up, 1.0), (lo, -1.0)] {
@@ -542,18 +549,13 @@ fn unpack_reaches_both_ends(up: Policy, lo: Policy) -> Checked {
             n,
         )
         .0;
-        let most = (0..n)
-            .map(|i| {
-                let e = (i + 1) as f64 / 255.0;
-                sign * (f64::from(f32::from_bits(got[4 * i])) - e) / ulp32(e)
-            })
-            .fold(f64::NEG_INFINITY, f64::max);
-        if most < 2.0 {
+        let reached = most(&toward_end(&got, 4, &exact, sign));
+        if reached < 2.0 {
             return Err(format!(
-                "{policy}: reached {most:.3} ULP toward its end, want ≥ 2"
+                "{policy}: reached {reached:.3} ULP toward its end, want ≥ 2"
             ));
         }
-        out.push(format!("{policy}: {most:.3} ULP"));
+        out.push(format!("{policy}: {reached:.3} ULP"));
     }
     Ok(out.join("; "))
 }
