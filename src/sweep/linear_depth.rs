@@ -486,11 +486,13 @@ fn consts_of(path: &Path, case: &StiffCase) -> Vec<f32> {
     }
 }
 
-/// Every input of [`sampled_worst`]'s sample, evaluated by `run`, passed to `visit`.
+/// Every input of [`sampled_worst`]'s sample, evaluated by `run`: `visit` gets each input's
+/// error and a closure that builds the input's whole record, called only for inputs it keeps
+/// (most are not kept, so their descriptions are never formatted).
 fn each_sampled(
     path: &Path,
     run: &RunBatch<'_>,
-    mut visit: impl FnMut(SampledInput),
+    mut visit: impl FnMut(f64, &dyn Fn() -> SampledInput),
 ) -> Result<(), HarnessError> {
     let codes = sampled_codes();
     let depths: Vec<u32> = float_depths(1 << 16).iter().map(|z| z.to_bits()).collect();
@@ -507,19 +509,22 @@ fn each_sampled(
         let got = run(&args, inputs.len() as u64)?;
         for (&bits, &g) in inputs.iter().zip(&got) {
             let error = error_of(path, bits, n, f, g);
-            let input = if path.code {
-                format!("code {bits}")
-            } else {
-                format!("z {:e}", f32::from_bits(bits))
+            let record = || {
+                let input = if path.code {
+                    format!("code {bits}")
+                } else {
+                    format!("z {:e}", f32::from_bits(bits))
+                };
+                let e = exact_of(path, bits, n, f);
+                SampledInput {
+                    case,
+                    consts: if path.consts { k.clone() } else { Vec::new() },
+                    input_bits: bits,
+                    error,
+                    at: format!("near {n:e}, far {f:e}, {input}: {g:e} vs exact {e:e}"),
+                }
             };
-            let e = exact_of(path, bits, n, f);
-            visit(SampledInput {
-                case,
-                consts: if path.consts { k.clone() } else { Vec::new() },
-                input_bits: bits,
-                error,
-                at: format!("near {n:e}, far {f:e}, {input}: {g:e} vs exact {e:e}"),
-            });
+            visit(error, &record);
         }
     }
     Ok(())
@@ -531,9 +536,9 @@ fn each_sampled(
 /// the sky (`+∞` with an infinite far plane) counts as its documented answer.
 pub fn sampled_worst(path: &Path, run: &RunBatch<'_>) -> Result<(f64, String), HarnessError> {
     let mut worst = (0.0f64, String::new());
-    each_sampled(path, run, |s| {
-        if s.error > worst.0 {
-            worst = (s.error, s.at);
+    each_sampled(path, run, |error, record| {
+        if error > worst.0 {
+            worst = (error, record().at);
         }
     })?;
     Ok(worst)
@@ -547,10 +552,10 @@ pub fn worst_inputs(
     k: usize,
 ) -> Result<Vec<SampledInput>, HarnessError> {
     let mut top: Vec<SampledInput> = Vec::with_capacity(k + 1);
-    each_sampled(path, run, |s| {
-        if top.len() < k || s.error > top[top.len() - 1].error {
-            let at = top.partition_point(|t| t.error >= s.error);
-            top.insert(at, s);
+    each_sampled(path, run, |error, record| {
+        if top.len() < k || error > top[top.len() - 1].error {
+            let at = top.partition_point(|t| t.error >= error);
+            top.insert(at, record());
             top.truncate(k);
         }
     })?;
