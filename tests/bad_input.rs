@@ -264,7 +264,7 @@ fn wgsl_rows_stay_in_the_spec_domain_under_emulation() {
         let rows = rows_of(f);
         let kernel = EmulatedKernel::new(gpu(), source, name, &Emulation::new(Policy::Identity))
             .unwrap_or_else(|e| panic!("{name}: {e}"));
-        let arity = kernel.values().signature().params.len();
+        let arity = kernel.signature().params.len();
         let mut columns = vec![Vec::new(); arity];
         for r in &rows {
             for (col, &a) in columns.iter_mut().zip(r.args) {
@@ -281,7 +281,6 @@ fn wgsl_rows_stay_in_the_spec_domain_under_emulation() {
         }
         // The fuzz corpora's inputs as argument bits (`common::corpus_args`).
         let words: Vec<usize> = kernel
-            .values()
             .signature()
             .params
             .iter()

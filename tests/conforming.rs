@@ -858,6 +858,154 @@ fn identity_reproduces_every_shipped_module_bit_for_bit() {
     );
 }
 
+/// `encode_normal_oct32_fast` (`oct_encode_round(n, 16u)`) with every operation at the end
+/// `up` says, from exact arithmetic: sums and products of f32 values are exact in f64 here
+/// (inputs of one magnitude range), each then rounded to the neighbouring f32 in the policy's
+/// direction; the division is the correctly rounded quotient pushed 2 ULP (`core.wgsl`'s
+/// `prepass_cf_push` with `PREPASS_CF_DIV_HALVES` 4, ported); a three-term sum takes the
+/// largest (smallest) of its three orders; `p·0.5 + 0.5` is exact before its rounding. `None`
+/// for inputs this port does not cover (NaN, infinite or subnormal lanes, the zero vector).
+fn oct32_round_at_end(n: [f32; 3], up: bool) -> Option<u32> {
+    let dir = |x: f64| -> f32 {
+        let f = x as f32;
+        match f64::from(f).partial_cmp(&x) {
+            Some(std::cmp::Ordering::Less) if up => f.next_up(),
+            Some(std::cmp::Ordering::Greater) if !up => f.next_down(),
+            _ => f,
+        }
+    };
+    let m = n.iter().fold(0.0f32, |m, x| m.max(x.abs()));
+    if m == 0.0 || n.iter().any(|x| !x.is_normal() && *x != 0.0) {
+        return None;
+    }
+    let e = (m.to_bits() >> 23) & 0xff;
+    let scale = f32::from_bits((254 - e).max(1) << 23);
+    let s = n.map(|x| x * scale);
+    let a = s.map(|x| f64::from(x.abs()));
+    let sum = |x: f64, y: f64| f64::from(dir(x + y));
+    let orders = [
+        sum(sum(a[0], a[1]), a[2]),
+        sum(a[0], sum(a[1], a[2])),
+        sum(sum(a[0], a[2]), a[1]),
+    ];
+    let l1 = orders
+        .into_iter()
+        .reduce(|x, y| if up { x.max(y) } else { x.min(y) })?;
+    // prepass_cf_push(q, ±4): float by float while the spent quarters of the spacing below q
+    // stay within 8.
+    let push = |q: f32| -> f32 {
+        let below = |x: f32| (((x.to_bits() & 0x7fff_ffff).max(1) - 1) >> 23).max(1) as i32 - 150;
+        let pair = |x: f32, y: f32| {
+            let a = (x.to_bits() & 0x7fff_ffff).min(y.to_bits() & 0x7fff_ffff);
+            ((a >> 23) as i32).max(1) - 150
+        };
+        let (base, mut t, mut spent) = (below(q), q, 0);
+        loop {
+            let next = if up { t.next_up() } else { t.next_down() };
+            spent += 1 << (pair(t, next) - base + 2).clamp(0, 30);
+            if spent > 8 {
+                return t;
+            }
+            t = next;
+        }
+    };
+    let mut p = [0, 1].map(|k| push((f64::from(s[k]) / l1) as f32));
+    if s[2] < 0.0 {
+        let sgn = p.map(|x| if x >= 0.0 { 1.0f32 } else { -1.0 });
+        p = [
+            dir(1.0 - f64::from(p[1].abs())) * sgn[0],
+            dir(1.0 - f64::from(p[0].abs())) * sgn[1],
+        ];
+    }
+    let t = p.map(|x| dir(f64::from(x) * 0.5 + 0.5).clamp(0.0, 1.0));
+    let c = t.map(|x| dir(f64::from(x) * 65535.0).round_ties_even() as u32);
+    Some(c[0] | (c[1] << 16))
+}
+
+/// `EmulatedKernel` serves `Policy::Upper` and `Policy::Lower` from the searched module with the
+/// table all ones or all zeros (one compiled pipeline for both ends and the search). Against the
+/// policy's own module (the direction a constant), on 4096 inputs each:
+/// - every value bit and every "undefined" flag equal, for functions chosen to reach every kind
+///   of helper in few compilations: two linear-depth paths (division, fusion, reassociation),
+///   the roughness codec (exp2/log2, integer conversion, comparisons), the 24-bit octahedral
+///   encoder (the precise one: four candidates, every freedom) and decoder (inverseSqrt,
+///   flush), and lighting's combine;
+/// - for the 32-bit rounding encoder, where lavapipe (Mesa 22.3) compiles the constant-direction
+///   module's error terms differently and the two disagree on a few inputs: wherever they
+///   differ, the table's code is the one exact arithmetic gives ([`oct32_round_at_end`]).
+#[test]
+fn upper_and_lower_through_the_table_equal_their_own_modules() {
+    use prepass::conforming::emulate;
+    use prepass::wgsl::{LINEAR_DEPTH, LPP, NORMAL_OCT, ROUGHNESS};
+    let n = 4096;
+    let cases = [
+        (LINEAR_DEPTH, "view_z_from_depth24"),
+        (LINEAR_DEPTH, "view_z_from_reversed_depth_consts"),
+        (ROUGHNESS, "encode_log_roughness"),
+        (ROUGHNESS, "decode_log_roughness"),
+        (NORMAL_OCT, "encode_normal_oct24"),
+        (NORMAL_OCT, "decode_normal_oct24"),
+        (NORMAL_OCT, "encode_normal_oct32_fast"),
+        (LPP, "lpp_combine"),
+    ];
+    for (src, name) in cases {
+        let sig = Signature::read(src, name).unwrap();
+        let cols: Vec<Vec<u32>> = sig
+            .params
+            .iter()
+            .enumerate()
+            .map(|(k, p)| column_for(p.ty, n, 0x5eed ^ ((k as u64 + 1) * 0x1000_0001)))
+            .collect();
+        let args: Vec<Arg<'_>> = cols.iter().map(|c| Arg::column(c)).collect();
+        for policy in [Policy::Upper, Policy::Lower] {
+            let emu = Emulation::new(policy);
+            let own = emulate(src, &emu).unwrap();
+            let f = own.function_name(name).unwrap();
+            let flag = [prepass::conforming::UNDEFINED_FLAG.to_string()];
+            let (want, want_flags) = gpu()
+                .kernel_with_tail(&own.source, f, &flag)
+                .and_then(|k| k.run_with_tail(&args, n as u64))
+                .unwrap();
+            let k = EmulatedKernel::new(gpu(), src, name, &emu).unwrap();
+            assert_eq!(
+                k.emulated.emulation.policy,
+                Policy::Searched,
+                "{name}: not the table"
+            );
+            let (got, flags) = k.run(&args, n as u64).unwrap();
+            let want_flags: Vec<bool> = want_flags.iter().map(|&f| f != 0).collect();
+            assert_eq!(flags, want_flags, "{name} {policy}: undefined flags differ");
+            let w = sig.result.words();
+            let differ: Vec<usize> = (0..n)
+                .filter(|&i| want.words()[i * w..(i + 1) * w] != got.words()[i * w..(i + 1) * w])
+                .collect();
+            if name != "encode_normal_oct32_fast" {
+                assert!(
+                    differ.is_empty(),
+                    "{name} {policy}: the table's values differ from the policy module's at {} inputs",
+                    differ.len()
+                );
+                continue;
+            }
+            for &i in &differ {
+                let v: [f32; 3] = std::array::from_fn(|l| f32::from_bits(cols[0][i * 3 + l]));
+                let exact = oct32_round_at_end(v, policy == Policy::Upper);
+                assert_eq!(
+                    Some(got.words()[i]),
+                    exact,
+                    "{name} {policy} at {v:?}: the table gives {:#x}, its own module {:#x}, exact arithmetic {exact:x?}",
+                    got.words()[i],
+                    want.words()[i]
+                );
+            }
+            eprintln!(
+                "{name} {policy}: the constant-direction module differs from the table at {} of {n} inputs; the table's code is the exact one at each",
+                differ.len()
+            );
+        }
+    }
+}
+
 /// Every normal encoding on the emulated worst adapter (upper, lower, one seed): round-trip
 /// error beside the adapter's own (`round_trip` without emulation), every decode finite and
 /// unit within the conforming budget, the codes the emulated encoder chooses differently from

@@ -1,15 +1,43 @@
 //! Running an emulated module on the adapter (feature `harness`).
 
-use super::{Emulated, Emulation, emulate};
-use crate::harness::{Arg, Gpu, HarnessError, Kernel, Output};
+use super::search::DirectionTable;
+use super::{Emulated, Emulation, Policy, emulate};
+use crate::harness::{Arg, Gpu, HarnessError, Kernel, Output, Signature};
 
-/// A function of an emulated module, ready to run, with its "not defined by the spec" twin.
+/// The `var<private>` an emulated evaluation sets to 1 when one of its operations leaves the
+/// spec's domain (`core.wgsl`).
+pub const UNDEFINED_FLAG: &str = "prepass_cf_undefined";
+
+/// The table slots an evaluation under [`Policy::Searched`] read, as eight `u32` expressions
+/// (`core.wgsl`'s `prepass_cf_touched`, lanes in [`DirectionTable`]'s word order).
+fn touched_words() -> Vec<String> {
+    (0..8)
+        .map(|k| {
+            format!(
+                "prepass_cf_touched[{}u].{}",
+                k / 4,
+                ["x", "y", "z", "w"][k % 4]
+            )
+        })
+        .collect()
+}
+
+/// A function of an emulated module, ready to run, with its "not defined by the spec" flag.
+///
+/// One pipeline per function and policy set: the flag (and, searched, the slot mask) are tail
+/// words of the values' own pipeline ([`Gpu::kernel_with_tail`]). [`Policy::Upper`] and
+/// [`Policy::Lower`] run the [`Policy::Searched`] module with the table
+/// [`DirectionTable::UPPER`] or [`DirectionTable::LOWER`] as a uniform — the same results bit
+/// for bit (`tests/conforming.rs` checks it), and one compiled pipeline serves both ends.
 pub struct EmulatedKernel<'g> {
-    /// The emulated module.
+    /// The emulated module (under [`Policy::Upper`] and [`Policy::Lower`], the searched one).
     pub emulated: Emulated,
-    values: Kernel<'g>,
-    undefined: Option<Kernel<'g>>,
-    touched: Option<[Kernel<'g>; 2]>,
+    policy: Policy,
+    kernel: Kernel<'g>,
+    /// The signature callers pass arguments for (a fixed table's two parameters removed).
+    signature: Signature,
+    /// Under Upper and Lower: the table appended to every run.
+    table: Option<DirectionTable>,
 }
 
 impl<'g> EmulatedKernel<'g> {
@@ -20,100 +48,103 @@ impl<'g> EmulatedKernel<'g> {
         function: &str,
         emulation: &Emulation,
     ) -> Result<Self, HarnessError> {
-        let emulated =
-            emulate(source, emulation).map_err(|e| HarnessError::Shader(e.to_string()))?;
-        let missing = || HarnessError::Shader(format!("the module has no function `{function}`"));
-        let mut touched = None;
-        let (values, undefined) = if emulation.policy == super::Policy::Searched {
-            // The table wrappers: the function's parameters, then the table's two halves.
-            let (v, u) = emulated.table_functions(function).ok_or_else(|| {
-                HarnessError::Shader(format!(
-                    "`{function}` has no table wrapper (no result, or parameters it cannot spell)"
-                ))
-            })?;
-            if let Some((a, b)) = emulated.touched_functions(function) {
-                touched = Some([
-                    gpu.kernel(&emulated.source, a)?,
-                    gpu.kernel(&emulated.source, b)?,
-                ]);
-            }
-            (
-                gpu.kernel(&emulated.source, v)?,
-                Some(gpu.kernel(&emulated.source, u)?),
-            )
-        } else {
-            let emitted = emulated.function_name(function).ok_or_else(missing)?;
-            let undefined = match emulated.undefined_function(function) {
-                Some(u) => Some(gpu.kernel(&emulated.source, u)?),
-                None => None,
-            };
-            (gpu.kernel(&emulated.source, emitted)?, undefined)
+        let shader = |e: super::EmulateError| HarnessError::Shader(e.to_string());
+        let table = match emulation.policy {
+            Policy::Upper => Some(DirectionTable::UPPER),
+            Policy::Lower => Some(DirectionTable::LOWER),
+            _ => None,
         };
+        let mut tail = vec![UNDEFINED_FLAG.to_string()];
+        if table.is_some() || emulation.policy == Policy::Searched {
+            let searched = Emulation {
+                policy: Policy::Searched,
+                ..*emulation
+            };
+            let emulated = emulate(source, &searched).map_err(shader)?;
+            if let Some((wrapper, _)) = emulated.table_functions(function) {
+                // The slot mask too, fixed table or not: a searched kernel given one table
+                // (`DirectionTable::args`) is then the very pipeline Upper and Lower use.
+                tail.extend(touched_words());
+                let kernel = gpu.kernel_with_tail(&emulated.source, wrapper, &tail)?;
+                let mut signature = kernel.signature().clone();
+                if table.is_some() {
+                    signature.params.truncate(signature.params.len() - 2);
+                }
+                return Ok(EmulatedKernel {
+                    emulated,
+                    policy: emulation.policy,
+                    kernel,
+                    signature,
+                    table,
+                });
+            }
+            if table.is_none() {
+                return Err(HarnessError::Shader(format!(
+                    "`{function}` has no table wrapper (no result, or parameters it cannot spell)"
+                )));
+            }
+        }
+        // Identity, Seeded, and Upper/Lower where no table wrapper exists: the policy's module.
+        let emulated = emulate(source, emulation).map_err(shader)?;
+        let name = emulated.function_name(function).ok_or_else(|| {
+            HarnessError::Shader(format!("the module has no function `{function}`"))
+        })?;
+        let kernel = gpu.kernel_with_tail(&emulated.source, name, &tail)?;
         Ok(EmulatedKernel {
+            signature: kernel.signature().clone(),
             emulated,
-            values,
-            undefined,
-            touched,
+            policy: emulation.policy,
+            kernel,
+            table: None,
         })
     }
 
-    /// Under [`super::Policy::Searched`]: per element, the mask of the direction-table slots
-    /// its evaluation read (arguments as for [`EmulatedKernel::run`]).
-    pub fn touched(
-        &self,
-        args: &[Arg<'_>],
-        n: u64,
-    ) -> Result<Vec<super::search::DirectionTable>, HarnessError> {
-        let [a, b] = self.touched.as_ref().ok_or_else(|| {
-            HarnessError::Shader("slot masks exist under Policy::Searched only".into())
-        })?;
-        let (lo, hi) = std::thread::scope(|scope| {
-            let hi = scope.spawn(move || b.run(args, n));
-            (
-                a.run(args, n),
-                hi.join().expect("the mask kernel's thread panicked"),
-            )
-        });
-        let (lo, hi) = (lo?, hi?);
-        Ok(lo
-            .as_u32()
-            .chunks(4)
-            .zip(hi.as_u32().chunks(4))
-            .map(|(l, h)| {
-                super::search::DirectionTable([l[0], l[1], l[2], l[3], h[0], h[1], h[2], h[3]])
-            })
-            .collect())
+    /// The policy this kernel evaluates.
+    pub fn policy(&self) -> Policy {
+        self.policy
     }
 
-    /// The kernel computing the function's values.
-    pub fn values(&self) -> &Kernel<'g> {
-        &self.values
+    /// The parameters [`EmulatedKernel::run`] takes: the function's, and under
+    /// [`Policy::Searched`] the direction table's two halves after them.
+    pub fn signature(&self) -> &Signature {
+        &self.signature
+    }
+
+    /// Values, tail words (flag first), for `args` with a fixed table appended.
+    fn run_tail(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<u32>), HarnessError> {
+        match self.table {
+            Some(t) => {
+                let mut all = args.to_vec();
+                all.extend(t.args());
+                self.kernel.run_with_tail(&all, n)
+            }
+            None => self.kernel.run_with_tail(args, n),
+        }
+    }
+
+    /// Under [`Policy::Searched`]: per element, the mask of the direction-table slots
+    /// its evaluation read (arguments as for [`EmulatedKernel::run`]).
+    pub fn touched(&self, args: &[Arg<'_>], n: u64) -> Result<Vec<DirectionTable>, HarnessError> {
+        if self.policy != Policy::Searched {
+            return Err(HarnessError::Shader(
+                "slot masks exist under Policy::Searched only".into(),
+            ));
+        }
+        let (_, tail) = self.run_tail(args, n)?;
+        Ok(tail
+            .chunks_exact(9)
+            .map(|e| DirectionTable(std::array::from_fn(|k| e[1 + k])))
+            .collect())
     }
 
     /// Run `n` elements: the results, and per element whether an operation of its evaluation
     /// left the spec's domain (its result is then not defined by the spec). Under
-    /// [`super::Policy::Searched`] the last two arguments are the direction table's halves
-    /// ([`super::search::DirectionTable::args`], or a column of tables).
-    ///
-    /// The two kernels run on two threads: the first run of each compiles its pipeline, which on
-    /// a CPU adapter (lavapipe) costs far more than the dispatch, and the two compile at once.
+    /// [`Policy::Searched`] the last two arguments are the direction table's halves
+    /// ([`DirectionTable::args`], or a column of tables).
     pub fn run(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<bool>), HarnessError> {
-        let (out, flags) = std::thread::scope(|scope| {
-            let flags = self
-                .undefined
-                .as_ref()
-                .map(|k| scope.spawn(move || k.run(args, n)));
-            let out = self.values.run(args, n);
-            (
-                out,
-                flags.map(|h| h.join().expect("the flag kernel's thread panicked")),
-            )
-        });
-        let out = out?;
-        let flags = match flags {
-            Some(f) => f?.as_u32().iter().map(|&f| f != 0).collect(),
-            None => vec![false; out.len()],
-        };
+        let (out, tail) = self.run_tail(args, n)?;
+        let stride = self.kernel.tail_words();
+        let flags = tail.chunks_exact(stride).map(|e| e[0] != 0).collect();
         Ok((out, flags))
     }
 }

@@ -41,6 +41,17 @@
 //! - [`Policy::Searched`]: each site at the end a direction table says, the table passed with
 //!   every element; [`search`] climbs from the greedy tables to the worst one it finds.
 //!
+//! [`EmulatedKernel`] runs `Upper` and `Lower` as the searched module given the table of all
+//! ones or all zeros (a uniform), which is the same choice at every site: one compiled pipeline
+//! serves both ends, where a CPU adapter spends far more on compiling than on running. The
+//! direction is then a run-time value, and that also keeps the host compiler from folding it
+//! into the error-free transformations: on lavapipe (Mesa 22.3) the module built with the
+//! direction as a constant leaves some products unpushed (11 of 4096 inputs of the 32-bit
+//! rounding octahedral encoder under `Upper`, 7 under `Lower`), and at every one of them the
+//! table's result is the one exact arithmetic gives (`tests/conforming.rs`,
+//! `upper_and_lower_through_the_table_equal_their_own_modules`). [`emulate`] itself still
+//! writes the policy as a constant, for a module used on its own.
+//!
 //! The fixed policies are greedy — each operation at its own extreme — which is not always the
 //! composite's extreme (errors of opposite sign cancel); the seeded policy explores mixtures,
 //! and the search looks for the worst mixture per input. Neither is a proof: the
@@ -59,7 +70,8 @@
 //!
 //! The either-neighbour rounding of `+ − ×` is found exactly with error-free transformations
 //! (TwoSum, Dekker's product, Fast2Sum), and the fused `a·b + c` is built the same way; they need
-//! the host to round to nearest without contraction, reassociation or flushing, as lavapipe does.
+//! the host to round to nearest without contraction, reassociation or flushing, as lavapipe does
+//! where the directions are run-time values (see [`EmulatedKernel`] above for where it does not).
 //! Dekker's split is skipped where it could overflow or underflow (operands beyond 2^±60,
 //! products below 2^-100): there the host's rounding, one allowed neighbour, stands.
 //!
@@ -81,10 +93,12 @@
 //! # Indeterminate results
 //! An operation outside its domain — a divisor outside ±[2^-126, 2^126], `inverseSqrt`, `log`
 //! or `log2` of a value ≤ 0, subnormal or infinite, `exp2` that overflows, a `pack2x16float` lane
-//! beyond ±65504 — makes the spec's result indeterminate. The helpers then raise a private flag;
-//! for every function `f` of the module the emulation adds `prepass_cf_undefined__f` (same
-//! parameters, returns 1 when any operation of that evaluation left its domain), which the
-//! harness runs beside `f` ([`crate::conforming::EmulatedKernel`]): a check reports such inputs
+//! beyond ±65504 — makes the spec's result indeterminate. The helpers then raise a private flag,
+//! [`UNDEFINED_FLAG`]; [`crate::conforming::EmulatedKernel`] reads it after each evaluation as a
+//! tail word of the same pipeline ([`crate::harness::Gpu::kernel_with_tail`]), and for every
+//! function `f` of the module the emulation also adds `prepass_cf_undefined__f` (same
+//! parameters, returns 1 when any operation of that evaluation left its domain), for a module
+//! used on its own: a check reports such inputs
 //! as "not defined by the spec" instead of failing them. Any result that is not finite, and any
 //! operation on a NaN or an infinity, raises the flag too (the spec's finite-math assumption).
 //! The flag is per evaluation, not per data dependency: an operation whose indeterminate result
@@ -97,7 +111,7 @@ mod rewrite;
 mod kernel;
 #[cfg(feature = "harness")]
 #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
-pub use kernel::EmulatedKernel;
+pub use kernel::{EmulatedKernel, UNDEFINED_FLAG};
 #[cfg(feature = "harness")]
 #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub mod search;

@@ -50,6 +50,14 @@ fn slot_bits(ty: ValueType, slot: usize) -> String {
 /// Bindings, group 0: 0 = uniform parameters, 1.. = one storage buffer per column feed in
 /// parameter order, last = the output buffer.
 pub fn entry_point(sig: &Signature, feeds: &[Feed]) -> String {
+    entry_point_with_tail(sig, feeds, &[])
+}
+
+/// [`entry_point`] with `tail`: `u32` expressions evaluated after the call (a `var<private>`
+/// the function set, say), each stored as one more word of the element's output after the
+/// result's words. One pipeline then yields what would otherwise take a second compilation of
+/// the same function.
+pub fn entry_point_with_tail(sig: &Signature, feeds: &[Feed], tail: &[String]) -> String {
     let mut s = String::new();
     let slots = sig.params.len().max(1);
     let _ = writeln!(
@@ -91,6 +99,7 @@ pub fn entry_point(sig: &Signature, feeds: &[Feed]) -> String {
         "@group(0) @binding({binding}) var<storage, read_write> prepass_h_out: array<u32>;"
     );
     let w = sig.result.words();
+    let stride = w + tail.len();
     let _ = writeln!(
         body,
         "    let r = bitcast<{}>({}({}));",
@@ -98,11 +107,19 @@ pub fn entry_point(sig: &Signature, feeds: &[Feed]) -> String {
         sig.function,
         args.join(", ")
     );
-    if w == 1 {
+    if stride == 1 {
         let _ = writeln!(body, "    prepass_h_out[i] = r;");
     } else {
         for (k, lane) in ["x", "y", "z", "w"].iter().take(w).enumerate() {
-            let _ = writeln!(body, "    prepass_h_out[i * {w}u + {k}u] = r.{lane};");
+            let value = if w == 1 {
+                "r".to_string()
+            } else {
+                format!("r.{lane}")
+            };
+            let _ = writeln!(body, "    prepass_h_out[i * {stride}u + {k}u] = {value};");
+        }
+        for (j, e) in tail.iter().enumerate() {
+            let _ = writeln!(body, "    prepass_h_out[i * {stride}u + {}u] = {e};", w + j);
         }
     }
     let _ = write!(

@@ -214,9 +214,8 @@ impl<I, O, R> From<HarnessError> for CheckError<I, O, R> {
 
 /// A WGSL function prepared for property-based precision checks on an adapter.
 pub struct PrecisionCheck<'g> {
+    /// Under emulation its one tail word is 1 where the spec leaves the result undefined.
     kernel: Kernel<'g>,
-    /// Under emulation: the kernel returning 1 where the spec leaves the result undefined.
-    undefined: Option<Kernel<'g>>,
     function: String,
     config: CheckConfig,
 }
@@ -246,6 +245,14 @@ fn runner(seed: u64, case: u64) -> TestRunner {
 
 /// Run `kernel` once over `inputs`, each parameter's bits in a column of its own.
 fn run_batch<I: WgslArgs>(kernel: &Kernel<'_>, inputs: &[I]) -> Result<Output, HarnessError> {
+    Ok(run_batch_with_tail(kernel, inputs)?.0)
+}
+
+/// [`run_batch`] with the kernel's tail words.
+fn run_batch_with_tail<I: WgslArgs>(
+    kernel: &Kernel<'_>,
+    inputs: &[I],
+) -> Result<(Output, Vec<u32>), HarnessError> {
     let params = kernel.signature().params.len();
     let mut columns = vec![Vec::with_capacity(inputs.len() * 4); params];
     for x in inputs {
@@ -255,7 +262,7 @@ fn run_batch<I: WgslArgs>(kernel: &Kernel<'_>, inputs: &[I]) -> Result<Output, H
         .iter()
         .map(|c| Arg::Column(bytemuck::cast_slice(c)))
         .collect();
-    kernel.run(&args, inputs.len() as u64)
+    kernel.run_with_tail(&args, inputs.len() as u64)
 }
 
 /// An error fails unless it is within the bound; NaN (unmeasurable) fails.
@@ -269,7 +276,6 @@ impl<'g> PrecisionCheck<'g> {
     pub fn new(gpu: &'g Gpu, source: &str, function: &str) -> Result<Self, HarnessError> {
         Ok(Self {
             kernel: gpu.kernel(source, function)?,
-            undefined: None,
             function: function.to_string(),
             config: CheckConfig::default(),
         })
@@ -313,13 +319,10 @@ impl<'g> PrecisionCheck<'g> {
         let name = e.function_name(function).ok_or_else(|| {
             HarnessError::Shader(format!("the module has no function `{function}`"))
         })?;
-        let undefined = match e.undefined_function(function) {
-            Some(u) => Some(gpu.kernel(&e.source, u)?),
-            None => None,
-        };
+        // The flag comes from the same pipeline as the values (one compilation, not two).
+        let flag = [crate::conforming::UNDEFINED_FLAG.to_string()];
         Ok(Self {
-            kernel: gpu.kernel(&e.source, name)?,
-            undefined,
+            kernel: gpu.kernel_with_tail(&e.source, name, &flag)?,
             function: function.to_string(),
             config: CheckConfig::default(),
         })
@@ -388,11 +391,11 @@ impl<'g> PrecisionCheck<'g> {
         &self,
         inputs: &[I],
     ) -> Result<Vec<bool>, CheckError<I, O, R>> {
-        let Some(k) = &self.undefined else {
+        if self.kernel.tail_words() == 0 {
             return Ok(Vec::new());
-        };
-        let out = run_batch(k, inputs)?;
-        Ok(out.as_u32().iter().map(|&f| f != 0).collect())
+        }
+        let (_, flags) = run_batch_with_tail(&self.kernel, inputs)?;
+        Ok(flags.iter().map(|&f| f != 0).collect())
     }
 
     /// Check that `error(wgsl_result, reference(input)) ≤ bound` for `cases` inputs drawn from

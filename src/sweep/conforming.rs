@@ -1,9 +1,11 @@
 //! The normal-encoding sweeps on the worst conforming adapter: each codec's WGSL rewritten by
 //! [`crate::conforming::emulate`] and run through the same sweeps as on the adapter itself.
 
-use super::normal::{Codec, DecoderCheck, RoundTrip, decode_codes, round_trip};
-use crate::conforming::{EmulateError, Emulation, emulate};
-use crate::harness::{Gpu, HarnessError};
+use super::normal::{
+    Codec, DecoderCheck, RoundTrip, decode_codes_with, round_trip, round_trip_with,
+};
+use crate::conforming::{EmulateError, EmulatedKernel, Emulation, emulate};
+use crate::harness::{Arg, Gpu, HarnessError};
 
 /// How far a decoded vector's length may be from 1 on any conforming adapter, for a decoder
 /// that ends in WGSL's `normalize(v)` = `v / length(v)` (or `v·inverseSqrt(dot(v, v))`, which is
@@ -132,10 +134,16 @@ pub fn emulated_codec_sweep(
     inputs: &[[f32; 3]],
     codes: &[u32],
 ) -> Result<EmulatedCodec, HarnessError> {
-    let c = emulated_codec(codec, emulation).map_err(|e| HarnessError::Shader(e.to_string()))?;
-    let rt = round_trip(gpu, &c, inputs)?;
+    // EmulatedKernel: Upper and Lower share one compiled pipeline per function.
+    let kernel = |f: &str| EmulatedKernel::new(gpu, codec.source, f, emulation);
+    let (encode, decode) = (kernel(codec.encode)?, kernel(codec.decode)?);
+    let (encode, decode) = (
+        |a: &[Arg<'_>], n: u64| Ok(encode.run(a, n)?.0),
+        |a: &[Arg<'_>], n: u64| Ok(decode.run(a, n)?.0),
+    );
+    let rt = round_trip_with(codec, inputs, &encode, &decode)?;
     let round_trip_length = length_check(&rt.decoded, UNIT_TOLERANCE_CONFORMING);
-    let decoder = decode_codes(gpu, &c, codes)?;
+    let decoder = decode_codes_with(codec, codes, &decode)?;
     let max_code_step = rt
         .codes
         .iter()

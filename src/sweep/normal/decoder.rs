@@ -91,6 +91,19 @@ pub fn decode_range(
     Ok(check)
 }
 
+/// [`decode_codes`] with the decoder given as a runner (an emulated module's kernel, say), in
+/// one batch.
+pub fn decode_codes_with(
+    codec: &Codec,
+    codes: &[u32],
+    decode: &super::round_trip::Runner<'_>,
+) -> Result<DecoderCheck, HarnessError> {
+    let mut check = DecoderCheck::default();
+    let out = decode(&[Arg::column(codes)], codes.len() as u64)?;
+    check.add(codec, |i| codes[i as usize], out.as_vec3(), 0);
+    Ok(check)
+}
+
 /// Decode the given codes with `codec`'s WGSL decoder and check them (see [`DecoderCheck`]);
 /// results are streamed chunk by chunk.
 pub fn decode_codes(gpu: &Gpu, codec: &Codec, codes: &[u32]) -> Result<DecoderCheck, HarnessError> {

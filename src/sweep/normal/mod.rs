@@ -16,9 +16,11 @@ mod round_trip;
 mod unorm;
 
 pub use codecs::{CODECS, Codec, codec};
-pub use decoder::{DecoderCheck, decode_all_32, decode_codes, decode_range};
+pub use decoder::{DecoderCheck, decode_all_32, decode_codes, decode_codes_with, decode_range};
 pub use inputs::{adversarial_directions, bad_inputs, fibonacci_directions, stratified_codes32};
 pub use myth::{Myth, killzone_myth};
 pub use optimality::{Optimality, optimality_tolerance_deg, precise_optimality};
-pub use round_trip::{RoundTrip, UNIT_TOLERANCE, reference_error, round_trip};
+pub use round_trip::{
+    RoundTrip, Runner, UNIT_TOLERANCE, reference_error, round_trip, round_trip_with,
+};
 pub use unorm::{UnormForms, unorm_forms};

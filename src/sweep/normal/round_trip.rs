@@ -3,7 +3,7 @@
 
 use super::codecs::Codec;
 use super::pool::par_fold;
-use crate::harness::{Arg, Gpu, HarnessError};
+use crate::harness::{Arg, Gpu, HarnessError, Output};
 use crate::precision::metrics::{ErrorStats, Mismatches, angle_degrees, widen3};
 use glam::Vec3;
 
@@ -40,16 +40,29 @@ pub fn round_trip(
     codec: &Codec,
     inputs: &[[f32; 3]],
 ) -> Result<RoundTrip, HarnessError> {
+    let (encode, decode) = (
+        gpu.kernel(codec.source, codec.encode)?,
+        gpu.kernel(codec.source, codec.decode)?,
+    );
+    round_trip_with(codec, inputs, &|a, n| encode.run(a, n), &|a, n| {
+        decode.run(a, n)
+    })
+}
+
+/// A batch runner: the arguments and the element count in, the results out.
+pub type Runner<'a> = dyn Fn(&[Arg<'_>], u64) -> Result<Output, HarnessError> + 'a;
+
+/// [`round_trip`] with the encoder and decoder given as runners (an emulated module's kernels,
+/// say), measured the same way against `codec`'s twins.
+pub fn round_trip_with(
+    codec: &Codec,
+    inputs: &[[f32; 3]],
+    encode: &Runner<'_>,
+    decode: &Runner<'_>,
+) -> Result<RoundTrip, HarnessError> {
     let n = inputs.len() as u64;
-    let codes = gpu
-        .kernel(codec.source, codec.encode)?
-        .run(&[Arg::column(inputs)], n)?
-        .into_words();
-    let decoded = gpu
-        .kernel(codec.source, codec.decode)?
-        .run(&[Arg::column(&codes)], n)?
-        .as_vec3()
-        .to_vec();
+    let codes = encode(&[Arg::column(inputs)], n)?.into_words();
+    let decoded = decode(&[Arg::column(&codes)], n)?.as_vec3().to_vec();
     let parts = par_fold(inputs.len(), |r| {
         let base = r.start as u64;
         let mut e = ErrorStats::default();
