@@ -24,8 +24,8 @@ fn touched_words() -> Vec<String> {
 
 /// A function of an emulated module, ready to run, with its "not defined by the spec" flag.
 ///
-/// One pipeline per function and policy set: the flag (and, searched, the slot mask) are tail
-/// words of the values' own pipeline ([`Gpu::kernel_with_tail`]). [`Policy::Upper`] and
+/// One pipeline per function and policy set: the flag is a tail word of the values' own pipeline
+/// (and the search's slot mask, of a second one built only when asked for) ([`Gpu::kernel_with_tail`]). [`Policy::Upper`] and
 /// [`Policy::Lower`] run the [`Policy::Searched`] module with the table
 /// [`DirectionTable::UPPER`] or [`DirectionTable::LOWER`] as a uniform — the same results bit
 /// for bit (`tests/conforming.rs` checks it), and one compiled pipeline serves both ends.
@@ -34,6 +34,10 @@ pub struct EmulatedKernel<'g> {
     pub emulated: Emulated,
     policy: Policy,
     kernel: Kernel<'g>,
+    /// Under Searched: the same wrapper with the slot mask in its tail too, compiled only if
+    /// [`EmulatedKernel::touched`] runs (reading the mask keeps its bookkeeping alive, which
+    /// costs the compiler dearly; the values' pipeline lets it fall away).
+    masks: Option<Kernel<'g>>,
     /// The signature callers pass arguments for (a fixed table's two parameters removed).
     signature: Signature,
     /// Under Upper and Lower: the table appended to every run.
@@ -62,10 +66,11 @@ impl<'g> EmulatedKernel<'g> {
             };
             let emulated = emulate(source, &searched).map_err(shader)?;
             if let Some((wrapper, _)) = emulated.table_functions(function) {
-                // The slot mask too, fixed table or not: a searched kernel given one table
-                // (`DirectionTable::args`) is then the very pipeline Upper and Lower use.
-                tail.extend(touched_words());
+                // A searched kernel given one table (`DirectionTable::args`) is the very
+                // pipeline Upper and Lower use.
                 let kernel = gpu.kernel_with_tail(&emulated.source, wrapper, &tail)?;
+                tail.extend(touched_words());
+                let masks = Some(gpu.kernel_with_tail(&emulated.source, wrapper, &tail)?);
                 let mut signature = kernel.signature().clone();
                 if table.is_some() {
                     signature.params.truncate(signature.params.len() - 2);
@@ -74,6 +79,7 @@ impl<'g> EmulatedKernel<'g> {
                     emulated,
                     policy: emulation.policy,
                     kernel,
+                    masks,
                     signature,
                     table,
                 });
@@ -95,6 +101,7 @@ impl<'g> EmulatedKernel<'g> {
             emulated,
             policy: emulation.policy,
             kernel,
+            masks: None,
             table: None,
         })
     }
@@ -125,12 +132,15 @@ impl<'g> EmulatedKernel<'g> {
     /// Under [`Policy::Searched`]: per element, the mask of the direction-table slots
     /// its evaluation read (arguments as for [`EmulatedKernel::run`]).
     pub fn touched(&self, args: &[Arg<'_>], n: u64) -> Result<Vec<DirectionTable>, HarnessError> {
-        if self.policy != Policy::Searched {
-            return Err(HarnessError::Shader(
-                "slot masks exist under Policy::Searched only".into(),
-            ));
-        }
-        let (_, tail) = self.run_tail(args, n)?;
+        let masks = match (&self.masks, self.policy) {
+            (Some(m), Policy::Searched) => m,
+            _ => {
+                return Err(HarnessError::Shader(
+                    "slot masks exist under Policy::Searched only".into(),
+                ));
+            }
+        };
+        let (_, tail) = masks.run_with_tail(args, n)?;
         Ok(tail
             .chunks_exact(9)
             .map(|e| DirectionTable(std::array::from_fn(|k| e[1 + k])))
