@@ -930,7 +930,7 @@ fn oct32_round_at_end(n: [f32; 3], up: bool) -> Option<u32> {
 ///   the roughness codec (exp2/log2, integer conversion, comparisons), the 24-bit octahedral
 ///   encoder (the precise one: four candidates, every freedom) and decoder (inverseSqrt,
 ///   flush), and lighting's combine;
-/// - for the 32-bit rounding encoder, where lavapipe (Mesa 22.3) compiles the constant-direction
+/// - for the 32-bit rounding encoder, where lavapipe (Mesa 22.3, 25.0) compiles the constant-direction
 ///   module's error terms differently and the two disagree on a few inputs: wherever they
 ///   differ, the table's code is the one exact arithmetic gives ([`oct32_round_at_end`]).
 #[test]

@@ -45,7 +45,7 @@
 //! ones or all zeros (a uniform), which is the same choice at every site: one compiled pipeline
 //! serves both ends, where a CPU adapter spends far more on compiling than on running. The
 //! direction is then a run-time value, and that also keeps the host compiler from folding it
-//! into the error-free transformations: on lavapipe (Mesa 22.3) the module built with the
+//! into the error-free transformations: on lavapipe (Mesa 22.3 and 25.0) the module built with the
 //! direction as a constant leaves some products unpushed (11 of 4096 inputs of the 32-bit
 //! rounding octahedral encoder under `Upper`, 7 under `Lower`), and at every one of them the
 //! table's result is the one exact arithmetic gives (`tests/conforming.rs`,
