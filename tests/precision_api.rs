@@ -204,3 +204,55 @@ fn a_user_input_struct_runs_over_stiff_and_infinite_planes() {
         passed.cases
     );
 }
+
+/// `PrecisionCheck::searched` on `x / (y·z)`, where the greedy policies cancel (`y·z` rounded up
+/// makes the quotient small, `/` pushed up makes it large): the search must find more than the
+/// start tables, pass the derived bound, and fail — shrinking at the found table — at a bound
+/// the greedy policies' own emulated checks pass.
+#[test]
+fn searched_check_finds_what_the_greedy_policies_cancel() {
+    use prepass::conforming::search::SearchConfig;
+    use prepass::conforming::{Emulation, Policy};
+    let wgsl = "fn ratio(x: f32, y: f32, z: f32) -> f32 { return x / (y * z); }";
+    let strategy = (1.0f32..2.0, 1.0f32..2.0, 1.0f32..2.0);
+    let reference = |&(x, y, z): &(f32, f32, f32)| f64::from(x) / (f64::from(y) * f64::from(z));
+    // `y·z` to either neighbour is 2^-23 relative, at most 2 ULP of the quotient (whose ULP is
+    // at least 2^-24 of it); `/` adds its 2.5 ULP; 0.01 covers the second-order term.
+    let bound = 4.51;
+    let search = SearchConfig::default();
+    let check = PrecisionCheck::searched(gpu(), wgsl, "ratio", &Emulation::new(Policy::Searched))
+        .unwrap()
+        .cases(1024);
+    let passed = check
+        .run_searched(&strategy, reference, ulps, bound, &search, 32)
+        .unwrap_or_else(|e| panic!("{e}"));
+    let s = passed
+        .search
+        .clone()
+        .expect("a searched run reports its search");
+    eprintln!(
+        "x/(y·z): upper/lower {:.3} ULP, searched {:.3} ULP over {} climbed inputs ({} exhaustive, {} tables), bound {bound}",
+        s.greedy_max, s.found_max, s.inputs, s.exhaustive, s.evaluated
+    );
+    assert_eq!(passed.stats.max, s.found_max);
+    assert!(
+        s.found_max > s.greedy_max,
+        "the search found no more than the start tables ({} ULP)",
+        s.greedy_max
+    );
+    // At the greedy worst as the bound, Upper and Lower pass and the searched check fails.
+    for policy in [Policy::Upper, Policy::Lower] {
+        PrecisionCheck::emulated(gpu(), wgsl, "ratio", &Emulation::new(policy))
+            .unwrap()
+            .cases(1024)
+            .run(&strategy, reference, ulps, s.greedy_max)
+            .unwrap_or_else(|e| panic!("{policy}: {e}"));
+    }
+    let f =
+        expect_failure(check.run_searched(&strategy, reference, ulps, s.greedy_max, &search, 32));
+    assert_eq!(
+        f.worst.error, s.found_max,
+        "the failure is reported at the found table"
+    );
+    assert!(f.shrunk.error > s.greedy_max);
+}

@@ -21,6 +21,12 @@
 //! regenerated from the case's seed (value trees are deterministic given their random source);
 //! that costs CPU time proportional to the path length, far less than a GPU round trip.
 //!
+//! On the emulated worst conforming adapter ([`crate::conforming`]): [`PrecisionCheck::emulated`]
+//! runs the same check under one policy, and [`PrecisionCheck::searched`] with
+//! [`PrecisionCheck::run_searched`] searches each case's worst combination of ends, which on
+//! `x / (y·z)` finds far more than the fixed policies do (`tests/precision_api.rs` asserts it
+//! and prints both).
+//!
 //! ```no_run
 //! use prepass::harness::Gpu;
 //! use prepass::precision::check::PrecisionCheck;
@@ -92,6 +98,8 @@ pub struct Passed<I> {
     pub undefined: u64,
     /// The first such input.
     pub undefined_example: Option<I>,
+    /// Under [`PrecisionCheck::run_searched`]: what the search did (`None` otherwise).
+    pub search: Option<SearchSummary>,
 }
 
 /// One evaluated input: what the adapter returned, the reference, and the metric's error.
@@ -218,6 +226,31 @@ pub struct PrecisionCheck<'g> {
     kernel: Kernel<'g>,
     function: String,
     config: CheckConfig,
+    /// Under [`PrecisionCheck::searched`]: the kernel the search climbs with, and the direction
+    /// table every plain evaluation (shrinking) gives its elements.
+    search: Option<Searching<'g>>,
+}
+
+struct Searching<'g> {
+    kernel: crate::conforming::EmulatedKernel<'g>,
+    table: std::sync::Mutex<crate::conforming::search::DirectionTable>,
+}
+
+/// What [`PrecisionCheck::run_searched`] did, in [`Passed::search`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct SearchSummary {
+    /// Inputs climbed: the first batch's worst at the start tables.
+    pub inputs: usize,
+    /// Of them, searched exhaustively (every assignment of the table slots they read).
+    pub exhaustive: usize,
+    /// Direction tables evaluated over the whole batch.
+    pub evaluated: usize,
+    /// The largest error at the fixed policies' tables (all upper, all lower).
+    pub greedy_max: f64,
+    /// The largest error found.
+    pub found_max: f64,
+    /// The table that gave it.
+    pub table: crate::conforming::search::DirectionTable,
 }
 
 /// 64-bit mixer (splitmix64's finaliser): independent-looking seeds from consecutive indices.
@@ -244,24 +277,28 @@ fn runner(seed: u64, case: u64) -> TestRunner {
 }
 
 /// Run `kernel` once over `inputs`, each parameter's bits in a column of its own.
-fn run_batch<I: WgslArgs>(kernel: &Kernel<'_>, inputs: &[I]) -> Result<Output, HarnessError> {
-    Ok(run_batch_with_tail(kernel, inputs)?.0)
-}
-
-/// [`run_batch`] with the kernel's tail words.
-fn run_batch_with_tail<I: WgslArgs>(
-    kernel: &Kernel<'_>,
-    inputs: &[I],
-) -> Result<(Output, Vec<u32>), HarnessError> {
-    let params = kernel.signature().params.len();
+/// The inputs' argument columns (`params` of them), as words.
+fn columns_of<I: WgslArgs>(inputs: &[I], params: usize) -> Vec<Vec<u32>> {
     let mut columns = vec![Vec::with_capacity(inputs.len() * 4); params];
     for x in inputs {
         x.push_columns(&mut columns);
     }
-    let args: Vec<Arg<'_>> = columns
+    columns
+}
+
+/// Run `inputs` (then the `extra` arguments) through `kernel`: results and tail words.
+fn run_batch_with_tail<I: WgslArgs>(
+    kernel: &Kernel<'_>,
+    inputs: &[I],
+    extra: &[Arg<'_>],
+) -> Result<(Output, Vec<u32>), HarnessError> {
+    let params = kernel.signature().params.len() - extra.len();
+    let columns = columns_of(inputs, params);
+    let mut args: Vec<Arg<'_>> = columns
         .iter()
         .map(|c| Arg::Column(bytemuck::cast_slice(c)))
         .collect();
+    args.extend_from_slice(extra);
     kernel.run_with_tail(&args, inputs.len() as u64)
 }
 
@@ -278,6 +315,7 @@ impl<'g> PrecisionCheck<'g> {
             kernel: gpu.kernel(source, function)?,
             function: function.to_string(),
             config: CheckConfig::default(),
+            search: None,
         })
     }
 
@@ -325,7 +363,86 @@ impl<'g> PrecisionCheck<'g> {
             kernel: gpu.kernel_with_tail(&e.source, name, &flag)?,
             function: function.to_string(),
             config: CheckConfig::default(),
+            search: None,
         })
+    }
+
+    /// Prepare `function` for [`PrecisionCheck::run_searched`]: emulated as `emulation` says
+    /// (its freedoms and host accuracy; the policy is [`Policy::Searched`]), each case's worst
+    /// combination of ends searched ([`crate::conforming::search::climb`]) rather than the
+    /// greedy policies' (the search behind the README's "searched" linear-depth column).
+    ///
+    /// ```no_run
+    /// use prepass::conforming::{Emulation, Policy};
+    /// use prepass::conforming::search::SearchConfig;
+    /// use prepass::harness::Gpu;
+    /// use prepass::precision::check::PrecisionCheck;
+    /// use prepass::precision::metrics::ulp_error;
+    /// use prepass::precision::proptest::prelude::*;
+    ///
+    /// let gpu = Gpu::new()?;
+    /// let wgsl = "fn ratio(x: f32, y: f32, z: f32) -> f32 { return x / (y * z); }";
+    /// let unit = || 1.0f32..2.0;
+    /// let passed = PrecisionCheck::searched(&gpu, wgsl, "ratio", &Emulation::new(Policy::Searched))?
+    ///     .run_searched(
+    ///         &(unit(), unit(), unit()),
+    ///         |&(x, y, z): &(f32, f32, f32)| f64::from(x) / (f64::from(y) * f64::from(z)),
+    ///         |got: &f32, want: &f64| ulp_error(*got, *want),
+    ///         4.51, // `/` 2.5 ULP of a quotient whose divisor is off 1 ULP (≤ 2 ULP of it)
+    ///         &SearchConfig::default(),
+    ///         32,
+    ///     )
+    ///     .map_err(|e| e.to_string())?;
+    /// let s = passed.search.expect("a searched run reports its search");
+    /// println!("greedy {} ULP, searched {} ULP", s.greedy_max, s.found_max);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// [`Policy::Searched`]: crate::conforming::Policy::Searched
+    pub fn searched(
+        gpu: &'g Gpu,
+        source: &str,
+        function: &str,
+        emulation: &crate::conforming::Emulation,
+    ) -> Result<Self, HarnessError> {
+        use crate::conforming::{EmulatedKernel, Emulation, Policy, UNDEFINED_FLAG};
+        let emulation = Emulation {
+            policy: Policy::Searched,
+            ..*emulation
+        };
+        let kernel = EmulatedKernel::new(gpu, source, function, &emulation)?;
+        let (wrapper, _) = kernel
+            .emulated
+            .table_functions(function)
+            .ok_or_else(|| HarnessError::Shader(format!("`{function}` has no table wrapper")))?;
+        // The pipeline EmulatedKernel runs a single table with (the device caches it).
+        let plain = gpu.kernel_with_tail(
+            &kernel.emulated.source,
+            wrapper,
+            &[UNDEFINED_FLAG.to_string()],
+        )?;
+        Ok(Self {
+            kernel: plain,
+            function: function.to_string(),
+            config: CheckConfig::default(),
+            search: Some(Searching {
+                kernel,
+                table: std::sync::Mutex::new(crate::conforming::search::DirectionTable::UPPER),
+            }),
+        })
+    }
+
+    /// The arguments after the function's own: the current direction table under a search.
+    fn table_args(&self) -> Vec<Arg<'static>> {
+        match &self.search {
+            Some(s) => s
+                .table
+                .lock()
+                .unwrap_or_else(|p| p.into_inner())
+                .args()
+                .to_vec(),
+            None => Vec::new(),
+        }
     }
 
     /// Use `config` instead of the defaults.
@@ -360,7 +477,10 @@ impl<'g> PrecisionCheck<'g> {
         inputs: &[I],
     ) -> Result<Vec<O>, CheckError<I, O, R>> {
         let sig = self.kernel.signature();
-        let want: Vec<ValueType> = sig.params.iter().map(|p| p.ty).collect();
+        let mut want: Vec<ValueType> = sig.params.iter().map(|p| p.ty).collect();
+        if self.search.is_some() {
+            want.truncate(want.len() - 2); // the direction table's halves
+        }
         if I::param_types() != want || O::TYPE != sig.result {
             let show = |ts: &[ValueType]| {
                 ts.iter()
@@ -377,7 +497,7 @@ impl<'g> PrecisionCheck<'g> {
                 O::TYPE
             )));
         }
-        let out = run_batch(&self.kernel, inputs)?;
+        let (out, _) = run_batch_with_tail(&self.kernel, inputs, &self.table_args())?;
         Ok(out
             .words()
             .chunks(O::TYPE.words())
@@ -394,31 +514,21 @@ impl<'g> PrecisionCheck<'g> {
         if self.kernel.tail_words() == 0 {
             return Ok(Vec::new());
         }
-        let (_, flags) = run_batch_with_tail(&self.kernel, inputs)?;
+        let (_, flags) = run_batch_with_tail(&self.kernel, inputs, &self.table_args())?;
         Ok(flags.iter().map(|&f| f != 0).collect())
     }
 
-    /// Check that `error(wgsl_result, reference(input)) ≤ bound` for `cases` inputs drawn from
-    /// `strategy`, evaluated on the adapter in one batch; on failure, shrink the worst input on
-    /// the adapter and report both (see the module docs).
-    ///
-    /// `O`, the WGSL result type, is read from the metric's first parameter; a NaN error is a
-    /// failure.
-    pub fn run<S, O, R>(
+    /// Draw `cases` inputs; case k's tree comes from `runner(seed, k')`, k' counting rejections
+    /// too, so it can be regenerated later for shrinking. The inputs and their draw numbers.
+    #[allow(clippy::type_complexity)]
+    fn draw<S, O, R>(
         &self,
         strategy: &S,
-        reference: impl Fn(&S::Value) -> R,
-        error: impl Fn(&O, &R) -> f64,
-        bound: f64,
-    ) -> Result<Passed<S::Value>, CheckError<S::Value, O, R>>
+    ) -> Result<(Vec<S::Value>, Vec<u64>), CheckError<S::Value, O, R>>
     where
         S: Strategy,
-        S::Value: WgslArgs,
-        O: WgslValue,
     {
         let cfg = self.config;
-        // Draw: case k's tree comes from runner(seed, k'), k' counting rejections too, so it can
-        // be regenerated later for shrinking.
         let mut seeds = Vec::with_capacity(cfg.cases as usize);
         let mut inputs = Vec::with_capacity(cfg.cases as usize);
         let mut draw = 0u64;
@@ -440,6 +550,28 @@ impl<'g> PrecisionCheck<'g> {
             }
             draw += 1;
         }
+        Ok((inputs, seeds))
+    }
+
+    /// Check that `error(wgsl_result, reference(input)) ≤ bound` for `cases` inputs drawn from
+    /// `strategy`, evaluated on the adapter in one batch; on failure, shrink the worst input on
+    /// the adapter and report both (see the module docs).
+    ///
+    /// `O`, the WGSL result type, is read from the metric's first parameter; a NaN error is a
+    /// failure.
+    pub fn run<S, O, R>(
+        &self,
+        strategy: &S,
+        reference: impl Fn(&S::Value) -> R,
+        error: impl Fn(&O, &R) -> f64,
+        bound: f64,
+    ) -> Result<Passed<S::Value>, CheckError<S::Value, O, R>>
+    where
+        S: Strategy,
+        S::Value: WgslArgs,
+        O: WgslValue,
+    {
+        let (inputs, seeds) = self.draw::<S, O, R>(strategy)?;
         let outputs = self.evaluate::<S::Value, O, R>(&inputs)?;
         let undefined = self.undefined_flags::<S::Value, O, R>(&inputs)?;
         let (mut undefined_count, mut undefined_example) = (0u64, None);
@@ -477,6 +609,7 @@ impl<'g> PrecisionCheck<'g> {
                 worst: worst_any.map(|(i, _)| inputs[i].clone()),
                 undefined: undefined_count,
                 undefined_example,
+                search: None,
             });
         };
         let worst = Evaluated {
@@ -485,7 +618,32 @@ impl<'g> PrecisionCheck<'g> {
             reference: refs.swap_remove(w),
             error: w_err,
         };
-        let shrink = self.shrink(strategy, seeds[w], &reference, &error, bound)?;
+        let shape = (inputs.len() as u64, failing, stats);
+        Err(self.failure(strategy, seeds[w], worst, shape, &reference, &error, bound))
+    }
+
+    /// The failure at `worst` (drawn as `case`), shrunk; `shape` is the batch's case count,
+    /// failing count and statistics.
+    #[allow(clippy::too_many_arguments)]
+    fn failure<S, O, R>(
+        &self,
+        strategy: &S,
+        case: u64,
+        worst: Evaluated<S::Value, O, R>,
+        shape: (u64, u64, ErrorStats),
+        reference: &impl Fn(&S::Value) -> R,
+        error: &impl Fn(&O, &R) -> f64,
+        bound: f64,
+    ) -> CheckError<S::Value, O, R>
+    where
+        S: Strategy,
+        S::Value: WgslArgs,
+        O: WgslValue,
+    {
+        let shrink = match self.shrink(strategy, case, reference, error, bound) {
+            Ok(s) => s,
+            Err(e) => return e,
+        };
         let shrank = shrink.best.is_some();
         // Nothing simpler failed: the worst input is its own shrink.
         let shrunk = shrink.best.unwrap_or_else(|| Evaluated {
@@ -494,10 +652,11 @@ impl<'g> PrecisionCheck<'g> {
             reference: reference(&worst.input),
             error: worst.error,
         });
-        Err(CheckError::Failed(Box::new(Failure {
+        let (cases, failing, stats) = shape;
+        CheckError::Failed(Box::new(Failure {
             function: self.function.clone(),
             bound,
-            cases: inputs.len() as u64,
+            cases,
             failing,
             stats,
             worst,
@@ -507,8 +666,151 @@ impl<'g> PrecisionCheck<'g> {
             shrink_truncated: shrink.truncated,
             shrink_dispatches: shrink.dispatches,
             shrink_evaluations: shrink.evaluations,
-            seed: cfg.seed,
-        })))
+            seed: self.config.seed,
+        }))
+    }
+
+    /// [`PrecisionCheck::run`] on the emulated worst adapter, searched (a check built by
+    /// [`PrecisionCheck::searched`]): every case is evaluated at the tables of the fixed
+    /// policies (all upper, all lower: what [`PrecisionCheck::emulated`] gives under
+    /// `Policy::Upper` and `Policy::Lower`) and at the other starts of `search` (seeded
+    /// tables); the `searched_inputs` cases that erred most are climbed from every start
+    /// ([`crate::conforming::search::climb`]: every assignment of the table slots a case reads
+    /// where they are at most `search.exhaustive_slots`, steepest ascent elsewhere). Each case counts at the worst table found for it. A failure is shrunk
+    /// at the table of the worst case (the table, not the input, is what the search chose).
+    /// A NaN error ranks as +∞; a case undefined at every start table counts as undefined.
+    pub fn run_searched<S, O, R>(
+        &self,
+        strategy: &S,
+        reference: impl Fn(&S::Value) -> R,
+        error: impl Fn(&O, &R) -> f64,
+        bound: f64,
+        search: &crate::conforming::search::SearchConfig,
+        searched_inputs: usize,
+    ) -> Result<Passed<S::Value>, CheckError<S::Value, O, R>>
+    where
+        S: Strategy,
+        S::Value: WgslArgs,
+        O: WgslValue,
+    {
+        use crate::conforming::search::{DirectionTable, SearchConfig, climb};
+        let Some(s) = &self.search else {
+            return Err(CheckError::Setup(
+                "run_searched needs a check built by PrecisionCheck::searched".into(),
+            ));
+        };
+        let (inputs, seeds) = self.draw::<S, O, R>(strategy)?;
+        // The types, checked as every run checks them (and one evaluation at the upper table).
+        self.evaluate::<S::Value, O, R>(&inputs[..inputs.len().min(1)])?;
+        let n = inputs.len();
+        let refs: Vec<R> = inputs.iter().map(&reference).collect();
+        let params = S::Value::param_types().len();
+        let w = O::TYPE.words();
+        let measure = |i: usize, out: &Output, e: usize| {
+            let v = error(&O::from_words(&out.words()[e * w..(e + 1) * w]), &refs[i]);
+            if v.is_nan() { f64::INFINITY } else { v }
+        };
+        let cols = columns_of(&inputs, params);
+        let args: Vec<Arg<'_>> = cols
+            .iter()
+            .map(|c| Arg::Column(bytemuck::cast_slice(c)))
+            .collect();
+        // Every case at the fixed policies' tables (what Upper and Lower give), then at every
+        // start of the search (the seeded tables explore mixtures): one dispatch each.
+        let at = |starts: Vec<(&'static str, DirectionTable)>| {
+            let config = SearchConfig {
+                exhaustive_slots: 0,
+                rounds: 0,
+                starts,
+            };
+            climb(&s.kernel, &args, n, &measure, &config)
+        };
+        let fixed = vec![
+            ("upper", DirectionTable::UPPER),
+            ("lower", DirectionTable::LOWER),
+        ];
+        let greedy_max = at(fixed)?
+            .iter()
+            .map(|f| f.error)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let mut found = at(search.starts.clone())?;
+        // The worst cases at the starts, climbed.
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_by(|&a, &b| found[b].error.total_cmp(&found[a].error));
+        order.truncate(searched_inputs);
+        let picked: Vec<S::Value> = order.iter().map(|&i| inputs[i].clone()).collect();
+        let sub = columns_of(&picked, params);
+        let sub_args: Vec<Arg<'_>> = sub
+            .iter()
+            .map(|c| Arg::Column(bytemuck::cast_slice(c)))
+            .collect();
+        let sub_measure = |k: usize, out: &Output, e: usize| measure(order[k], out, e);
+        let climbed = climb(&s.kernel, &sub_args, order.len(), &sub_measure, search)?;
+        let exhaustive = climbed
+            .iter()
+            .filter(|f| f.slots <= search.exhaustive_slots)
+            .count();
+        let mut evaluated: usize = found.iter().map(|f| f.evaluated).sum();
+        for (&i, f) in order.iter().zip(climbed) {
+            evaluated += f.evaluated;
+            if f.error > found[i].error {
+                found[i] = f;
+            }
+        }
+        let (mut stats, mut failing, mut worst) = (ErrorStats::default(), 0u64, None);
+        let (mut undefined, mut undefined_example) = (0u64, None);
+        for (i, f) in found.iter().enumerate() {
+            if f.error == f64::NEG_INFINITY {
+                undefined += 1;
+                undefined_example.get_or_insert_with(|| inputs[i].clone());
+                continue;
+            }
+            stats.add(i as u64, f.error);
+            failing += u64::from(fails(f.error, bound));
+            if worst.is_none_or(|(_, e)| f.error > e) {
+                worst = Some((i, f.error));
+            }
+        }
+        let summary = SearchSummary {
+            inputs: order.len(),
+            exhaustive,
+            evaluated,
+            greedy_max,
+            found_max: worst.map_or(f64::NEG_INFINITY, |(_, e)| e),
+            table: worst.map_or(
+                crate::conforming::search::DirectionTable::UPPER,
+                |(i, _)| found[i].table,
+            ),
+        };
+        match worst {
+            Some((i, e)) if fails(e, bound) => {
+                // Shrink (and report) at the worst case's table.
+                *s.table.lock().unwrap_or_else(|p| p.into_inner()) = summary.table;
+                let got = self.evaluate::<S::Value, O, R>(std::slice::from_ref(&inputs[i]))?;
+                let got = got.into_iter().next().expect("one input, one result");
+                let r = reference(&inputs[i]);
+                let worst = Evaluated {
+                    error: error(&got, &r),
+                    input: inputs[i].clone(),
+                    got,
+                    reference: r,
+                };
+                let shape = (n as u64, failing, stats);
+                let failure =
+                    self.failure(strategy, seeds[i], worst, shape, &reference, &error, bound);
+                *s.table.lock().unwrap_or_else(|p| p.into_inner()) =
+                    crate::conforming::search::DirectionTable::UPPER;
+                Err(failure)
+            }
+            _ => Ok(Passed {
+                cases: n as u64,
+                stats,
+                worst: worst.map(|(i, _)| inputs[i].clone()),
+                undefined,
+                undefined_example,
+                search: Some(summary),
+            }),
+        }
     }
 
     /// proptest's shrinking walk from the failing input drawn as `case` (fail → simplify, pass → complicate, stop when the tree has no
