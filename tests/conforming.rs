@@ -922,9 +922,10 @@ fn oct32_round_at_end(n: [f32; 3], up: bool) -> Option<u32> {
     Some(c[0] | (c[1] << 16))
 }
 
-/// `EmulatedKernel` serves `Policy::Upper` and `Policy::Lower` from the searched module with the
-/// table all ones or all zeros (one compiled pipeline for both ends and the search). Against the
-/// policy's own module (the direction a constant), on 4096 inputs each:
+/// `EmulatedKernel` serves `Policy::Upper`, `Policy::Lower` and `Policy::Seeded` from the
+/// searched module with the table all ones or all zeros, or the seeded mode (one compiled
+/// pipeline for every policy and the search). Against the policy's own module (the direction
+/// or seed a constant), on 4096 inputs each:
 /// - every value bit and every "undefined" flag equal, for functions chosen to reach every kind
 ///   of helper in few compilations: two linear-depth paths (division, fusion, reassociation),
 ///   the roughness codec (exp2/log2, integer conversion, comparisons), the 24-bit octahedral
@@ -934,7 +935,7 @@ fn oct32_round_at_end(n: [f32; 3], up: bool) -> Option<u32> {
 ///   module's error terms differently and the two disagree on a few inputs: wherever they
 ///   differ, the table's code is the one exact arithmetic gives ([`oct32_round_at_end`]).
 #[test]
-fn upper_and_lower_through_the_table_equal_their_own_modules() {
+fn every_policy_through_the_searched_module_equals_its_own_module() {
     use prepass::conforming::emulate;
     use prepass::wgsl::{LINEAR_DEPTH, LPP, NORMAL_OCT, ROUGHNESS};
     let n = 4096;
@@ -957,7 +958,19 @@ fn upper_and_lower_through_the_table_equal_their_own_modules() {
             .map(|(k, p)| column_for(p.ty, n, 0x5eed ^ ((k as u64 + 1) * 0x1000_0001)))
             .collect();
         let args: Vec<Arg<'_>> = cols.iter().map(|c| Arg::column(c)).collect();
-        for policy in [Policy::Upper, Policy::Lower] {
+        // Seeded too, except where only the directed ends have an exact reference to decide a
+        // difference (the 32-bit rounding encoder: see above).
+        let seeded = name != "encode_normal_oct32_fast";
+        let policies = [
+            Policy::Upper,
+            Policy::Lower,
+            Policy::Seeded(1),
+            Policy::Seeded(7),
+        ];
+        for policy in policies
+            .into_iter()
+            .filter(|p| seeded || !matches!(p, Policy::Seeded(_)))
+        {
             let emu = Emulation::new(policy);
             let own = emulate(src, &emu).unwrap();
             let f = own.function_name(name).unwrap();

@@ -42,9 +42,19 @@ fn prepass_cf_hash(v: u32) -> u32 {
     return x;
 }
 
+// Under the searched policy the table wrappers' third argument, (mode, seed, 0, 0): mode 0
+// reads the direction table, mode 1 is the seeded policy with that seed. One compiled module
+// then serves upper, lower, every seed and the search.
+var<private> prepass_cf_mode: vec4<u32>;
+
+fn prepass_cf_seeded() -> bool {
+    return PREPASS_CF_POLICY == 3u || (PREPASS_CF_POLICY == 4u && prepass_cf_mode.x == 1u);
+}
+
 fn prepass_cf_rand(site: u32, x: f32, y: f32) -> u32 {
     let h = prepass_cf_hash(bitcast<u32>(x) ^ prepass_cf_hash(bitcast<u32>(y) + 0x9e3779b9u));
-    return prepass_cf_hash(PREPASS_CF_SEED ^ prepass_cf_hash(site ^ h));
+    let seed = select(PREPASS_CF_SEED, prepass_cf_mode.y, PREPASS_CF_POLICY == 4u);
+    return prepass_cf_hash(seed ^ prepass_cf_hash(site ^ h));
 }
 
 // The direction table of the searched policy (PREPASS_CF_POLICY 4): one bit per slot, 1 = the
@@ -68,7 +78,7 @@ fn prepass_cf_on(freedom: u32) -> bool {
 }
 
 // Direction of a push inside an interval: +1 (upper end), -1 (lower end), seeded -1/0/+1, or
-// the searched table's.
+// the searched table's (policy 4 in mode 1: seeded).
 fn prepass_cf_dir(freedom: u32, site: u32, x: f32, y: f32) -> i32 {
     if (!prepass_cf_on(freedom)) {
         return 0;
@@ -79,7 +89,7 @@ fn prepass_cf_dir(freedom: u32, site: u32, x: f32, y: f32) -> i32 {
     if (PREPASS_CF_POLICY == 2u) {
         return -1;
     }
-    if (PREPASS_CF_POLICY == 4u) {
+    if (!prepass_cf_seeded()) {
         return prepass_cf_table_dir(site);
     }
     return i32(prepass_cf_rand(site, x, y) % 3u) - 1;
@@ -96,7 +106,7 @@ fn prepass_cf_pick(freedom: u32, site: u32, a: f32, b: f32) -> f32 {
     if (PREPASS_CF_POLICY == 2u) {
         return min(a, b);
     }
-    if (PREPASS_CF_POLICY == 4u) {
+    if (!prepass_cf_seeded()) {
         return select(min(a, b), max(a, b), prepass_cf_table_dir(site ^ 0x5bd1e995u) > 0);
     }
     return select(a, b, (prepass_cf_rand(site ^ 0x5bd1e995u, a, b) & 1u) == 1u);

@@ -24,13 +24,15 @@ fn touched_words() -> Vec<String> {
 
 /// A function of an emulated module, ready to run, with its "not defined by the spec" flag.
 ///
-/// One pipeline per function and policy set: the flag is a tail word of the values' own pipeline
-/// (and the search's slot mask, of a second one built only when asked for) ([`Gpu::kernel_with_tail`]). [`Policy::Upper`] and
-/// [`Policy::Lower`] run the [`Policy::Searched`] module with the table
-/// [`DirectionTable::UPPER`] or [`DirectionTable::LOWER`] as a uniform — the same results bit
-/// for bit (`tests/conforming.rs` checks it), and one compiled pipeline serves both ends.
+/// One pipeline per function for every policy but the identity: the flag is a tail word of the
+/// values' own pipeline ([`Gpu::kernel_with_tail`]; the search's slot mask, of a second one
+/// built only when asked for). [`Policy::Upper`], [`Policy::Lower`] and [`Policy::Seeded`] run
+/// the [`Policy::Searched`] module with, as uniforms, the table [`DirectionTable::UPPER`] or
+/// [`DirectionTable::LOWER`], or the seeded mode ([`super::search::seeded_mode`]): the
+/// policies' own results (`tests/conforming.rs` checks it), from one compiled pipeline.
 pub struct EmulatedKernel<'g> {
-    /// The emulated module (under [`Policy::Upper`] and [`Policy::Lower`], the searched one).
+    /// The emulated module (under [`Policy::Upper`], [`Policy::Lower`] and [`Policy::Seeded`],
+    /// the searched one).
     pub emulated: Emulated,
     policy: Policy,
     kernel: Kernel<'g>,
@@ -40,8 +42,9 @@ pub struct EmulatedKernel<'g> {
     masks: Option<Kernel<'g>>,
     /// The signature callers pass arguments for (a fixed table's two parameters removed).
     signature: Signature,
-    /// Under Upper and Lower: the table appended to every run.
-    table: Option<DirectionTable>,
+    /// Under Upper, Lower and Seeded: the trailing arguments appended to every run (a table and
+    /// the mode).
+    fixed: Option<[Arg<'static>; 3]>,
 }
 
 impl<'g> EmulatedKernel<'g> {
@@ -53,13 +56,17 @@ impl<'g> EmulatedKernel<'g> {
         emulation: &Emulation,
     ) -> Result<Self, HarnessError> {
         let shader = |e: super::EmulateError| HarnessError::Shader(e.to_string());
-        let table = match emulation.policy {
-            Policy::Upper => Some(DirectionTable::UPPER),
-            Policy::Lower => Some(DirectionTable::LOWER),
+        let fixed = match emulation.policy {
+            Policy::Upper => Some(DirectionTable::UPPER.args()),
+            Policy::Lower => Some(DirectionTable::LOWER.args()),
+            Policy::Seeded(seed) => {
+                let [a, b, _] = DirectionTable::UPPER.args();
+                Some([a, b, Arg::Splat(super::search::seeded_mode(seed))])
+            }
             _ => None,
         };
         let mut tail = vec![UNDEFINED_FLAG.to_string()];
-        if table.is_some() || emulation.policy == Policy::Searched {
+        if fixed.is_some() || emulation.policy == Policy::Searched {
             let searched = Emulation {
                 policy: Policy::Searched,
                 ..*emulation
@@ -72,8 +79,8 @@ impl<'g> EmulatedKernel<'g> {
                 tail.extend(touched_words());
                 let masks = Some(gpu.kernel_with_tail(&emulated.source, wrapper, &tail)?);
                 let mut signature = kernel.signature().clone();
-                if table.is_some() {
-                    signature.params.truncate(signature.params.len() - 2);
+                if fixed.is_some() {
+                    signature.params.truncate(signature.params.len() - 3);
                 }
                 return Ok(EmulatedKernel {
                     emulated,
@@ -81,10 +88,10 @@ impl<'g> EmulatedKernel<'g> {
                     kernel,
                     masks,
                     signature,
-                    table,
+                    fixed,
                 });
             }
-            if table.is_none() {
+            if fixed.is_none() {
                 return Err(HarnessError::Shader(format!(
                     "`{function}` has no table wrapper (no result, or parameters it cannot spell)"
                 )));
@@ -102,7 +109,7 @@ impl<'g> EmulatedKernel<'g> {
             policy: emulation.policy,
             kernel,
             masks: None,
-            table: None,
+            fixed: None,
         })
     }
 
@@ -112,17 +119,17 @@ impl<'g> EmulatedKernel<'g> {
     }
 
     /// The parameters [`EmulatedKernel::run`] takes: the function's, and under
-    /// [`Policy::Searched`] the direction table's two halves after them.
+    /// [`Policy::Searched`] the direction table's two halves and the mode after them.
     pub fn signature(&self) -> &Signature {
         &self.signature
     }
 
     /// Values, tail words (flag first), for `args` with a fixed table appended.
     fn run_tail(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<u32>), HarnessError> {
-        match self.table {
-            Some(t) => {
+        match &self.fixed {
+            Some(f) => {
                 let mut all = args.to_vec();
-                all.extend(t.args());
+                all.extend_from_slice(f);
                 self.kernel.run_with_tail(&all, n)
             }
             None => self.kernel.run_with_tail(args, n),
@@ -149,8 +156,8 @@ impl<'g> EmulatedKernel<'g> {
 
     /// Run `n` elements: the results, and per element whether an operation of its evaluation
     /// left the spec's domain (its result is then not defined by the spec). Under
-    /// [`Policy::Searched`] the last two arguments are the direction table's halves
-    /// ([`DirectionTable::args`], or a column of tables).
+    /// [`Policy::Searched`] the last three arguments are the direction table's halves and the
+    /// mode ([`DirectionTable::args`], or columns of tables and [`super::search::TABLE_MODE`]).
     pub fn run(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<bool>), HarnessError> {
         let (out, tail) = self.run_tail(args, n)?;
         let stride = self.kernel.tail_words();

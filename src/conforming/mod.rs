@@ -42,14 +42,15 @@
 //!   every element; [`search`] climbs from the greedy tables to the worst one it finds.
 //!
 //! [`EmulatedKernel`] runs `Upper` and `Lower` as the searched module given the table of all
-//! ones or all zeros (a uniform), which is the same choice at every site: one compiled pipeline
-//! serves both ends, where a CPU adapter spends far more on compiling than on running. The
+//! ones or all zeros (a uniform), which is the same choice at every site, and `Seeded(s)` as
+//! the same module in its seeded mode with seed `s`: one compiled pipeline serves every policy
+//! but the identity, where a CPU adapter spends far more on compiling than on running. The
 //! direction is then a run-time value, and that also keeps the host compiler from folding it
 //! into the error-free transformations: on lavapipe (Mesa 22.3 and 25.0) the module built with the
 //! direction as a constant leaves some products unpushed (11 of 4096 inputs of the 32-bit
 //! rounding octahedral encoder under `Upper`, 7 under `Lower`), and at every one of them the
 //! table's result is the one exact arithmetic gives (`tests/conforming.rs`,
-//! `upper_and_lower_through_the_table_equal_their_own_modules`). [`emulate`] itself still
+//! `every_policy_through_the_searched_module_equals_its_own_module`). [`emulate`] itself still
 //! writes the policy as a constant, for a module used on its own.
 //!
 //! The fixed policies are greedy — each operation at its own extreme — which is not always the
@@ -354,8 +355,9 @@ impl Emulated {
     }
 
     /// Under [`Policy::Searched`]: the names of `function`'s table wrappers, (values, flag),
-    /// which take `function`'s parameters and then the two `vec4<u32>` halves of a
-    /// [`search::DirectionTable`]. `None` under other policies, and for functions without a
+    /// which take `function`'s parameters, then the two `vec4<u32>` halves of a
+    /// [`search::DirectionTable`] and the mode ([`search::TABLE_MODE`] or
+    /// [`search::seeded_mode`]). `None` under other policies, and for functions without a
     /// result or with parameters the wrapper cannot spell.
     pub fn table_functions(&self, function: &str) -> Option<(&str, &str)> {
         self.tables
@@ -438,15 +440,20 @@ pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateE
             .as_ref()
             .and_then(|r| rewrite::wgsl_type(&m1, r.ty));
         if let (Policy::Searched, Some(result)) = (emulation.policy, &result) {
-            // The table wrappers: the direction table from two trailing vec4<u32> arguments.
+            // The table wrappers: the direction table from two trailing vec4<u32> arguments, then
+            // the mode (table or seeded, and the seed).
             let p = rewrite::PREFIX;
             let tparams = [
                 params.clone(),
-                vec![format!("{p}t0: vec4<u32>"), format!("{p}t1: vec4<u32>")],
+                vec![
+                    format!("{p}t0: vec4<u32>"),
+                    format!("{p}t1: vec4<u32>"),
+                    format!("{p}t2: vec4<u32>"),
+                ],
             ]
             .concat()
             .join(", ");
-            let set = format!("{p}dirs = array<vec4<u32>, 2>({p}t0, {p}t1);");
+            let set = format!("{p}dirs = array<vec4<u32>, 2>({p}t0, {p}t1);\n    {p}mode = {p}t2;");
             let (tv, tu) = (
                 format!("{p}table__{name}"),
                 format!("{p}table_undefined__{name}"),

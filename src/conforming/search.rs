@@ -61,11 +61,22 @@ impl DirectionTable {
         [[w[0], w[1], w[2], w[3]], [w[4], w[5], w[6], w[7]]]
     }
 
-    /// The two trailing arguments that give every element this table.
-    pub fn args(self) -> [Arg<'static>; 2] {
+    /// The three trailing arguments that give every element this table (the halves, then
+    /// [`TABLE_MODE`]).
+    pub fn args(self) -> [Arg<'static>; 3] {
         let [a, b] = self.halves();
-        [Arg::Splat(a), Arg::Splat(b)]
+        [Arg::Splat(a), Arg::Splat(b), Arg::Splat(TABLE_MODE)]
     }
+}
+
+/// The table wrappers' last argument, `(mode, seed, 0, 0)`, for reading the direction table.
+pub const TABLE_MODE: [u32; 4] = [0; 4];
+
+/// The table wrappers' last argument for [`Policy::Seeded`](super::Policy::Seeded)`(seed)`:
+/// each site's choice drawn per invocation from the seed as that policy draws it (the table
+/// is then not read), so one compiled module serves every seed too.
+pub fn seeded_mode(seed: u32) -> [u32; 4] {
+    [1, seed, 0, 0]
 }
 
 /// How to search.
@@ -166,6 +177,7 @@ fn evaluate(
     }
     args.push(Arg::column(&halves[0]));
     args.push(Arg::column(&halves[1]));
+    args.push(Arg::Splat(TABLE_MODE));
     if masks {
         return Ok((Vec::new(), kernel.touched(&args, n as u64)?));
     }

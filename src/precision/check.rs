@@ -479,7 +479,7 @@ impl<'g> PrecisionCheck<'g> {
         let sig = self.kernel.signature();
         let mut want: Vec<ValueType> = sig.params.iter().map(|p| p.ty).collect();
         if self.search.is_some() {
-            want.truncate(want.len() - 2); // the direction table's halves
+            want.truncate(want.len() - 3); // the direction table's halves and the mode
         }
         if I::param_types() != want || O::TYPE != sig.result {
             let show = |ts: &[ValueType]| {
