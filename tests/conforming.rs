@@ -803,6 +803,15 @@ fn column_for(ty: prepass::harness::ValueType, n: usize, seed: u64) -> Vec<u32> 
         .collect()
 }
 
+/// One [`column_for`] per parameter of `sig`, parameter k drawn from `seed ^ (k + 1)·0x1000_0001`.
+fn columns_for(sig: &Signature, n: usize, seed: u64) -> Vec<Vec<u32>> {
+    sig.params
+        .iter()
+        .enumerate()
+        .map(|(k, p)| column_for(p.ty, n, seed ^ ((k as u64 + 1) * 0x1000_0001)))
+        .collect()
+}
+
 #[test]
 fn identity_reproduces_every_shipped_module_bit_for_bit() {
     let n = 4096;
@@ -826,12 +835,7 @@ fn identity_reproduces_every_shipped_module_bit_for_bit() {
             };
             let (source, name) = (source.as_str(), name.as_str());
             let sig = Signature::read(source, name).unwrap();
-            let cols: Vec<Vec<u32>> = sig
-                .params
-                .iter()
-                .enumerate()
-                .map(|(k, p)| column_for(p.ty, n, 0x9e37_79b9 ^ ((k as u64 + 1) * 0x1000_0001)))
-                .collect();
+            let cols = columns_for(&sig, n, 0x9e37_79b9);
             let args: Vec<Arg<'_>> = cols.iter().map(|c| Arg::column(c)).collect();
             let original = run_kernel(source, name, &args, n as u64);
             let k = EmulatedKernel::new(gpu(), source, name, &Emulation::new(Policy::Identity))
@@ -951,12 +955,7 @@ fn every_policy_through_the_searched_module_equals_its_own_module() {
     ];
     for (src, name) in cases {
         let sig = Signature::read(src, name).unwrap();
-        let cols: Vec<Vec<u32>> = sig
-            .params
-            .iter()
-            .enumerate()
-            .map(|(k, p)| column_for(p.ty, n, 0x5eed ^ ((k as u64 + 1) * 0x1000_0001)))
-            .collect();
+        let cols = columns_for(&sig, n, 0x5eed);
         let args: Vec<Arg<'_>> = cols.iter().map(|c| Arg::column(c)).collect();
         // Seeded too, except where only the directed ends have an exact reference to decide a
         // difference (the 32-bit rounding encoder: see above).
