@@ -49,44 +49,41 @@ fn hemioct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
     return clamp(q * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(1.0)) * f32(m);
 }
 
-// The exact integer direction D that code (u, v) stands for (see the header).
+// The exact integer direction D that code (u, v) stands for (see the header). a and b are odd,
+// so a + b and a - b are even and the arithmetic shift halves them exactly.
 fn hemioct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
     let mi = i32(m);
-    let a = 2 * i32(uv.x) - mi;
-    let b = 2 * i32(uv.y) - mi;
-    return vec3<i32>((a + b) / 2, (a - b) / 2, mi - max(abs(a), abs(b)));
+    let ab = bitcast<vec2<i32>>(uv + uv) - vec2<i32>(mi);
+    let h = (ab + ab.yx * vec2<i32>(1, -1)) >> vec2<u32>(1u);
+    let aab = abs(ab);
+    return vec3<i32>(h, mi - max(aab.x, aab.y));
 }
 
-// sin^2 of the angle to the code's direction times |s|^2 (see normal_oct.wgsl's oct_sin2).
-fn hemioct_sin2(s: vec3<f32>, uv: vec2<u32>, m: u32) -> f32 {
-    let d = hemioct_lattice(uv, m);
-    let ad = vec3<u32>(abs(d));
-    let sq = ad * ad;
-    let len2 = f32(sq.x + sq.y + sq.z);
+// One step of the precise encoder's choice, as normal_oct.wgsl's oct_try: the code c00 + off
+// replaces the best so far (code in xy, score bits in z) only if its score, sin^2 of the angle
+// to s times |s|^2, is strictly smaller; non-negative finite scores order as their bits.
+fn hemioct_try(s: vec3<f32>, m: u32, c00: vec2<u32>, off: vec2<u32>, best: vec3<u32>) -> vec3<u32> {
+    let c = c00 + off;
+    let d = hemioct_lattice(c, m);
+    // |D|^2 <= M^2: exact in u32 (squares of the two's-complement bits, mod 2^32), one rounding.
+    let du = bitcast<vec3<u32>>(d);
+    let sq = du * du;
     let x = cross(s, vec3<f32>(d));
-    return dot(x, x) / len2;
+    let score = bitcast<u32>(dot(x, x) / f32(sq.x + sq.y + sq.z));
+    return select(best, vec3<u32>(c, score), score < best.z);
 }
 
 // Precise: the best of the four codes around the continuous coordinates, tried in the order
-// (0,0), (1,0), (0,1), (1,1), a later one winning only if strictly closer. Straight-line (no
-// loop, no variables): each later candidate replaces the best so far through a select.
+// (0,0), (1,0), (0,1), (1,1), a later one winning only if strictly closer ((0,0) always
+// replaces the +inf start). Straight-line (no loop, no variables).
 fn encode_normal_hemioct24(n: vec3<f32>) -> u32 {
     let m = 4095u;
     let s = hemioct_sanitize(n);
     let c00 = min(vec2<u32>(floor(hemioct_continuous(s, m))), vec2<u32>(m - 1u));
-    let c10 = c00 + vec2<u32>(1u, 0u);
-    let c01 = c00 + vec2<u32>(0u, 1u);
-    let c11 = c00 + vec2<u32>(1u);
-    let s00 = hemioct_sin2(s, c00, m);
-    let s10 = hemioct_sin2(s, c10, m);
-    let t10 = s10 < s00;
-    let b1 = select(c00, c10, t10);
-    let s1 = select(s00, s10, t10);
-    let s01 = hemioct_sin2(s, c01, m);
-    let t01 = s01 < s1;
-    let b2 = select(b1, c01, t01);
-    let s2 = select(s1, s01, t01);
-    let best = select(b2, c11, hemioct_sin2(s, c11, m) < s2);
+    let b0 = hemioct_try(s, m, c00, vec2<u32>(0u, 0u), vec3<u32>(0u, 0u, 0x7f800000u));
+    let b1 = hemioct_try(s, m, c00, vec2<u32>(1u, 0u), b0);
+    let b2 = hemioct_try(s, m, c00, vec2<u32>(0u, 1u), b1);
+    let best = hemioct_try(s, m, c00, vec2<u32>(1u, 1u), b2);
     return best.x | (best.y << 12u);
 }
 

@@ -63,50 +63,49 @@ fn oct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
 }
 
 // The exact integer direction code (u, v) stands for (see the header); its L1 norm is M.
-// Branch-free: the fold is a select between exact integer vectors.
+// Branch-free: the fold is a select between exact integer vectors. w = (M - |b|, M - |a|) are
+// the folded magnitudes, and w - |(a, b)| holds z = M - |a| - |b| in both lanes, so the fold
+// test needs no splat.
 fn oct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
-    let mi = i32(m);
-    let ab = 2 * vec2<i32>(uv) - vec2<i32>(mi);
+    let mv = vec2<i32>(i32(m));
+    let ab = bitcast<vec2<i32>>(uv + uv) - mv;
     let aab = abs(ab);
-    let z = mi - aab.x - aab.y;
+    let w = mv - aab.yx;
+    let z = w - aab;
     // Folded when z < 0: then a and b are odd (M is odd), never zero, so sign() is +-1.
-    let folded = (vec2<i32>(mi) - aab.yx) * sign(ab);
-    return vec3<i32>(select(ab, folded, z < 0), z);
+    return vec3<i32>(select(ab, w * sign(ab), z < vec2<i32>(0)), z.x);
 }
 
-// sin^2 of the angle between s and the direction of code uv: |s x D|^2 / |D|^2, up to the common
-// factor |s|^2. Sine, not cosine: at oct32's 2e-5 rad a cosine is 1.0 in f32.
-fn oct_sin2(s: vec3<f32>, uv: vec2<u32>, m: u32) -> f32 {
-    let d = oct_lattice(uv, m);
-    let ad = vec3<u32>(abs(d));
-    // |D|^2 <= M^2 < 2^32: exact in u32, one rounding to f32.
-    let sq = ad * ad;
-    let len2 = f32(sq.x + sq.y + sq.z);
+// One step of the precise encoder's choice: the code c00 + off, scored by sin^2 of the angle
+// between s and its direction D (|s x D|^2 / |D|^2, up to the common factor |s|^2), replaces
+// the best so far (code in xy, score bits in z) only if its score is strictly smaller. Sine,
+// not cosine: at oct32's 2e-5 rad a cosine is 1.0 in f32. Scores are finite and >= +0, so
+// their bits order as their values do. One function for the score and the step: the four
+// candidates share its code.
+fn oct_try(s: vec3<f32>, m: u32, c00: vec2<u32>, off: vec2<u32>, best: vec3<u32>) -> vec3<u32> {
+    let c = c00 + off;
+    let d = oct_lattice(c, m);
+    // |D|^2 <= M^2 < 2^32: exact in u32 (the squares of the two's-complement bits, mod 2^32,
+    // are those of |D|), one rounding to f32.
+    let du = bitcast<vec3<u32>>(d);
+    let sq = du * du;
     let x = cross(s, vec3<f32>(d));
-    return dot(x, x) / len2;
+    let score = bitcast<u32>(dot(x, x) / f32(sq.x + sq.y + sq.z));
+    return select(best, vec3<u32>(c, score), score < best.z);
 }
 
 // The survey's precise encoder: of the four codes around the continuous coordinates (floor and
 // floor + 1 per axis), the one whose decoded direction is closest to s. Candidates are tried in
-// the order (0,0), (1,0), (0,1), (1,1); a later one wins only if strictly closer. Straight-line
-// (no loop, no variables): each later candidate replaces the best so far through a select.
+// the order (0,0), (1,0), (0,1), (1,1); a later one wins only if strictly closer, and (0,0)
+// always replaces the +inf start. Straight-line (no loop, no variables).
 fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
     let m = (1u << bits) - 1u;
     let s = oct_sanitize(n).xyz;
     let c00 = min(vec2<u32>(floor(oct_continuous(s, m))), vec2<u32>(m - 1u));
-    let c10 = c00 + vec2<u32>(1u, 0u);
-    let c01 = c00 + vec2<u32>(0u, 1u);
-    let c11 = c00 + vec2<u32>(1u);
-    let s00 = oct_sin2(s, c00, m);
-    let s10 = oct_sin2(s, c10, m);
-    let t10 = s10 < s00;
-    let b1 = select(c00, c10, t10);
-    let s1 = select(s00, s10, t10);
-    let s01 = oct_sin2(s, c01, m);
-    let t01 = s01 < s1;
-    let b2 = select(b1, c01, t01);
-    let s2 = select(s1, s01, t01);
-    let best = select(b2, c11, oct_sin2(s, c11, m) < s2);
+    let b0 = oct_try(s, m, c00, vec2<u32>(0u, 0u), vec3<u32>(0u, 0u, 0x7f800000u));
+    let b1 = oct_try(s, m, c00, vec2<u32>(1u, 0u), b0);
+    let b2 = oct_try(s, m, c00, vec2<u32>(0u, 1u), b1);
+    let best = oct_try(s, m, c00, vec2<u32>(1u, 1u), b2);
     return best.x | (best.y << bits);
 }
 

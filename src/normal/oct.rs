@@ -58,19 +58,20 @@ pub fn continuous(s: Vec3, bits: u32) -> Vec2 {
 }
 
 /// The exact integer vector code `(u, v)` stands for (L1 norm `M`; see the module docs).
-/// Branch-free like the WGSL: the fold is a select between exact integer vectors.
+/// Branch-free like the WGSL: `w = (M − |b|, M − |a|)` are the folded magnitudes, `w − |(a, b)|`
+/// holds `z` in both lanes, and the fold is a select between exact integer vectors.
 pub fn lattice(uv: UVec2, bits: u32) -> IVec3 {
-    let m = max_code(bits) as i32;
-    let ab = IVec2::new(2 * uv.x as i32 - m, 2 * uv.y as i32 - m);
+    let m = IVec2::splat(max_code(bits) as i32);
+    let ab = (uv + uv).as_ivec2() - m;
     let aab = ab.abs();
-    let z = m - aab.x - aab.y;
+    let w = m - IVec2::new(aab.y, aab.x);
+    let z = w - aab;
     // Folded when z < 0: then a and b are odd (M is odd), never zero, so signum is ±1.
-    let folded = (IVec2::splat(m) - IVec2::new(aab.y, aab.x)) * ab.signum();
-    let xy = if z < 0 { folded } else { ab };
-    xy.extend(z)
+    let xy = if z.x < 0 { w * ab.signum() } else { ab };
+    xy.extend(z.x)
 }
 
-/// `|s × D|² / |D|²` as the WGSL's `oct_sin2` computes it: the precise encoder's score
+/// `|s × D|² / |D|²` as the WGSL's `oct_try` computes it: the precise encoder's score
 /// (sin² of the angle to the code's direction, times `|s|²`).
 fn sin2(s: Vec3, uv: UVec2, bits: u32) -> f32 {
     super::sin2_to(s, lattice(uv, bits))

@@ -26,8 +26,8 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
         "private to normal_hemioct.wgsl: a code's integer vector, behind the decoder rows",
     ),
     (
-        "hemioct_sin2",
-        "private to normal_hemioct.wgsl: the precise encoder's score, behind its rows",
+        "hemioct_try",
+        "private to normal_hemioct.wgsl: the precise encoder's score and choice step, behind its rows",
     ),
 ];
 

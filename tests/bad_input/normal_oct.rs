@@ -80,8 +80,8 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
         "private to normal_oct.wgsl: a code's integer vector, behind every oct decoder row",
     ),
     (
-        "oct_sin2",
-        "private to normal_oct.wgsl: the precise encoders' score, behind their rows",
+        "oct_try",
+        "private to normal_oct.wgsl: the precise encoders' score and choice step, behind their rows",
     ),
     (
         "oct_encode_precise",
