@@ -111,7 +111,14 @@ fn meshopt_decode(buf: &mut [u8], size: &Size) {
 fn criterion_groups(c: &mut Criterion) {
     let (flat, vecs) = normals();
     let level = Level::detected();
-    for size in &SIZES {
+    for (k, size) in SIZES.iter().enumerate() {
+        // Progress on stderr (stdout is the summary that .ci/bench files).
+        eprintln!(
+            "summary: {} ({}/{}), {runs} interleaved runs of 9 timings…",
+            size.name,
+            k + 1,
+            SIZES.len()
+        );
         let mut encoded = vec![0u8; N * size.stride];
         meshopt_encode(&mut encoded, &flat, size);
         let mut codes = vec![0u32; N];
@@ -228,7 +235,14 @@ fn summary() {
     let rate = |secs: f64| N as f64 / secs / 1e6;
     let mut ratios = Vec::new();
     let mut caps = Vec::new();
-    for size in &SIZES {
+    for (k, size) in SIZES.iter().enumerate() {
+        // Progress on stderr (stdout is the summary that .ci/bench files).
+        eprintln!(
+            "summary: {} ({}/{}), {runs} interleaved runs of 9 timings…",
+            size.name,
+            k + 1,
+            SIZES.len()
+        );
         let mut encoded = vec![0u8; N * size.stride];
         meshopt_encode(&mut encoded, &flat, size);
         let pristine = encoded.clone();
