@@ -322,7 +322,7 @@ fn every_path_holds_its_conforming_bound_under_emulation() {
     use prepass::sweep::conforming::{SEARCHED_INPUTS, linear_depth_figures};
     use std::fmt::Write as _;
     let mut table = String::from(
-        "| function | max ULP (this adapter) | max ULP (greedy policies) | max ULP (worst found by the search) | search: slots read per input | bound, correctly rounded | bound, every conforming adapter | worst found / bound |\n|---|---|---|---|---|---|---|---|\n",
+        "| function | max ULP (this adapter) | max ULP (greedy policies) | max ULP (worst found by the search) | search: slots read per input | machine-derived bound (intervals) | bound, correctly rounded | bound, every conforming adapter | worst found / machine bound | worst found / bound |\n|---|---|---|---|---|---|---|---|---|---|\n",
     );
     // 32 inputs in CI; under PREPASS_FULL=1, 512 (the full search, CONTRIBUTING.md).
     let inputs = if common::full_strength() {
@@ -349,6 +349,30 @@ fn every_path_holds_its_conforming_bound_under_emulation() {
             r.emulated_at,
             r.searched_at
         );
+        // The interval evaluator (conforming::interval) is an implementation of the accuracy
+        // rules independent of the emulation: at every searched input its enclosure must hold
+        // what the emulation gave, and the hand bound must hold the enclosure everywhere.
+        eprintln!(
+            "machine  {:36} bound {:.3} ULP ({})",
+            r.function, r.machine, r.machine_at
+        );
+        assert!(
+            r.machine_violations.is_empty(),
+            "{}: the emulation erred beyond the interval enclosure of every allowed result (a \
+             flaw of the emulation or of conforming::interval):\n{}",
+            r.function,
+            r.machine_violations.join("\n")
+        );
+        assert_within!(
+            r.machine,
+            r.bound_conforming,
+            format_args!(
+                "linear_depth::bounds::of, conforming, against the machine-derived bound: {why}"
+            ),
+            "{}: interval enclosure at {}",
+            r.function,
+            r.machine_at
+        );
         assert_within!(
             r.adapter,
             r.bound_correctly_rounded,
@@ -358,7 +382,7 @@ fn every_path_holds_its_conforming_bound_under_emulation() {
         );
         let _ = writeln!(
             table,
-            "| `{}` | {:.2} | {:.2} | {:.2} | {}–{}{} | {:.2} | {:.2} | {:.0} % |",
+            "| `{}` | {:.2} | {:.2} | {:.2} | {}–{}{} | {:.2} | {:.2} | {:.2} | {:.0} % | {:.0} % |",
             r.function,
             r.adapter,
             r.emulated,
@@ -370,8 +394,10 @@ fn every_path_holds_its_conforming_bound_under_emulation() {
             } else {
                 ", climbed"
             },
+            r.machine,
             r.bound_correctly_rounded,
             r.bound_conforming,
+            100.0 * r.searched / r.machine,
             100.0 * r.searched / r.bound_conforming
         );
     }

@@ -18,6 +18,9 @@
 //! evaluated at a chosen point of its allowed interval, then writes the module back as WGSL with
 //! naga's backend: the result runs through [`crate::harness`] exactly like the original, and
 //! [`crate::precision::check::PrecisionCheck::emulated`] runs property checks on it.
+//! [`interval`] reads the same rules the other way: it evaluates a function's IR over
+//! intervals at one input and returns an enclosure of every result they allow, a
+//! machine-derived bound that the emulated results must lie in.
 //!
 //! ```
 //! use prepass::conforming::{emulate, Emulation, Policy};
@@ -116,6 +119,8 @@ pub use kernel::{EmulatedKernel, UNDEFINED_FLAG};
 #[cfg(feature = "harness")]
 #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub mod search;
+
+pub mod interval;
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;

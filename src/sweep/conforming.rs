@@ -313,6 +313,15 @@ pub struct LinearFigures {
     /// Over the searched inputs: the fewest and most table slots an evaluation read, and
     /// whether every input was searched exhaustively (every assignment of those slots).
     pub searched_slots: (u32, u32, bool),
+    /// The machine-derived bound: the largest error any conforming adapter can make, from the
+    /// interval enclosure of every allowed result ([`super::linear_depth::machine_worst`]:
+    /// the policies' sample at a stride, and every searched input).
+    pub machine: f64,
+    /// Where the machine-derived bound is largest.
+    pub machine_at: String,
+    /// Inputs where the emulation (a policy or the search) erred more than the enclosure
+    /// allows: each would be a flaw of the evaluator or of the emulation. Empty when sound.
+    pub machine_violations: Vec<String>,
     /// The bound where `+ − × /` are correctly rounded (`linear_depth::bounds`).
     pub bound_correctly_rounded: f64,
     /// The bound on every conforming adapter.
@@ -379,6 +388,35 @@ pub fn linear_depth_figures(
                 );
             }
         }
+        // The enclosure at every searched input must hold what the emulation gave there.
+        let machine_err = |e: crate::conforming::interval::IntervalError| {
+            HarnessError::Shader(format!("{}: interval evaluation: {e}", path.function))
+        };
+        let enclosure =
+            crate::conforming::interval::Enclosure::new(crate::wgsl::LINEAR_DEPTH, true)
+                .map_err(machine_err)?;
+        let (mut machine, mut machine_at) =
+            super::linear_depth::machine_worst(path).map_err(machine_err)?;
+        let mut machine_violations = Vec::new();
+        for (f, s) in found.iter().zip(&pool) {
+            let m = super::linear_depth::machine_error(
+                path,
+                &enclosure,
+                s.input_bits,
+                &s.case,
+                &s.consts,
+            )
+            .map_err(machine_err)?;
+            if m > machine {
+                (machine, machine_at) = (m, format!("searched input {}", s.at));
+            }
+            if f.error.max(s.error) > m {
+                machine_violations.push(format!(
+                    "{}: policy {:.3} ULP, search {:.3} ULP, enclosure {m:.3} ULP",
+                    s.at, s.error, f.error
+                ));
+            }
+        }
         rows.push(LinearFigures {
             function: path.function,
             adapter,
@@ -387,6 +425,9 @@ pub fn linear_depth_figures(
             searched,
             searched_at,
             searched_slots,
+            machine,
+            machine_at,
+            machine_violations,
             bound_correctly_rounded: cr,
             bound_conforming: conf,
         });

@@ -596,3 +596,100 @@ pub fn searched_worst(
     };
     search::climb(&kernel, &args, inputs.len(), &error, config)
 }
+
+/// The machine-derived bound's sample: every `MACHINE_STRIDE`-th input of [`sampled_worst`]'s
+/// sample, on every stiff-grid case (the interval evaluator runs on the CPU, about 20 µs an
+/// input; the stride keeps each path near a second on two cores).
+pub const MACHINE_STRIDE: usize = 16;
+
+/// The largest error any conforming adapter can make on `path` at one input: the interval
+/// enclosure of every result the spec allows ([`crate::conforming::interval`], with
+/// flushing), measured at its farther end in the sweeps' ULPs ([`distance_error`]).
+pub fn machine_error(
+    path: &Path,
+    enclosure: &crate::conforming::interval::Enclosure,
+    bits: u32,
+    case: &StiffCase,
+    consts: &[f32],
+) -> Result<f64, crate::conforming::interval::IntervalError> {
+    use crate::conforming::interval::{IntervalError, Value};
+    let depth = if path.code {
+        Value::u32s(&[bits])
+    } else {
+        Value::f32s(&[f32::from_bits(bits)])
+    };
+    let args = if path.consts {
+        vec![depth, Value::f32s(consts)]
+    } else {
+        vec![depth, Value::f32s(&[case.near]), Value::f32s(&[case.far])]
+    };
+    let v = enclosure.of(path.function, &args)?;
+    let iv = v
+        .f32_lanes()
+        .ok_or_else(|| IntervalError::NotCovered("a result that is not f32".into()))?[0];
+    let (n, f) = (case.near, case.far);
+    Ok(error_of(path, bits, n, f, iv.lo).max(error_of(path, bits, n, f, iv.hi)))
+}
+
+/// [`machine_error`]'s largest value over the stiff grid, sampled ([`MACHINE_STRIDE`]), with
+/// where it is; cases run on parallel threads.
+pub fn machine_worst(
+    path: &Path,
+) -> Result<(f64, String), crate::conforming::interval::IntervalError> {
+    use crate::conforming::interval::Enclosure;
+    let enclosure = Enclosure::new(crate::wgsl::LINEAR_DEPTH, true)?;
+    let codes: Vec<u32> = sampled_codes()
+        .into_iter()
+        .step_by(MACHINE_STRIDE)
+        .collect();
+    let depths: Vec<u32> = float_depths(1 << 16)
+        .iter()
+        .step_by(MACHINE_STRIDE)
+        .map(|z| z.to_bits())
+        .collect();
+    let inputs = if path.code { &codes } else { &depths };
+    let cases = stiff_grid();
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let per = cases.len().div_ceil(threads);
+    let results = std::thread::scope(|sc| {
+        let handles: Vec<_> = cases
+            .chunks(per)
+            .map(|part| {
+                let enclosure = &enclosure;
+                sc.spawn(move || {
+                    let mut worst = (0.0f64, String::new());
+                    for case in part {
+                        let k = consts_of(path, case);
+                        for &bits in inputs {
+                            let e = machine_error(path, enclosure, bits, case, &k)?;
+                            if e > worst.0 {
+                                let input = if path.code {
+                                    format!("code {bits}")
+                                } else {
+                                    format!("z {:e}", f32::from_bits(bits))
+                                };
+                                worst = (
+                                    e,
+                                    format!("near {:e}, far {:e}, {input}", case.near, case.far),
+                                );
+                            }
+                        }
+                    }
+                    Ok(worst)
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().expect("machine-bound thread"))
+            .collect::<Vec<_>>()
+    });
+    let mut worst = (0.0f64, String::new());
+    for r in results {
+        let r = r?;
+        if r.0 > worst.0 {
+            worst = r;
+        }
+    }
+    Ok(worst)
+}
