@@ -189,8 +189,19 @@ fn world_and_camera_relative_rebuild_on_the_adapter_and_under_emulation() {
         })
         .collect();
     let mut table = String::from(
-        "| camera distance | world: this adapter | world: worst emulated | world: bound | camera-relative: this adapter | camera-relative: worst emulated | camera-relative: bound |\n|---|---|---|---|---|---|---|\n",
+        "| camera distance | world: this adapter | world: worst emulated | world: machine-derived bound | world: bound | camera-relative: this adapter | camera-relative: worst emulated | camera-relative: machine-derived bound | camera-relative: bound |\n|---|---|---|---|---|---|---|---|---|\n",
     );
+    // The interval enclosure of every result a conforming adapter may give
+    // (prepass::conforming::interval, flushing allowed), per pixel: each run must lie in it,
+    // and the hand bound must hold its farther end.
+    let enclosure = prepass::conforming::interval::Enclosure::new(&src, true).unwrap();
+    let lanes_of = |name: &str, args: Vec<prepass::conforming::interval::Value>| {
+        let v = enclosure
+            .of(name, &args)
+            .unwrap_or_else(|e| panic!("{name}: {e}"));
+        v.f32_lanes().expect("vec3<f32>").to_vec()
+    };
+    let f = prepass::conforming::interval::Value::f32s;
     for exp10 in 0..=7 {
         let dist = 10f32.powi(exp10);
         let cam = (dir * dist).to_array();
@@ -226,6 +237,66 @@ fn world_and_camera_relative_rebuild_on_the_adapter_and_under_emulation() {
         }
         let (mut world_max, mut rel_max) = (vec![0.0f64; runs.len()], vec![0.0f64; runs.len()]);
         let (mut world_bound_max, mut rel_bound_max) = (0.0f64, 0.0f64);
+        let (mut world_machine, mut rel_machine) = (0.0f64, 0.0f64);
+        for (k, lanes) in exact.iter().enumerate() {
+            let w = lanes_of(
+                "world_rebuild",
+                vec![
+                    f(&rays[k]),
+                    f(&[vzs[k]]),
+                    f(&cam),
+                    f(&cols[0]),
+                    f(&cols[1]),
+                    f(&cols[2]),
+                ],
+            );
+            let r = lanes_of(
+                "relative_rebuild",
+                vec![
+                    f(&rays[k]),
+                    f(&[vzs[k]]),
+                    f(&cols[0]),
+                    f(&cols[1]),
+                    f(&cols[2]),
+                ],
+            );
+            for (c, &(offset, scale)) in lanes.iter().enumerate() {
+                let exact_w = f64::from(cam[c]) + offset;
+                let far = |iv: prepass::conforming::interval::Iv, e: f64| {
+                    (f64::from(iv.lo) - e)
+                        .abs()
+                        .max((f64::from(iv.hi) - e).abs())
+                };
+                let (mw, mr) = (far(w[c], exact_w), far(r[c], offset));
+                assert_within!(
+                    mw,
+                    pos::bounds::world_abs(scale, exact_w.abs(), true),
+                    "position::bounds::world_abs, against the machine-derived enclosure",
+                    "world, cam {dist} m, pixel {k}, component {c}: {:?}",
+                    w[c]
+                );
+                assert_within!(
+                    mr,
+                    pos::bounds::camera_relative_abs(scale, true),
+                    "position::bounds::camera_relative_abs, against the machine-derived enclosure",
+                    "camera-relative, cam {dist} m, pixel {k}, component {c}: {:?}",
+                    r[c]
+                );
+                for (who, world, rel) in &runs {
+                    let (gw, gr) = (world.as_vec3()[k][c], rel.as_vec3()[k][c]);
+                    assert!(
+                        w[c].lo <= gw && gw <= w[c].hi && r[c].lo <= gr && gr <= r[c].hi,
+                        "{who}, cam {dist} m, pixel {k}, component {c}: world {gw:e} in {:?}, \
+                         camera-relative {gr:e} in {:?}? Outside the enclosure of every allowed \
+                         result: a flaw of the emulation or of conforming::interval",
+                        w[c],
+                        r[c]
+                    );
+                }
+                world_machine = world_machine.max(mw);
+                rel_machine = rel_machine.max(mr);
+            }
+        }
         for (slot, (who, world, rel)) in runs.iter().enumerate() {
             for (k, lanes) in exact.iter().enumerate() {
                 for (c, &(offset, scale)) in lanes.iter().enumerate() {
@@ -256,7 +327,7 @@ fn world_and_camera_relative_rebuild_on_the_adapter_and_under_emulation() {
         let worst = |v: &[f64]| v[1..].iter().copied().fold(0.0, f64::max);
         let _ = writeln!(
             table,
-            "| {dist:e} m | {:.3e} m | {:.3e} m | {world_bound_max:.3e} m | {:.3e} m | {:.3e} m | {rel_bound_max:.3e} m |",
+            "| {dist:e} m | {:.3e} m | {:.3e} m | {world_machine:.3e} m | {world_bound_max:.3e} m | {:.3e} m | {:.3e} m | {rel_machine:.3e} m | {rel_bound_max:.3e} m |",
             world_max[0],
             worst(&world_max),
             rel_max[0],

@@ -368,6 +368,64 @@ fn every_range_keeps_its_promise_under_emulation() {
         "{ROUGHNESS}\nfn rt(p: f32, m: f32) -> vec2<u32> {{ let c = encode_log_roughness(p, m); \
          return vec2<u32>(c, bitcast<u32>(decode_log_roughness(c, m))); }}"
     );
+    // The interval enclosure of every result a conforming adapter may give
+    // (prepass::conforming::interval, flushing allowed), on every 64th sampled power (the
+    // evaluator runs on the CPU). Power-of-two ranges: where the enclosure is one code, it must
+    // be the exact code with the twin's decode, a machine-checked exactness; within 2^-8 of a
+    // code boundary the log2 candidate may be either of two codes, and the evaluator, which
+    // does not split cases, carries both through the boundary comparison that settles the
+    // candidate (the dependency problem), so there it can only check that the exact code is
+    // among them — those powers are counted, and the emulation below checks them exactly.
+    // General ranges: the decode's farther end, over every code the enclosure holds, must keep
+    // the derived bound.
+    use prepass::conforming::interval::{Enclosure, Value};
+    let enclosure = Enclosure::new(&src, true).unwrap();
+    for max in [8192.0f32, 256.0, 1000.0, 100.5, 3.0e6] {
+        let (mut worst, mut codes_wide) = (0.0f64, 0u64);
+        let ps: Vec<f32> = sampled_powers(max).into_iter().step_by(64).collect();
+        for &p in &ps {
+            let v = enclosure
+                .of("rt", &[Value::f32s(&[p]), Value::f32s(&[max])])
+                .unwrap_or_else(|e| panic!("max {max}, power {p:e}: {e}"));
+            let Value::U32(l) = v else {
+                panic!("rt returns vec2<u32>")
+            };
+            let (code, bits) = (l[0], l[1]);
+            codes_wide += u64::from(code.0 != code.1);
+            let exact = roughness::exact::encode(f64::from(p), f64::from(max));
+            assert!(
+                code.0 <= exact && exact <= code.1,
+                "max {max}, power {p:e}: the exact code {exact} is outside the enclosure {code:?}"
+            );
+            let pow2 = max.log2().fract() == 0.0;
+            if pow2 && code.0 == code.1 {
+                let twin = roughness::decode_log_roughness(exact, max).to_bits();
+                assert_eq!(
+                    bits,
+                    (twin, twin),
+                    "max {max}, power {p:e}: the decode's enclosure is not the twin's value"
+                );
+            }
+            if !pow2 {
+                for b in [bits.0, bits.1] {
+                    let d = f64::from(f32::from_bits(b));
+                    worst = worst.max((d - f64::from(p)).abs() / f64::from(p));
+                }
+            }
+        }
+        eprintln!(
+            "machine-derived, max {max}: {} powers, max rel {worst:.7} (general ranges), {codes_wide} with more than one code possible",
+            ps.len()
+        );
+        if max.log2().fract() != 0.0 {
+            assert_within!(
+                worst,
+                roughness::bounds::general_range(max),
+                "roughness::bounds::general_range, against the machine-derived enclosure",
+                "max {max}: relative error of the enclosure's farther end"
+            );
+        }
+    }
     for policy in Policy::WORST {
         let k = EmulatedKernel::new(gpu(), &src, "rt", &Emulation::new(policy)).unwrap();
         for max in [8192.0f32, 256.0, 1000.0, 100.5, 3.0e6] {

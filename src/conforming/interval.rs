@@ -17,6 +17,9 @@
 //! | `+ − ×` | either f32 neighbour of the exact result (the spec's "correctly rounded") |
 //! | `/` | within 2.5 ULP of the exact quotient, for divisors of magnitude in `[2^-126, 2^126]`; any other divisor is [`IntervalError::Indeterminate`] |
 //! | `f32(u32)`, `f32(i32)` | either neighbour where the integer is not an f32 |
+//! | matrix × vector | each row's products summed in every order (the spec's inherited accuracy) |
+//! | `log2` | 3 ULP, absolute `2^-21` on `[0.5, 2]`; `exp2(x)`: `3 + 2|x|` ULP |
+//! | `fract(x)` | as `x − floor(x)` (inherited) |
 //! | `min max clamp abs floor ceil round trunc select`, comparisons, bit casts, integers | exact |
 //! | flushing (optional, [`Enclosure::of`]'s `flush`) | any subnormal operand or result may be ±0 |
 //!
@@ -269,6 +272,35 @@ fn div(a: Iv, b: Iv) -> R<Iv> {
     )
 }
 
+/// The hull of a sum of `terms` over every order of evaluation (every binary tree of them).
+fn every_order(terms: &[Iv], flush: bool) -> R<Iv> {
+    if terms.len() == 1 {
+        return Ok(terms[0]);
+    }
+    let n = terms.len();
+    let mut hull: Option<Iv> = None;
+    // Every split into two non-empty sets, each once: the first term always on the left.
+    for mask in 1..(1u32 << (n - 1)) {
+        let left: Vec<Iv> = (0..n)
+            .filter(|&k| k == 0 || mask >> (k - 1) & 1 == 0)
+            .map(|k| terms[k])
+            .collect();
+        let right: Vec<Iv> = (1..n)
+            .filter(|&k| mask >> (k - 1) & 1 == 1)
+            .map(|k| terms[k])
+            .collect();
+        let s = flushed(
+            add(
+                flushed(every_order(&left, flush)?, flush),
+                flushed(every_order(&right, flush)?, flush),
+            )?,
+            flush,
+        );
+        hull = Some(hull.map_or(s, |h| h.hull(s)));
+    }
+    Ok(hull.expect("two or more terms have a split"))
+}
+
 /// `p·q` (`kind` 1) or `p/q` (2), with every one-level reassociation of it hulled in: where an
 /// operand is itself a product or quotient, `(a·b)·q ↔ a·(b·q)`, `(a/b)·q ↔ (a·q)/b`,
 /// `(a·b)/q ↔ (a/q)·b`, `(a/b)/q ↔ a/(b·q)` and their mirror images, each evaluated from the
@@ -498,6 +530,9 @@ fn not_covered(what: &str) -> IntervalError {
 pub struct Enclosure {
     module: Module,
     flush: bool,
+    /// Every global variable's initial value, evaluated once (stores to globals are refused,
+    /// so they stay these).
+    globals: Vec<Option<Value>>,
 }
 
 struct Frame<'a> {
@@ -539,7 +574,51 @@ impl Enclosure {
     pub fn new(source: &str, flush: bool) -> R<Enclosure> {
         let module = naga::front::wgsl::parse_str(source)
             .map_err(|e| IntervalError::Source(e.emit_to_string(source)))?;
-        Ok(Enclosure { module, flush })
+        let mut e = Enclosure {
+            module,
+            flush,
+            globals: Vec::new(),
+        };
+        let inits: Vec<_> = e
+            .module
+            .global_variables
+            .iter()
+            .map(|(_, g)| g.init)
+            .collect();
+        e.globals = inits
+            .into_iter()
+            .map(|init| init.map(|h| e.global(h)).transpose())
+            .collect::<R<_>>()?;
+        Ok(e)
+    }
+
+    /// How many members or lanes global variable `i` has at `path`.
+    fn global_len(&self, i: usize, path: &[usize]) -> R<usize> {
+        let mut v = self.globals[i]
+            .as_ref()
+            .ok_or_else(|| not_covered("a global variable without initialiser"))?;
+        for &k in path {
+            match v {
+                Value::Composite(m) if k < m.len() => v = &m[k],
+                _ => return Err(not_covered("an index out of range")),
+            }
+        }
+        Ok(v.lanes())
+    }
+
+    /// Global variable `i`'s value at `path` (member and lane indices).
+    fn global_at(&self, i: usize, path: &[usize]) -> R<Value> {
+        let mut v = self.globals[i]
+            .as_ref()
+            .ok_or_else(|| not_covered("a global variable without initialiser"))?;
+        for (n, &k) in path.iter().enumerate() {
+            match v {
+                Value::Composite(m) if k < m.len() => v = &m[k],
+                _ if n + 1 == path.len() && k < v.lanes() => return Ok(v.lane(k)),
+                _ => return Err(not_covered("an index out of range")),
+            }
+        }
+        Ok(v.clone())
     }
 
     /// The enclosure of `function(args)`: every result a conforming adapter may return.
@@ -748,8 +827,11 @@ impl Enclosure {
                     .collect::<R<Vec<_>>>()?;
                 match self.module.types[*ty].inner {
                     TypeInner::Vector { .. } | TypeInner::Scalar(_) => Value::concat(&parts)?,
-                    TypeInner::Array { .. } | TypeInner::Struct { .. } => Value::Composite(parts),
-                    _ => return Err(not_covered("composing a matrix")),
+                    // A matrix is its columns.
+                    TypeInner::Array { .. }
+                    | TypeInner::Struct { .. }
+                    | TypeInner::Matrix { .. } => Value::Composite(parts),
+                    _ => return Err(not_covered("composing a value of this type")),
                 }
             }
             Expression::Splat { size, value } => {
@@ -780,6 +862,7 @@ impl Enclosure {
                     _ => return Err(not_covered("an index that may be negative")),
                 };
                 let n = match &b {
+                    Value::Ptr(false, i, path) => self.global_len(*i, path)?,
                     Value::Ptr(..) => usize::MAX,
                     v => v.lanes(),
                 };
@@ -787,8 +870,16 @@ impl Enclosure {
                 let (lo, hi) = (lo.min(n.saturating_sub(1)), hi.min(n.saturating_sub(1)));
                 if lo == hi {
                     access(b, lo)?
+                } else if let Value::Ptr(false, i, path) = &b {
+                    // A global read at a range of indices: the hull of those elements (the
+                    // Load that follows passes it on).
+                    let mut v = self.global_at(*i, &[path.as_slice(), &[lo]].concat())?;
+                    for k in lo + 1..=hi {
+                        v = v.join(&self.global_at(*i, &[path.as_slice(), &[k]].concat())?)?;
+                    }
+                    v
                 } else if let Value::Ptr(..) = b {
-                    return Err(not_covered("a pointer indexed by a range"));
+                    return Err(not_covered("a local indexed by a range"));
                 } else {
                     let mut v = b.lane(lo);
                     for k in lo + 1..=hi {
@@ -807,20 +898,9 @@ impl Enclosure {
                         .ok_or_else(|| not_covered("a load of an unset local"))?;
                     path.iter().try_fold(v, |v, &k| access(v, k))?
                 }
-                Value::Ptr(false, i, path) => {
-                    let (_, g) = self
-                        .module
-                        .global_variables
-                        .iter()
-                        .nth(i)
-                        .ok_or_else(|| not_covered("an unknown global"))?;
-                    let v = match g.init {
-                        Some(init) => self.global(init)?,
-                        None => return Err(not_covered("a global variable without initialiser")),
-                    };
-                    path.iter().try_fold(v, |v, &k| access(v, k))?
-                }
-                _ => return Err(not_covered("a load through this pointer")),
+                Value::Ptr(false, i, path) => self.global_at(i, &path)?,
+                // A global element at a range of indices, already read (below).
+                v => v,
             },
             Expression::Unary { op, expr } => {
                 let v = self.eval(fr, *expr, depth)?;
@@ -1030,6 +1110,33 @@ fn binary(op: BinaryOperator, a: Value, b: Value, flush: bool) -> R<Value> {
                 })?),
             }
         }
+        // Matrix × vector: each row a sum of products, in every order (the spec's inherited
+        // accuracy lets an implementation sum them any way, fused or not).
+        (Value::Composite(cols), Value::F32 { lanes: v, .. }) if op == B::Multiply => {
+            if cols.len() != v.len() {
+                return Err(not_covered("a matrix × vector of mismatched sizes"));
+            }
+            let rows = cols[0].lanes();
+            let lanes = (0..rows)
+                .map(|r| {
+                    let terms = cols
+                        .iter()
+                        .zip(&v)
+                        .map(|(c, &x)| {
+                            let m = c
+                                .f32_lanes()
+                                .ok_or_else(|| not_covered("a non-f32 matrix"))?[r];
+                            mul_div(1, m, x, flush)
+                        })
+                        .collect::<R<Vec<_>>>()?;
+                    every_order(&terms, flush)
+                })
+                .collect::<R<Vec<_>>>()?;
+            Value::F32 {
+                lanes,
+                sum: ((1u16 << rows) - 1) as u8,
+            }
+        }
         (Value::U32(x), Value::U32(y)) => match op {
             B::Add
             | B::Subtract
@@ -1111,6 +1218,9 @@ fn u32_op(op: BinaryOperator, (al, ah): (u32, u32), (bl, bh): (u32, u32)) -> (u3
         B::Subtract if al >= bh => (al - bh, ah - bl),
         B::Multiply => wide(u64::from(al) * u64::from(bl), u64::from(ah) * u64::from(bh)),
         B::And => (0, ah.min(bh)),
+        B::Divide if bl == bh && bl > 0 => (al / bl, ah / bl),
+        B::Modulo if bl == bh && bl > 0 && al / bl == ah / bl => (al % bl, ah % bl),
+        B::Modulo if bl == bh && bl > 0 => (0, bl - 1),
         B::ShiftRight if bl == bh && bl < 32 => (al >> bl, ah >> bl),
         B::ShiftLeft if bl == bh && bl < 32 => wide(u64::from(al) << bl, u64::from(ah) << bl),
         B::InclusiveOr | B::ExclusiveOr => {
@@ -1217,8 +1327,83 @@ fn math(fun: MathFunction, a: Value, b: Option<Value>, c: Option<Value>, flush: 
             let o = Value::f32s(&vec![1.0; n]);
             minmax(true, minmax(false, a, z, flush)?, o, flush)?
         }
+        M::Fract => {
+            // Inherited from x − floor(x).
+            let lanes = a
+                .f32_lanes()
+                .ok_or_else(|| not_covered("fract of an integer"))?
+                .iter()
+                .map(|&v| {
+                    let v = fl(v);
+                    let (fa, fb) = (v.lo.floor(), v.hi.floor());
+                    if fa == fb {
+                        add(v, Iv::point(-fa)).map(fl)
+                    } else {
+                        Ok(Iv::new(0.0, 1.0))
+                    }
+                })
+                .collect::<R<_>>()?;
+            Value::F32 { lanes, sum: 0 }
+        }
+        M::Log2 | M::Exp2 => {
+            let lanes = a
+                .f32_lanes()
+                .ok_or_else(|| not_covered("log2/exp2 of an integer"))?
+                .iter()
+                .map(|&v| {
+                    if fun == M::Log2 {
+                        log2(fl(v))
+                    } else {
+                        exp2(fl(v))
+                    }
+                    .map(fl)
+                })
+                .collect::<R<_>>()?;
+            Value::F32 { lanes, sum: 0 }
+        }
         other => return Err(IntervalError::NotCovered(format!("builtin {other:?}"))),
     })
+}
+
+/// The f32 values in `[lo_real, hi_real]`, widened by `2^-50` relative for the f64 evaluation
+/// of the ends (f64 `log2`/`exp2` are within an f64 ULP or two).
+fn inward(lo_real: f64, hi_real: f64, what: &str) -> R<Iv> {
+    let lo_real = lo_real - lo_real.abs() * 2f64.powi(-50);
+    let hi_real = hi_real + hi_real.abs() * 2f64.powi(-50);
+    let mut lo = lo_real as f32;
+    if f64::from(lo) < lo_real {
+        lo = lo.next_up();
+    }
+    let mut hi = hi_real as f32;
+    if f64::from(hi) > hi_real {
+        hi = hi.next_down();
+    }
+    checked(Iv::new(lo, hi), what)
+}
+
+/// `log2`: 3 ULP outside `[0.5, 2]`, absolute `2^-21` inside (WGSL); positive arguments only.
+fn log2(v: Iv) -> R<Iv> {
+    if v.lo <= 0.0 {
+        return Err(IntervalError::Indeterminate(format!(
+            "log2 of [{:e}, {:e}] (positive arguments only)",
+            v.lo, v.hi
+        )));
+    }
+    let (a, b) = (f64::from(v.lo).log2(), f64::from(v.hi).log2());
+    // The allowance at its largest over the interval: 3 ULP of the largest |result| outside
+    // [0.5, 2], 2^-21 where the interval meets [0.5, 2].
+    let mut allow = 3.0 * ulp_spec(a.abs().max(b.abs()));
+    if v.lo <= 2.0 && v.hi >= 0.5 {
+        allow = allow.max(2f64.powi(-21));
+    }
+    inward(a - allow, b + allow, "log2")
+}
+
+/// `exp2(x)`: within `3 + 2|x|` ULP (WGSL).
+fn exp2(v: Iv) -> R<Iv> {
+    let (a, b) = (f64::from(v.lo).exp2(), f64::from(v.hi).exp2());
+    let ulps = 3.0 + 2.0 * f64::from(v.lo.abs().max(v.hi.abs()));
+    inward(a - ulps * ulp_spec(a), b + ulps * ulp_spec(b), "exp2")
 }
 
 fn minmax(min: bool, a: Value, b: Value, flush: bool) -> R<Value> {
@@ -1395,6 +1580,9 @@ mod tests {
         fn conv(x: u32) -> f32 { return f32(x); }
         fn scaled(a: f32, b: f32, c: f32) -> f32 { let p = a * b; return p / c; }
         fn long_chain(a: f32, b: f32, c: f32) -> f32 { return ((a * b) / c) * a; }
+        fn row(a: f32, b: f32, c: f32) -> f32 {
+            return (mat3x3<f32>(vec3<f32>(1.0), vec3<f32>(1.0), vec3<f32>(1.0)) * vec3<f32>(a, b, c)).x;
+        }
     ";
 
     fn f(name: &str, args: &[f32], flush: bool) -> R<Iv> {
@@ -1474,6 +1662,17 @@ mod tests {
             f("long_chain", &[a, b, c], false),
             Err(IntervalError::NotCovered(_))
         ));
+    }
+
+    #[test]
+    fn a_matrix_row_is_summed_in_every_order() {
+        // 1 + 2^-24 − 1: (a + b) + c gives 0, a + (b + c) and (a + c) + b give 2^-24.
+        let (a, b, c) = (1.0f32, 2f32.powi(-24), -1.0f32);
+        let iv = f("row", &[a, b, c], false).unwrap();
+        for r in [(a + b) + c, a + (b + c), (a + c) + b] {
+            assert!(iv.lo <= r && r <= iv.hi, "{r:e} outside {iv:?}");
+        }
+        assert!(iv.lo <= 0.0 && iv.hi >= 2f32.powi(-24));
     }
 
     #[test]
