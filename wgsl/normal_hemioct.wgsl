@@ -54,7 +54,7 @@ fn hemioct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
 fn hemioct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
     let mi = i32(m);
     let ab = bitcast<vec2<i32>>(uv + uv) - vec2<i32>(mi);
-    let h = (ab + ab.yx * vec2<i32>(1, -1)) >> vec2<u32>(1u);
+    let h = (ab * vec2<i32>(1, -1) + ab.yx) >> vec2<u32>(1u);
     let aab = abs(ab);
     return vec3<i32>(h, mi - max(aab.x, aab.y));
 }
