@@ -61,7 +61,7 @@ fn hemioct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
 
 // One step of the precise encoder's choice, as normal_oct.wgsl's oct_try: the code c00 + off
 // replaces the best so far (code in xy, score bits in z) only if its score, sin^2 of the angle
-// to s times |s|^2, is strictly smaller; non-negative finite scores order as their bits.
+// to s times |s|^2, is strictly smaller (compared as floats, as there).
 fn hemioct_try(s: vec3<f32>, m: u32, c00: vec2<u32>, off: vec2<u32>, best: vec3<u32>) -> vec3<u32> {
     let c = c00 + off;
     let d = hemioct_lattice(c, m);
@@ -69,8 +69,8 @@ fn hemioct_try(s: vec3<f32>, m: u32, c00: vec2<u32>, off: vec2<u32>, best: vec3<
     let du = bitcast<vec3<u32>>(d);
     let sq = du * du;
     let x = cross(s, vec3<f32>(d));
-    let score = bitcast<u32>(dot(x, x) / f32(sq.x + sq.y + sq.z));
-    return select(best, vec3<u32>(c, score), score < best.z);
+    let score = dot(x, x) / f32(sq.x + sq.y + sq.z);
+    return select(best, vec3<u32>(c, bitcast<u32>(score)), score < bitcast<f32>(best.z));
 }
 
 // Precise: the best of the four codes around the continuous coordinates, tried in the order

@@ -79,9 +79,9 @@ fn oct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
 // One step of the precise encoder's choice: the code c00 + off, scored by sin^2 of the angle
 // between s and its direction D (|s x D|^2 / |D|^2, up to the common factor |s|^2), replaces
 // the best so far (code in xy, score bits in z) only if its score is strictly smaller. Sine,
-// not cosine: at oct32's 2e-5 rad a cosine is 1.0 in f32. Scores are finite and >= +0, so
-// their bits order as their values do. One function for the score and the step: the four
-// candidates share its code.
+// not cosine: at oct32's 2e-5 rad a cosine is 1.0 in f32. Compared as floats: a conforming
+// division may return a tiny negative for an exact 0. One function for the score and the
+// step: the four candidates share its code.
 fn oct_try(s: vec3<f32>, m: u32, c00: vec2<u32>, off: vec2<u32>, best: vec3<u32>) -> vec3<u32> {
     let c = c00 + off;
     let d = oct_lattice(c, m);
@@ -90,8 +90,8 @@ fn oct_try(s: vec3<f32>, m: u32, c00: vec2<u32>, off: vec2<u32>, best: vec3<u32>
     let du = bitcast<vec3<u32>>(d);
     let sq = du * du;
     let x = cross(s, vec3<f32>(d));
-    let score = bitcast<u32>(dot(x, x) / f32(sq.x + sq.y + sq.z));
-    return select(best, vec3<u32>(c, score), score < best.z);
+    let score = dot(x, x) / f32(sq.x + sq.y + sq.z);
+    return select(best, vec3<u32>(c, bitcast<u32>(score)), score < bitcast<f32>(best.z));
 }
 
 // The survey's precise encoder: of the four codes around the continuous coordinates (floor and
