@@ -301,11 +301,10 @@ fn every_order(terms: &[Iv], flush: bool) -> R<Iv> {
     Ok(hull.expect("two or more terms have a split"))
 }
 
-/// `p·q` (`kind` 1) or `p/q` (2), with every one-level reassociation of it hulled in: where an
-/// operand is itself a product or quotient, `(a·b)·q ↔ a·(b·q)`, `(a/b)·q ↔ (a·q)/b`,
-/// `(a·b)/q ↔ (a/q)·b`, `(a/b)/q ↔ a/(b·q)` and their mirror images, each evaluated from the
-/// operands' own enclosures. A chain of three or more is refused (its reorderings are not
-/// enumerated).
+/// `p·q` (`kind` 1) or `p/q` (2), with every reassociation of it hulled in: where an operand
+/// is itself a product or quotient, every other order of the same three operands
+/// (`(a·b)/q ↔ (a/q)·b ↔ a·(b/q)` and the rest), each evaluated from the operands' own
+/// enclosures. A chain of three or more is refused (its reorderings are not enumerated).
 fn mul_div(kind: u8, p: Iv, q: Iv, flush: bool) -> R<Iv> {
     let fl = |v: Iv| flushed(v, flush);
     let op = |k: u8, a: Iv, b: Iv| -> R<Iv> {
@@ -325,18 +324,32 @@ fn mul_div(kind: u8, p: Iv, q: Iv, flush: bool) -> R<Iv> {
     let iv = |x: (f32, f32)| Iv::new(x.0, x.1);
     let (pa, pb, qa, qb) = (iv(p.chain.a), iv(p.chain.b), iv(q.chain.a), iv(q.chain.b));
     let mut alts: Vec<Iv> = Vec::new();
+    // Each chain of two is one of three families over its three operands, every member of
+    // which is mathematically equal: x·y·z, x·y/z and x/(y·z).
     match (kind, p.chain.kind) {
+        // (a·b)·q: a·(b·q), b·(a·q)
         (1, 1) => alts.extend([op(1, pa, op(1, pb, q)?)?, op(1, pb, op(1, pa, q)?)?]),
-        (1, 2) => alts.push(op(2, op(1, pa, q)?, pb)?),
+        // (a/b)·q: (a·q)/b, a·(q/b)
+        (1, 2) => alts.extend([op(2, op(1, pa, q)?, pb)?, op(1, pa, op(2, q, pb)?)?]),
+        // (a·b)/q: (a/q)·b, a·(b/q)
         (2, 1) => alts.extend([op(1, op(2, pa, q)?, pb)?, op(1, pa, op(2, pb, q)?)?]),
-        (2, 2) => alts.push(op(2, pa, op(1, pb, q)?)?),
+        // (a/b)/q: a/(b·q), (a/q)/b
+        (2, 2) => alts.extend([op(2, pa, op(1, pb, q)?)?, op(2, op(2, pa, q)?, pb)?]),
         _ => {}
     }
     match (kind, q.chain.kind) {
+        // p·(a·b): (p·a)·b, (p·b)·a
         (1, 1) => alts.extend([op(1, op(1, p, qa)?, qb)?, op(1, op(1, p, qb)?, qa)?]),
-        (1, 2) => alts.push(op(2, op(1, p, qa)?, qb)?),
+        // p·(a/b): (p·a)/b, (p/b)·a
+        (1, 2) => alts.extend([op(2, op(1, p, qa)?, qb)?, op(1, op(2, p, qb)?, qa)?]),
+        // p/(a·b): (p/a)/b, (p/b)/a
         (2, 1) => alts.extend([op(2, op(2, p, qa)?, qb)?, op(2, op(2, p, qb)?, qa)?]),
-        (2, 2) => alts.push(op(2, op(1, p, qb)?, qa)?),
+        // p/(a/b): (p·b)/a, (p/a)·b, p·(b/a)
+        (2, 2) => alts.extend([
+            op(2, op(1, p, qb)?, qa)?,
+            op(1, op(2, p, qa)?, qb)?,
+            op(1, p, op(2, qb, qa)?)?,
+        ]),
         _ => {}
     }
     for a in alts {
@@ -769,6 +782,61 @@ impl Enclosure {
         })
     }
 
+    /// `bitcast<u32>(x) & m` for the masks that read a field of an f32 (magnitude
+    /// `0x7fffffff`, exponent `0x7f800000`, sign `0x80000000`), from `x`'s enclosure: each is
+    /// monotone in `|x|` (or only the sign), where the bit cast of an interval that spans zero
+    /// is not.
+    fn float_field(
+        &self,
+        fr: &mut Frame<'_>,
+        op: BinaryOperator,
+        left: Handle<Expression>,
+        right: Handle<Expression>,
+        depth: usize,
+    ) -> R<Option<Value>> {
+        let Expression::As {
+            expr: inner,
+            kind: ScalarKind::Uint,
+            convert: None,
+        } = fr.exprs[left]
+        else {
+            return Ok(None);
+        };
+        if op != BinaryOperator::And {
+            return Ok(None);
+        }
+        let (Value::F32 { lanes, .. }, Value::U32(masks)) =
+            (self.eval(fr, inner, depth)?, self.eval(fr, right, depth)?)
+        else {
+            return Ok(None);
+        };
+        let mut out = Vec::with_capacity(lanes.len());
+        for (k, x) in lanes.iter().enumerate() {
+            let (m, m_hi) = masks[if masks.len() == 1 { 0 } else { k }];
+            let x = flushed(*x, self.flush);
+            let (alo, ahi) = if !x.may_be_negative() {
+                (x.lo, x.hi)
+            } else if x.hi < 0.0 || x.hi.to_bits() == 0x8000_0000 {
+                (-x.hi, -x.lo)
+            } else {
+                (0.0, x.hi.max(-x.lo))
+            };
+            let sign_may = x.may_be_negative();
+            let sign_must = x.hi < 0.0 || x.hi.to_bits() == 0x8000_0000;
+            out.push(match (m, m == m_hi) {
+                (0x7fff_ffff, true) => (alo.to_bits(), ahi.to_bits()),
+                (0x7f80_0000, true) => (alo.to_bits() & m, ahi.to_bits() & m),
+                (0x8000_0000, true) => match (sign_may, sign_must) {
+                    (_, true) => (m, m),
+                    (false, _) => (0, 0),
+                    _ => (0, m),
+                },
+                _ => return Ok(None),
+            });
+        }
+        Ok(Some(Value::U32(out)))
+    }
+
     fn eval(&self, fr: &mut Frame<'_>, e: Handle<Expression>, depth: usize) -> R<Value> {
         if let Some(v) = &fr.cache[e.index()] {
             return Ok(v.clone());
@@ -919,6 +987,9 @@ impl Enclosure {
                 }
             }
             Expression::Binary { op, left, right } => {
+                if let Some(v) = self.float_field(fr, *op, *left, *right, depth)? {
+                    return Ok(v);
+                }
                 let a = self.eval(fr, *left, depth)?;
                 let b = self.eval(fr, *right, depth)?;
                 binary(*op, a, b, flush)?
@@ -1580,6 +1651,11 @@ mod tests {
         fn conv(x: u32) -> f32 { return f32(x); }
         fn scaled(a: f32, b: f32, c: f32) -> f32 { let p = a * b; return p / c; }
         fn long_chain(a: f32, b: f32, c: f32) -> f32 { return ((a * b) / c) * a; }
+        fn sane(x: f32) -> f32 {
+            let bits = bitcast<u32>(x);
+            return select(x, 1e30, (bits & 0x7fffffffu) >= 0x7f800000u);
+        }
+        fn spread(a: f32, b: f32) -> f32 { return sane((a / b) * b - a); }
         fn row(a: f32, b: f32, c: f32) -> f32 {
             return (mat3x3<f32>(vec3<f32>(1.0), vec3<f32>(1.0), vec3<f32>(1.0)) * vec3<f32>(a, b, c)).x;
         }
@@ -1673,6 +1749,14 @@ mod tests {
             assert!(iv.lo <= r && r <= iv.hi, "{r:e} outside {iv:?}");
         }
         assert!(iv.lo <= 0.0 && iv.hi >= 2f32.powi(-24));
+    }
+
+    #[test]
+    fn a_magnitude_read_from_the_bits_of_an_enclosure_that_spans_zero_stays_finite() {
+        // (1/3)·3 − 1 lies on both sides of 0, so its bits span the sign; its magnitude cannot
+        // reach infinity, so the select must keep the value and never the 1e30.
+        let iv = f("spread", &[1.0, 3.0], false).unwrap();
+        assert!(iv.lo < 0.0 && iv.hi > 0.0 && iv.hi < 1e-6, "{iv:?}");
     }
 
     #[test]
