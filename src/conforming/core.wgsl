@@ -200,9 +200,22 @@ fn prepass_cf_ftz(site: u32, x: f32) -> f32 {
     return prepass_cf_pick(PREPASS_CF_FLUSH, site, x, bitcast<f32>(bitcast<u32>(x) & 0x80000000u));
 }
 
+// x, through a value the host's compiler cannot see: prepass_cf_mode.z is 0, read at run time
+// from the table wrappers' last argument in the searched module. The error-free
+// transformations below pass their operands through it because SPIR-V does not mark them
+// exact, and with a constant operand lavapipe's compiler rewrites them: Dekker's a*b - p for
+// a = 1e-4, b = 16777215 (a literal) came out -1.3e-8 instead of +2.2e-5, and the push went
+// the wrong way, one ULP beyond the spec (found by conforming::interval). Modules built by
+// `emulate` alone never write prepass_cf_mode, so there a compiler may still fold.
+fn prepass_cf_opaque(x: f32) -> f32 {
+    return bitcast<f32>(bitcast<u32>(x) | prepass_cf_mode.z);
+}
+
 // Exact a*b - p for p = a*b rounded to nearest (Dekker), or 0 where the split could overflow or
 // underflow: there the host's rounding, one allowed neighbour, stands.
-fn prepass_cf_mul_err(a: f32, b: f32, p: f32) -> f32 {
+fn prepass_cf_mul_err(a0: f32, b0: f32, p: f32) -> f32 {
+    let a = prepass_cf_opaque(a0);
+    let b = prepass_cf_opaque(b0);
     let big = bitcast<f32>(0x5d800000u); // 2^60
     let small = bitcast<f32>(0x0d800000u); // 2^-100
     if (!(abs(a) < big && abs(b) < big && abs(p) > small && prepass_cf_finite(p))) {
@@ -226,8 +239,8 @@ fn prepass_cf_add_err(a0: f32, b0: f32, s0: f32) -> f32 {
         return 0.0;
     }
     let k = select(1.0, bitcast<f32>(0x5f800000u), max(abs(a0), abs(b0)) < bitcast<f32>(0x21800000u));
-    let a = a0 * k;
-    let b = b0 * k;
+    let a = prepass_cf_opaque(a0) * k;
+    let b = prepass_cf_opaque(b0) * k;
     let s = s0 * k;
     let bb = s - a;
     return (a - (s - bb)) + (b - bb);
