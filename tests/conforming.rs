@@ -804,6 +804,51 @@ fn column_for(ty: prepass::harness::ValueType, n: usize, seed: u64) -> Vec<u32> 
 }
 
 /// One [`column_for`] per parameter of `sig`, parameter k drawn from `seed ^ (k + 1)·0x1000_0001`.
+/// Input `i` of `columns_for`'s columns as interval-evaluator arguments.
+fn interval_args(
+    sig: &Signature,
+    cols: &[Vec<u32>],
+    i: usize,
+) -> Vec<prepass::conforming::interval::Value> {
+    use prepass::conforming::interval::Value;
+    use prepass::harness::Scalar;
+    sig.params
+        .iter()
+        .zip(cols)
+        .map(|(p, c)| {
+            let l = usize::from(p.ty.lanes);
+            let w = &c[i * l..(i + 1) * l];
+            match p.ty.scalar {
+                Scalar::F32 => {
+                    Value::f32s(&w.iter().map(|&b| f32::from_bits(b)).collect::<Vec<_>>())
+                }
+                Scalar::U32 => Value::u32s(w),
+                Scalar::I32 => Value::I32(w.iter().map(|&b| (b as i32, b as i32)).collect()),
+            }
+        })
+        .collect()
+}
+
+/// Whether result words lie in an enclosure, lane by lane.
+fn inside(e: &prepass::conforming::interval::Value, words: &[u32]) -> bool {
+    use prepass::conforming::interval::Value;
+    match e {
+        Value::F32 { lanes, .. } => lanes.iter().zip(words).all(|(iv, &b)| {
+            let x = f32::from_bits(b);
+            iv.lo <= x && x <= iv.hi
+        }),
+        Value::U32(l) => l
+            .iter()
+            .zip(words)
+            .all(|(&(lo, hi), &b)| lo <= b && b <= hi),
+        Value::I32(l) => l
+            .iter()
+            .zip(words)
+            .all(|(&(lo, hi), &b)| lo <= b as i32 && b as i32 <= hi),
+        _ => false,
+    }
+}
+
 fn columns_for(sig: &Signature, n: usize, seed: u64) -> Vec<Vec<u32>> {
     sig.params
         .iter()
@@ -939,7 +984,7 @@ fn oct32_round_at_end(n: [f32; 3], up: bool) -> Option<u32> {
 ///   module's error terms differently and the two disagree on a few inputs: wherever they
 ///   differ, the table's code is the one exact arithmetic gives ([`oct32_round_at_end`]).
 #[test]
-fn every_policy_through_the_searched_module_equals_its_own_module() {
+fn every_policy_through_the_searched_module_matches_its_own_module() {
     use prepass::conforming::emulate;
     use prepass::wgsl::{LINEAR_DEPTH, LPP, NORMAL_OCT, ROUGHNESS};
     let n = 4096;
@@ -992,11 +1037,33 @@ fn every_policy_through_the_searched_module_equals_its_own_module() {
                 .filter(|&i| want.words()[i * w..(i + 1) * w] != got.words()[i * w..(i + 1) * w])
                 .collect();
             if name != "encode_normal_oct32_fast" {
-                assert!(
-                    differ.is_empty(),
-                    "{name} {policy}: the table's values differ from the policy module's at {} inputs",
-                    differ.len()
-                );
+                // They may differ where the policy's own module's error-free transformations
+                // see literal operands, which the host compiler folds and rewrites (core.wgsl,
+                // prepass_cf_opaque): its push then falls short or oversteps. There the table's
+                // value must be inside the interval enclosure of every allowed result.
+                let enclosure = prepass::conforming::interval::Enclosure::new(src, true).unwrap();
+                let mut own_outside = 0;
+                for &i in &differ {
+                    let vals = interval_args(&sig, &cols, i);
+                    let e = enclosure.of(name, &vals).unwrap_or_else(|e| {
+                        panic!("{name} {policy}: the table differs from the policy module at {} inputs, and the interval evaluator cannot decide which is right: {e}", differ.len())
+                    });
+                    let (g, o) = (
+                        &got.words()[i * w..(i + 1) * w],
+                        &want.words()[i * w..(i + 1) * w],
+                    );
+                    assert!(
+                        inside(&e, g),
+                        "{name} {policy}, input {i}: table {g:x?} outside the enclosure of every allowed result {e:?} (own module {o:x?})"
+                    );
+                    own_outside += usize::from(!inside(&e, o));
+                }
+                if !differ.is_empty() {
+                    eprintln!(
+                        "{name} {policy}: the constant-direction module differs from the table at {} of {n} inputs, outside the spec at {own_outside}; the table stays inside",
+                        differ.len()
+                    );
+                }
                 continue;
             }
             for &i in &differ {

@@ -48,13 +48,16 @@
 //! ones or all zeros (a uniform), which is the same choice at every site, and `Seeded(s)` as
 //! the same module in its seeded mode with seed `s`: one compiled pipeline serves every policy
 //! but the identity, where a CPU adapter spends far more on compiling than on running. The
-//! direction is then a run-time value, and that also keeps the host compiler from folding it
-//! into the error-free transformations: on lavapipe (Mesa 22.3 and 25.0) the module built with the
-//! direction as a constant leaves some products unpushed (11 of 4096 inputs of the 32-bit
-//! rounding octahedral encoder under `Upper`, 7 under `Lower`), and at every one of them the
-//! table's result is the one exact arithmetic gives (`tests/conforming.rs`,
-//! `every_policy_through_the_searched_module_equals_its_own_module`). [`emulate`] itself still
-//! writes the policy as a constant, for a module used on its own.
+//! direction is then a run-time value, and the error-free transformations (Dekker's product
+//! error, TwoSum) read their operands through a run-time zero from the same argument
+//! (`prepass_cf_opaque` in `core.wgsl`), which keeps the host compiler from folding and
+//! rewriting them — SPIR-V does not mark them exact. With a constant direction or a literal
+//! operand, lavapipe (Mesa 22.3 and 25.0) computes some error terms wrong, so a module built
+//! by [`emulate`] alone (which writes the policy as a constant, for a module used on its own)
+//! can leave a product unpushed or push it one step beyond the spec: `tests/conforming.rs`
+//! (`every_policy_through_the_searched_module_matches_its_own_module`) counts both and checks
+//! that the table's result is allowed (inside [`interval`]'s enclosure, or the exact
+//! arithmetic's code) wherever the two differ. Run emulations through [`EmulatedKernel`].
 //!
 //! The fixed policies are greedy — each operation at its own extreme — which is not always the
 //! composite's extreme (errors of opposite sign cancel); the seeded policy explores mixtures,
