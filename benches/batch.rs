@@ -111,14 +111,7 @@ fn meshopt_decode(buf: &mut [u8], size: &Size) {
 fn criterion_groups(c: &mut Criterion) {
     let (flat, vecs) = normals();
     let level = Level::detected();
-    for (k, size) in SIZES.iter().enumerate() {
-        // Progress on stderr (stdout is the summary that .ci/bench files).
-        eprintln!(
-            "summary: {} ({}/{}), {runs} interleaved runs of 9 timings…",
-            size.name,
-            k + 1,
-            SIZES.len()
-        );
+    for size in &SIZES {
         let mut encoded = vec![0u8; N * size.stride];
         meshopt_encode(&mut encoded, &flat, size);
         let mut codes = vec![0u32; N];
