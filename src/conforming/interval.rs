@@ -250,26 +250,13 @@ fn div(a: Iv, b: Iv) -> R<Iv> {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &x| {
             (l.min(x), h.max(x))
         });
-    // 2.5 ULP of the largest |q| bounds the allowance everywhere (ULP grows with |q|); the
+    // 2.5 ULP of the largest |q| bounds the allowance everywhere (ULP grows with |q|); inward's
     // 2^-50 relative slack covers the f64 rounding of the quotients and of these sums.
     let allow = 2.5 * ulp_spec(mn.abs().max(mx.abs()));
-    let lo_real = mn - allow - mn.abs() * 2f64.powi(-50);
-    let hi_real = mx + allow + mx.abs() * 2f64.powi(-50);
-    let mut lo = lo_real as f32;
-    if f64::from(lo) < lo_real {
-        lo = lo.next_up();
-    }
-    let mut hi = hi_real as f32;
-    if f64::from(hi) > hi_real {
-        hi = hi.next_down();
-    }
-    checked(
-        zero_sign(
-            Iv::new(lo, hi),
-            a.may_be_negative() != b.may_be_negative() || a.may_be_negative(),
-        ),
-        "/",
-    )
+    Ok(zero_sign(
+        inward(mn - allow, mx + allow, "/")?,
+        a.may_be_negative() != b.may_be_negative() || a.may_be_negative(),
+    ))
 }
 
 /// The hull of a sum of `terms` over every order of evaluation (every binary tree of them).
@@ -1437,7 +1424,7 @@ fn math(fun: MathFunction, a: Value, b: Option<Value>, c: Option<Value>, flush: 
 }
 
 /// The f32 values in `[lo_real, hi_real]`, widened by `2^-50` relative for the f64 evaluation
-/// of the ends (f64 `log2`/`exp2` are within an f64 ULP or two).
+/// of the ends (f64 `/`, `log2`, `exp2` and the allowance sums are within an f64 ULP or two).
 fn inward(lo_real: f64, hi_real: f64, what: &str) -> R<Iv> {
     let lo_real = lo_real - lo_real.abs() * 2f64.powi(-50);
     let hi_real = hi_real + hi_real.abs() * 2f64.powi(-50);
@@ -1477,6 +1464,15 @@ fn exp2(v: Iv) -> R<Iv> {
     inward(a - ulps * ulp_spec(a), b + ulps * ulp_spec(b), "exp2")
 }
 
+/// `min` or `max` of two integer intervals: monotone in both, so end by end.
+fn ends<T: Ord + Copy>(min: bool, p: (T, T), q: (T, T)) -> (T, T) {
+    if min {
+        (p.0.min(q.0), p.1.min(q.1))
+    } else {
+        (p.0.max(q.0), p.1.max(q.1))
+    }
+}
+
 fn minmax(min: bool, a: Value, b: Value, flush: bool) -> R<Value> {
     Ok(match (a, b) {
         (Value::F32 { lanes: x, .. }, Value::F32 { lanes: y, .. }) => Value::F32 {
@@ -1505,20 +1501,8 @@ fn minmax(min: bool, a: Value, b: Value, flush: bool) -> R<Value> {
             })?,
             sum: 0,
         },
-        (Value::U32(x), Value::U32(y)) => Value::U32(lanewise(&x, &y, |p, q| {
-            Ok(if min {
-                (p.0.min(q.0), p.1.min(q.1))
-            } else {
-                (p.0.max(q.0), p.1.max(q.1))
-            })
-        })?),
-        (Value::I32(x), Value::I32(y)) => Value::I32(lanewise(&x, &y, |p, q| {
-            Ok(if min {
-                (p.0.min(q.0), p.1.min(q.1))
-            } else {
-                (p.0.max(q.0), p.1.max(q.1))
-            })
-        })?),
+        (Value::U32(x), Value::U32(y)) => Value::U32(lanewise(&x, &y, |p, q| Ok(ends(min, p, q)))?),
+        (Value::I32(x), Value::I32(y)) => Value::I32(lanewise(&x, &y, |p, q| Ok(ends(min, p, q)))?),
         _ => return Err(not_covered("min/max of these kinds")),
     })
 }

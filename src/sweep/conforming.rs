@@ -396,7 +396,7 @@ pub fn linear_depth_figures(
             crate::conforming::interval::Enclosure::new(crate::wgsl::LINEAR_DEPTH, true)
                 .map_err(machine_err)?;
         let (mut machine, mut machine_at) =
-            super::linear_depth::machine_worst(path).map_err(machine_err)?;
+            super::linear_depth::machine_worst(path, &enclosure).map_err(machine_err)?;
         let mut machine_violations = Vec::new();
         for (f, s) in found.iter().zip(&pool) {
             let m = super::linear_depth::machine_error(

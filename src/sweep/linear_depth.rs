@@ -633,11 +633,11 @@ pub fn machine_error(
 
 /// [`machine_error`]'s largest value over the stiff grid, sampled ([`MACHINE_STRIDE`]), with
 /// where it is; cases run on parallel threads.
+/// `enclosure` is [`crate::wgsl::LINEAR_DEPTH`]'s, with flushing.
 pub fn machine_worst(
     path: &Path,
+    enclosure: &crate::conforming::interval::Enclosure,
 ) -> Result<(f64, String), crate::conforming::interval::IntervalError> {
-    use crate::conforming::interval::Enclosure;
-    let enclosure = Enclosure::new(crate::wgsl::LINEAR_DEPTH, true)?;
     let codes: Vec<u32> = sampled_codes()
         .into_iter()
         .step_by(MACHINE_STRIDE)
@@ -655,7 +655,6 @@ pub fn machine_worst(
         let handles: Vec<_> = cases
             .chunks(per)
             .map(|part| {
-                let enclosure = &enclosure;
                 sc.spawn(move || {
                     let mut worst = (0.0f64, String::new());
                     for case in part {
