@@ -1094,7 +1094,8 @@ fn every_policy_through_the_searched_module_matches_its_own_module() {
 #[test]
 fn every_normal_encoding_under_emulation() {
     use prepass::sweep::conforming::{
-        UNIT_TOLERANCE_CONFORMING, normal_figures_with, optimality_tolerance_conforming_deg,
+        SEARCHED_NORMAL_INPUTS, UNIT_TOLERANCE_CONFORMING, normal_figures_with,
+        optimality_tolerance_conforming_deg,
     };
     use prepass::sweep::normal::{
         adversarial_directions, fibonacci_directions, optimality_tolerance_deg, precise_optimality,
@@ -1160,33 +1161,86 @@ fn every_normal_encoding_under_emulation() {
             c.name
         );
     };
-    let rows = normal_figures_with(gpu(), &inputs, &policies, &codes_for, &mut inspect).unwrap();
+    // The round-trip search at the SEARCHED_NORMAL_INPUTS inputs the policies erred most on
+    // (per codec: each policy's worst, pooled): the encoder's and decoder's ends chosen
+    // together, which the greedy policies never combine.
+    let rows = normal_figures_with(
+        gpu(),
+        &inputs,
+        &policies,
+        SEARCHED_NORMAL_INPUTS,
+        &codes_for,
+        &mut inspect,
+    )
+    .unwrap();
     let mut readme = String::from(
-        "| encoding | bits | target format | max° | mean° | max° on the worst conforming adapter | SPIR-V encode / decode |\n|---|---|---|---|---|---|---|\n",
+        "| encoding | bits | target format | max° | mean° | max° on the worst conforming adapter (greedy / searched) | SPIR-V encode / decode |\n|---|---|---|---|---|---|---|\n",
     );
     let mut full = common::adapter_line();
     let _ = writeln!(
         full,
-        "\n| encoding | bits | max° | mean° | emulated max° (upper / lower / seeded) | emulated mean° | codes ≠ Rust twin (emulated, of {}) | max \\|len − 1\\| of emulated decodes |\n|---|---|---|---|---|---|---|---|",
+        "\n| encoding | bits | max° | mean° | emulated max° (upper / lower / seeded) | max° (worst found by the search) | search: slots read per input | emulated mean° | codes ≠ Rust twin (emulated, of {}) | max \\|len − 1\\| of emulated decodes |\n|---|---|---|---|---|---|---|---|---|---|",
         inputs.len()
     );
     for r in &rows {
         assert_eq!(r.adapter.nan_count, 0, "{}: NaN round trips", r.name);
         let worst = r.emulated_max.iter().copied().fold(0.0, f64::max);
+        eprintln!(
+            "{:14} searched at {} inputs: worst {:.6}° (greedy {worst:.6}°) at {}",
+            r.name, r.searched_inputs, r.searched, r.searched_at
+        );
+        assert_eq!(
+            r.searched_inputs, SEARCHED_NORMAL_INPUTS,
+            "{}: the search ran at fewer inputs than asked",
+            r.name
+        );
+        assert!(
+            r.searched.is_finite(),
+            "{}: the searched round trip gave a non-finite angle: {}",
+            r.name,
+            r.searched_at
+        );
+        // The searched tables are conforming behaviours: the promises asserted under the
+        // policies above must hold at the worst combination the search found too.
+        assert_within!(
+            r.searched_code_step,
+            1,
+            "the twins' promise: within one code on every conforming adapter",
+            "{}: code steps from the twin's at the searched worst tables",
+            r.name
+        );
+        assert_within!(
+            r.searched_len_error,
+            UNIT_TOLERANCE_CONFORMING,
+            "sweep::conforming::UNIT_TOLERANCE_CONFORMING",
+            "{}: |len − 1| of the decodes at the searched worst tables",
+            r.name
+        );
+        // The README says the greedy and searched worst agree to the fourth decimal.
+        assert_within_abs!(
+            r.searched - worst,
+            0.0,
+            1e-4,
+            "README, Pick an encoding: greedy and searched agree to the fourth decimal",
+            "{}: searched worst − greedy worst, degrees",
+            r.name
+        );
         let _ = writeln!(
             readme,
-            "| {} | {} | {} | {:.4} | {:.4} | {worst:.4} | {} / {} |",
+            "| {} | {} | {} | {:.4} | {:.4} | {worst:.4} / {:.4} | {} / {} |",
             r.name,
             r.bits,
             r.target,
             r.adapter.max,
             r.adapter.mean(),
+            r.searched,
             r.spirv.0,
             r.spirv.1
         );
+        let (lo, hi, exhaustive) = r.searched_slots;
         let _ = writeln!(
             full,
-            "| {} | {} | {:.6} | {:.6} | {:.6} / {:.6} / {:.6} | {:.6} | {} | {:.3e} |",
+            "| {} | {} | {:.6} | {:.6} | {:.6} / {:.6} / {:.6} | {:.6} | {lo}–{hi}{} | {:.6} | {} | {:.3e} |",
             r.name,
             r.bits,
             r.adapter.max,
@@ -1194,6 +1248,12 @@ fn every_normal_encoding_under_emulation() {
             r.emulated_max[0],
             r.emulated_max[1],
             r.emulated_max[2],
+            r.searched,
+            if exhaustive {
+                ", exhaustive"
+            } else {
+                ", climbed"
+            },
             r.emulated_mean,
             r.twin_changed,
             r.max_len_error

@@ -134,16 +134,36 @@ impl Found {
     }
 }
 
-/// Each element `(input, table)` of `plan` evaluated: its error, or −∞ where an operation left
-/// the spec's domain. One dispatch (two kernels).
-fn evaluate(
+/// Each element `(input, table)` of `plan` run: the kernel's output (element `e` is `plan[e]`)
+/// and, per element, whether an operation left the spec's domain. One dispatch. `inputs` are
+/// the function's own arguments, as [`climb`] takes them; the search uses this to read the
+/// results at the tables it found (a suite checking its promises at the worst combination).
+pub fn run_at(
     kernel: &EmulatedKernel<'_>,
     inputs: &[Arg<'_>],
     count: usize,
     plan: &[(usize, DirectionTable)],
-    error: &dyn Fn(usize, &Output, usize) -> f64,
+) -> Result<(Output, Vec<bool>), HarnessError> {
+    match run_plan(kernel, inputs, count, plan, false)? {
+        Ran::Results(out, flags) => Ok((out, flags)),
+        Ran::Masks(_) => unreachable!("asked for results"),
+    }
+}
+
+/// What [`run_plan`] returns: the results and domain flags, or the slots each element read.
+enum Ran {
+    Results(Output, Vec<bool>),
+    Masks(Vec<DirectionTable>),
+}
+
+/// [`run_at`], or with `masks` the slots each element reads (the touched kernel) instead.
+fn run_plan(
+    kernel: &EmulatedKernel<'_>,
+    inputs: &[Arg<'_>],
+    count: usize,
+    plan: &[(usize, DirectionTable)],
     masks: bool,
-) -> Result<(Vec<f64>, Vec<DirectionTable>), HarnessError> {
+) -> Result<Ran, HarnessError> {
     let n = plan.len();
     let mut columns: Vec<Vec<u8>> = Vec::new();
     for arg in inputs {
@@ -179,9 +199,26 @@ fn evaluate(
     args.push(Arg::column(&halves[1]));
     args.push(Arg::Splat(TABLE_MODE));
     if masks {
-        return Ok((Vec::new(), kernel.touched(&args, n as u64)?));
+        return Ok(Ran::Masks(kernel.touched(&args, n as u64)?));
     }
     let (out, flags) = kernel.run(&args, n as u64)?;
+    Ok(Ran::Results(out, flags))
+}
+
+/// Each element of `plan` evaluated: its error, or −∞ where an operation left the spec's
+/// domain; with `masks`, the slots each element reads instead.
+fn evaluate(
+    kernel: &EmulatedKernel<'_>,
+    inputs: &[Arg<'_>],
+    count: usize,
+    plan: &[(usize, DirectionTable)],
+    error: &dyn Fn(usize, &Output, usize) -> f64,
+    masks: bool,
+) -> Result<(Vec<f64>, Vec<DirectionTable>), HarnessError> {
+    let (out, flags) = match run_plan(kernel, inputs, count, plan, masks)? {
+        Ran::Results(out, flags) => (out, flags),
+        Ran::Masks(masks) => return Ok((Vec::new(), masks)),
+    };
     let errors = plan
         .iter()
         .enumerate()

@@ -6,6 +6,7 @@ use super::normal::{
 };
 use crate::conforming::{EmulateError, EmulatedKernel, Emulation, emulate};
 use crate::harness::{Arg, Gpu, HarnessError};
+use crate::precision::metrics::{angle_degrees, widen3};
 
 /// How far a decoded vector's length may be from 1 on any conforming adapter, for a decoder
 /// that ends in WGSL's `normalize(v)` = `v / length(v)` (or `v·inverseSqrt(dot(v, v))`, which is
@@ -193,6 +194,22 @@ pub struct NormalFigures {
     pub twin_changed: u64,
     /// Largest `|len − 1|` of any emulated decode (round trip and decoder sample).
     pub max_len_error: f64,
+    /// The worst round-trip angle the search found ([`super::normal::searched_round_trip`],
+    /// at the inputs the policies erred most on); 0 where nothing was searched.
+    pub searched: f64,
+    /// Where, with the search's record (how it was found, slots read, tables evaluated).
+    pub searched_at: String,
+    /// Over the searched inputs: the fewest and most table slots a round trip read, and whether
+    /// every input was searched exhaustively.
+    pub searched_slots: (u32, u32, bool),
+    /// Searched inputs.
+    pub searched_inputs: usize,
+    /// At the worst tables found: the largest step of the chosen code from the Rust twin's
+    /// (the one-code promise, as [`EmulatedCodec::max_code_step`] counts it).
+    pub searched_code_step: u32,
+    /// At the worst tables found: the largest `|len − 1|` of the decoded vectors (non-finite
+    /// lengths count as infinite).
+    pub searched_len_error: f64,
     /// SPIR-V instructions of the encoder and of the decoder, callees included.
     pub spirv: (usize, usize),
 }
@@ -205,21 +222,27 @@ pub fn spread_codes(bits: u32) -> Vec<u32> {
         .collect()
 }
 
-/// [`NormalFigures`] of every codec over `inputs`, under each of `policies`; each decoder also
+/// [`NormalFigures`] of every codec over `inputs`, under each of `policies`, then searched at
+/// the `searched_inputs` inputs those policies erred most on (0: no search); each decoder also
 /// over [`spread_codes`].
 pub fn normal_figures(
     gpu: &Gpu,
     inputs: &[[f32; 3]],
     policies: &[crate::conforming::Policy],
+    searched_inputs: usize,
 ) -> Result<Vec<NormalFigures>, HarnessError> {
     normal_figures_with(
         gpu,
         inputs,
         policies,
+        searched_inputs,
         &|c| spread_codes(c.bits),
         &mut |_, _, _| {},
     )
 }
+
+/// Inputs per codec the round-trip search runs at in CI: the worst of every policy's sweep.
+pub const SEARCHED_NORMAL_INPUTS: usize = 16;
 
 /// [`normal_figures`] with the decoder's codes chosen per codec, and every emulated sweep handed
 /// to `inspect` as it is measured (a suite asserts on the same measurement it publishes).
@@ -227,6 +250,7 @@ pub fn normal_figures_with(
     gpu: &Gpu,
     inputs: &[[f32; 3]],
     policies: &[crate::conforming::Policy],
+    searched_inputs: usize,
     codes_for: &dyn Fn(&Codec) -> Vec<u32>,
     inspect: &mut dyn FnMut(&Codec, crate::conforming::Policy, &EmulatedCodec),
 ) -> Result<Vec<NormalFigures>, HarnessError> {
@@ -248,11 +272,29 @@ pub fn normal_figures_with(
             emulated_mean: 0.0,
             twin_changed: 0,
             max_len_error: 0.0,
+            searched: 0.0,
+            searched_at: String::new(),
+            searched_slots: (0, 0, true),
+            searched_inputs: 0,
+            searched_code_step: 0,
+            searched_len_error: 0.0,
             spirv: (0, 0),
         };
+        // (angle, input index, policy) of each policy's worst round trips.
+        let mut pool: Vec<(f64, usize, crate::conforming::Policy)> = Vec::new();
         for &policy in policies {
             let e = emulated_codec_sweep(gpu, c, &Emulation::new(policy), inputs, &codes)?;
             inspect(c, policy, &e);
+            let mut worst: Vec<(f64, usize, crate::conforming::Policy)> = inputs
+                .iter()
+                .zip(&e.round_trip.decoded)
+                .enumerate()
+                .filter(|(_, (n, _))| !hemisphere || n[2] >= 0.0)
+                .map(|(i, (&n, &d))| (angle_degrees(widen3(n), widen3(d)), i, policy))
+                .collect();
+            worst.sort_by(|a, b| b.0.total_cmp(&a.0));
+            worst.truncate(searched_inputs);
+            pool.extend(worst);
             let s = pick(&e.round_trip);
             row.emulated_max.push(s.max);
             row.emulated_mean = row.emulated_mean.max(s.mean());
@@ -261,6 +303,9 @@ pub fn normal_figures_with(
                 .max_len_error
                 .max(e.round_trip_length.0)
                 .max(e.decoder.max_len_error);
+        }
+        if searched_inputs > 0 {
+            search_round_trips(gpu, c, inputs, pool, searched_inputs, &mut row)?;
         }
         let cost = |f: &str| {
             crate::wgsl::spirv_instruction_count(c.source, f)
@@ -292,6 +337,55 @@ pub fn normal_figures_with(
         rows.push(row);
     }
     Ok(rows)
+}
+
+/// The round-trip search at the `searched_inputs` worst of `pool` (each input once), recorded
+/// in `row`.
+fn search_round_trips(
+    gpu: &Gpu,
+    c: &Codec,
+    inputs: &[[f32; 3]],
+    mut pool: Vec<(f64, usize, crate::conforming::Policy)>,
+    searched_inputs: usize,
+    row: &mut NormalFigures,
+) -> Result<(), HarnessError> {
+    use crate::conforming::search::SearchConfig;
+    pool.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let mut seen = std::collections::HashSet::new();
+    pool.retain(|p| seen.insert(p.1));
+    pool.truncate(searched_inputs);
+    let at: Vec<[f32; 3]> = pool.iter().map(|p| inputs[p.1]).collect();
+    let config = SearchConfig::default();
+    let found = super::normal::searched_round_trip(gpu, c, &at, &config)?;
+    let slots = found.iter().map(|s| s.found.slots);
+    row.searched_slots = (
+        slots.clone().min().unwrap_or(0),
+        slots.max().unwrap_or(0),
+        found
+            .iter()
+            .all(|s| s.found.slots <= config.exhaustive_slots),
+    );
+    row.searched_inputs = found.len();
+    for (s, &(policy_error, i, policy)) in found.iter().zip(&pool) {
+        let n = inputs[i];
+        if s.found.error >= row.searched {
+            row.searched = s.found.error;
+            row.searched_at = format!(
+                "input {:?} (where {policy} gave {policy_error:.6}°): {}, {} slots read, {} tables",
+                n, s.found.how, s.found.slots, s.found.evaluated
+            );
+        }
+        let twin = (c.twin_encode)(glam::Vec3::from(n));
+        if (c.reference_decode)(s.code) != (c.reference_decode)(twin) {
+            row.searched_code_step = row.searched_code_step.max(code_step(c, s.code, twin));
+        }
+        let (len, _) = length_check(&[s.decoded], 0.0);
+        let finite = s.decoded.iter().all(|x| x.is_finite());
+        row.searched_len_error =
+            row.searched_len_error
+                .max(if finite { len } else { f64::INFINITY });
+    }
+    Ok(())
 }
 
 /// One linear-depth path's published figures.

@@ -4,7 +4,9 @@
 
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
 use prepass::conforming::Policy;
-use prepass::sweep::conforming::{SEARCHED_INPUTS, linear_depth_figures, normal_figures};
+use prepass::sweep::conforming::{
+    SEARCHED_INPUTS, SEARCHED_NORMAL_INPUTS, linear_depth_figures, normal_figures,
+};
 use prepass::sweep::normal::{adversarial_directions, fibonacci_directions};
 
 /// The section: linear depth and normal encodings, adapter beside emulation beside bound.
@@ -41,7 +43,10 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     } else {
         &[Policy::Upper, Policy::Lower, Policy::Seeded(1)]
     };
-    let normals = normal_figures(gpu, &inputs, normal_policies).map_err(|e| e.to_string())?;
+    // The round-trip search compiles one more emulated module per codec: not in quick mode.
+    let normal_searched = if quick { 0 } else { SEARCHED_NORMAL_INPUTS };
+    let normals = normal_figures(gpu, &inputs, normal_policies, normal_searched)
+        .map_err(|e| e.to_string())?;
     let names: Vec<String> = policies.iter().map(Policy::to_string).collect();
     ctx.line(format!(
         "Linear depth over the stiff grid, sampled (`sweep::linear_depth::sampled_worst`); \
@@ -81,12 +86,26 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         names.join(", ")
     ));
     ctx.line("");
-    ctx.line("| encoding | max° (adapter) | max° (worst emulated) | mean° (adapter) | mean° (worst emulated) | codes ≠ twin (emulated) | max \\|len − 1\\| (emulated) |");
-    ctx.line("|---|---|---|---|---|---|---|");
+    if normal_searched > 0 {
+        ctx.line(format!(
+            "Searched: the round trip (encode, then decode, as one function) at the \
+             {normal_searched} inputs the policies erred most on."
+        ));
+    } else {
+        ctx.line("Searched: not in quick mode (—).");
+    }
+    ctx.line("");
+    ctx.line("| encoding | max° (adapter) | max° (worst emulated) | max° (searched) | mean° (adapter) | mean° (worst emulated) | codes ≠ twin (emulated) | max \\|len − 1\\| (emulated) |");
+    ctx.line("|---|---|---|---|---|---|---|---|");
     for r in &normals {
         let worst = r.emulated_max.iter().copied().fold(0.0, f64::max);
+        let searched = if r.searched_inputs > 0 {
+            num(r.searched)
+        } else {
+            "—".to_string()
+        };
         ctx.line(format!(
-            "| {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {searched} | {} | {} | {} | {} |",
             r.name,
             num(r.adapter.max),
             num(worst),

@@ -13,6 +13,7 @@ mod myth;
 mod optimality;
 mod pool;
 mod round_trip;
+mod searched;
 mod unorm;
 
 pub use codecs::{CODECS, Codec, codec};
@@ -23,4 +24,5 @@ pub use optimality::{Optimality, optimality_tolerance_deg, precise_optimality};
 pub use round_trip::{
     RoundTrip, Runner, UNIT_TOLERANCE, reference_error, round_trip, round_trip_with,
 };
+pub use searched::{ROUND_TRIP_FN, SearchedRoundTrip, round_trip_source, searched_round_trip};
 pub use unorm::{UnormForms, unorm_forms};
