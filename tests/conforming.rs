@@ -1266,6 +1266,55 @@ fn every_normal_encoding_under_emulation() {
     common::publish_measured("docs/figures.md", "normal-encodings", &full);
 }
 
+/// Each call of a helper reads its own table slots (the call context): `h(x, y) − h(x, y)` is 0
+/// wherever both calls take one end (every uniform table: the upper and lower policies), and
+/// the search must find tables where the two calls err apart, by up to the division's 2.5 ULP
+/// each way (5 ULP of `x/y` in all). Fails if the sites were per static expression only.
+#[test]
+fn each_call_of_a_helper_has_its_own_table_slots() {
+    use prepass::conforming::interval::ulp_spec;
+    use prepass::conforming::search::{SearchConfig, climb};
+    let src = "fn h(x: f32, y: f32) -> f32 { return x / y; }\n\
+               fn twice(x: f32, y: f32) -> f32 { return h(x, y) - h(x, y); }";
+    let x: Vec<f32> = (0..16).map(|i| 1.0 + i as f32 * 0.37).collect();
+    let y: Vec<f32> = (0..16).map(|i| 3.0 + i as f32 * 0.11).collect();
+    let args = [Arg::column(&x), Arg::column(&y)];
+    for policy in [Policy::Upper, Policy::Lower] {
+        let k = EmulatedKernel::new(gpu(), src, "twice", &Emulation::new(policy)).unwrap();
+        let out = k.run(&args, x.len() as u64).unwrap().0;
+        assert!(
+            out.as_f32().iter().all(|&d| d == 0.0),
+            "{policy}: one end for every call, so h(x, y) − h(x, y) = 0; got {:?}",
+            out.as_f32()
+        );
+    }
+    let k = EmulatedKernel::new(gpu(), src, "twice", &Emulation::new(Policy::Searched)).unwrap();
+    // The difference in ULPs of the exact quotient.
+    let ulps = |i: usize, out: &prepass::harness::Output, e: usize| {
+        let q = f64::from(x[i]) / f64::from(y[i]);
+        f64::from(out.as_f32()[e]).abs() / ulp_spec(q)
+    };
+    let found = climb(&k, &args, x.len(), &ulps, &SearchConfig::default()).unwrap();
+    for (i, f) in found.iter().enumerate() {
+        let q = f64::from(x[i]) / f64::from(y[i]);
+        if q == f64::from(q as f32) {
+            continue; // exact: no freedom
+        }
+        // Each call reaches at least 2 ULP on either side (division_reaches_both_ends asserts
+        // it), so calls with their own slots can be 4 apart; asked: 2 (with shared slots: 0).
+        assert_at_least!(
+            f.error,
+            2.0,
+            "WGSL: / within 2.5 ULP, each call at an end of its own: ≥ 4 ULP apart; asked 2",
+            "input {i} ({} / {}): the searched |h − h| in ULPs ({}, {} slots read)",
+            x[i],
+            y[i],
+            f.how,
+            f.slots
+        );
+    }
+}
+
 #[path = "conforming/freedoms.rs"]
 mod freedoms;
 

@@ -19,134 +19,296 @@ use prepass::lighting::lpp::bounds::pow_relative as pow_bound;
 
 #[test]
 fn one_white_light_reconstructs_blinn_phong_within_the_derived_budget() {
-    single_white_light(None);
+    let w = WhiteLight::new(1 << 16);
+    w.check(
+        &run_kernel(&w.source, "single", &w.args(), w.n as u64),
+        None,
+    );
 }
 
-/// The same on the emulated worst conforming adapter (every policy), within twice the budget:
-/// its terms are roundings of `+ − ×` (`u` where correctly rounded, at most `2u` on a conforming
-/// adapter) or full WGSL allowances (`/`, `log2`, `exp2` inside `pow_bound`), so doubling bounds
-/// the conforming error.
+/// The same on the emulated worst conforming adapter, within twice the budget: its terms are
+/// roundings of `+ − ×` (`u` where correctly rounded, at most `2u` on a conforming adapter) or
+/// full WGSL allowances (`/`, `log2`, `exp2` inside `pow_bound`), so doubling bounds the
+/// conforming error. Every policy over 2^14 pixels (emulation is slower: every operation a
+/// helper call), then `conforming::search` at the 8 pixels the policies came nearest the budget
+/// on (32 with `PREPASS_FULL=1`; each climbs over ~180 slots, about 4 s a pixel on 2 cores),
+/// which must keep it too; published in docs/figures.md (block `lighting`).
 #[test]
 fn one_white_light_reconstructs_blinn_phong_on_every_conforming_adapter() {
-    for policy in prepass::conforming::Policy::WORST {
-        single_white_light(Some(prepass::conforming::Emulation::new(policy)));
-    }
-}
-
-/// One white light: Engel's reconstruction against the direct Blinn-Phong value, on the adapter
-/// or (with `emulation`) on the emulated worst conforming adapter.
-fn single_white_light(emulation: Option<prepass::conforming::Emulation>) {
-    let scale = if emulation.is_some() {
-        lpp::bounds::CONFORMING_FACTOR
-    } else {
-        1.0
-    };
-    let src = format!(
-        "{LPP}\nfn single(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, p: vec3<f32>) -> vec2<f32> {{\n\
-         let light = lpp_blinn_phong_light(normal, to_eye, to_light, vec3<f32>(1.0), p.x, p.y);\n\
-         let direct = lpp_blinn_phong_light(normal, to_eye, to_light, vec3<f32>(1.0), p.x, p.y * p.z).w;\n\
-         return vec2<f32>(lpp_reconstruct_specular(light, p.z), direct);\n}}"
+    use prepass::conforming::search::{SearchConfig, climb};
+    use prepass::conforming::{EmulatedKernel, Emulation, Policy};
+    use std::fmt::Write as _;
+    let searched = if common::full_strength() { 32 } else { 8 };
+    let w = WhiteLight::new(1 << 14);
+    let args = w.args();
+    let mut table = String::from(
+        "| emulation | pixels | largest share of the conforming budget | where |\n|---|---|---|---|\n",
     );
-    let mut rng = SplitMix(5);
-    // Emulation is slower (every operation a helper call): a quarter of the pixels, 2^14.
-    let n = if emulation.is_some() {
-        1 << 14
-    } else {
-        1 << 16
-    };
-    let normals: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.2)).collect();
-    let eyes: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.05)).collect();
-    let lights: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(-0.4)).collect();
-    // att, light exponent n (integer 1..128), material exponent m (integer 1..16): n·m exact.
-    let params: Vec<[f32; 3]> = (0..n)
-        .map(|i| {
-            let att = if i % 97 == 0 {
-                0.0
-            } else {
-                rng.range(0.01, 1.0)
-            };
-            [
-                att,
-                rng.range(1.0, 128.0).round(),
-                rng.range(1.0, 16.0).round(),
-            ]
-        })
-        .collect();
-    let args = [
-        Arg::column(&normals),
-        Arg::column(&eyes),
-        Arg::column(&lights),
-        Arg::column(&params),
-    ];
-    let out = match &emulation {
-        None => run_kernel(&src, "single", &args, n as u64),
-        Some(e) => {
-            let k = prepass::conforming::EmulatedKernel::new(gpu(), &src, "single", e).unwrap();
-            k.run(&args, n as u64).unwrap().0
-        }
-    };
-    let (mut worst_ratio, mut worst_ulps, mut zeros) = (0.0f64, 0u64, 0);
-    for (i, v) in out.as_vec2().iter().enumerate() {
-        let (rec, dir) = (f64::from(v[0]), f64::from(v[1]));
-        assert!(v[0].is_finite() && v[1].is_finite(), "input {i}");
-        let (nl, nh) = lpp::exact::lpp_cosines(
-            normals[i].map(f64::from),
-            eyes[i].map(f64::from),
-            lights[i].map(f64::from),
+    let mut pool: Vec<(f64, usize)> = Vec::new();
+    for policy in Policy::WORST {
+        let k = EmulatedKernel::new(gpu(), &w.source, "single", &Emulation::new(policy)).unwrap();
+        let shares = w.check(&k.run(&args, w.n as u64).unwrap().0, Some(policy));
+        let (i, worst) = argmax(&shares);
+        let _ = writeln!(
+            table,
+            "| {policy} | {} | {worst:.3} | {} |",
+            w.n,
+            w.describe(i)
         );
-        let [att, ln, m] = params[i].map(f64::from);
-        if nl == 0.0 || att == 0.0 || nh == 0.0 {
-            // N·L = 0, attenuation 0 or N·H = 0: nothing is divided, both are exactly zero.
-            assert_eq!(
-                (v[0], v[1]),
-                (0.0, 0.0),
-                "input {i}: N·L {nl}, att {att}, N·H {nh}"
-            );
-            zeros += 1;
-            continue;
-        }
-        // Derivation (relative, u = 2^-24; N·H and N·L·att are the same f32 in both paths):
-        // P: a = d·lum(1,1,1)·(N·H)^n, the light's pow within pow_bound(h, n), two products u
-        // each. C: lum(rgb) of (d, d, d) within 4u of d·Σw (three products, two sums), lum(c)
-        // in P within 2u of Σw, the division 2.5 ULP (5u): ratio = (N·H)^n·(1 + δ),
-        // |δ| ≤ 13u + pow_bound(h, n). The material exponent multiplies δ by m and adds its own
-        // pow_bound(r, m); the final product and lum add 5u. The direct value carries
-        // pow_bound(h, n·m) and 3u.
-        let r = nh.powf(ln);
-        if r < 2f64.powi(-120) {
-            // The light's own (N·H)^n is at f32's underflow cutoff: both results are (near) 0.
-            let cutoff = "comment above: (N·H)^n at f32's underflow cutoff, both near 0 (2^-100)";
-            assert_within!(rec, 2f64.powi(-100), cutoff, "input {i}: reconstructed");
-            assert_within!(dir, 2f64.powi(-100), cutoff, "input {i}: direct");
-            zeros += 1;
-            continue;
-        }
-        let budget = scale * lpp::bounds::single_light_relative(nh, ln, m);
-        // Results below 2^-126 are flushed to 0 by lpp_pow_cosine's cutoff on either side.
-        let floor = 2f64.powi(-120);
-        let err = (rec - dir).abs();
+        let mut order: Vec<usize> = (0..w.n).collect();
+        order.sort_by(|&a, &b| shares[b].total_cmp(&shares[a]));
+        pool.extend(order.iter().take(searched).map(|&i| (shares[i], i)));
+    }
+    pool.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let mut seen = std::collections::HashSet::new();
+    pool.retain(|p| seen.insert(p.1));
+    pool.truncate(searched);
+    // The searched pixels' inputs, as columns of their own.
+    let sub = w.subset(&pool.iter().map(|p| p.1).collect::<Vec<_>>());
+    let k = EmulatedKernel::new(
+        gpu(),
+        &sub.source,
+        "single",
+        &Emulation::new(Policy::Searched),
+    )
+    .unwrap();
+    let share = |i: usize, out: &prepass::harness::Output, e: usize| {
+        sub.share(i, out.as_vec2()[e], lpp::bounds::CONFORMING_FACTOR)
+    };
+    let found = climb(&k, &sub.args(), sub.n, &share, &SearchConfig::default()).unwrap();
+    let (mut worst, mut at) = (0.0f64, String::new());
+    for (j, f) in found.iter().enumerate() {
+        eprintln!(
+            "DEBUG pixel {j}: policy share {:.3}, start {:.3}, found {:.3} ({}, {} slots, {} tables)",
+            pool[j].0, f.start_error, f.error, f.how, f.slots, f.evaluated
+        );
         assert_within!(
-            err,
-            budget * dir.abs() + floor,
-            "lighting::lpp::bounds::single_light_relative (× CONFORMING_FACTOR under emulation), + 2^-120",
-            "input {i}: reconstructed {rec} vs direct {dir} (N·H {nh}, n {ln}, m {m}), budget {budget}"
+            f.error,
+            1.0,
+            "lighting::lpp::bounds::single_light_relative × CONFORMING_FACTOR, + 2^-120",
+            "searched: the share of the conforming budget at {} ({}, {} slots read, {} tables)",
+            sub.describe(j),
+            f.how,
+            f.slots,
+            f.evaluated
         );
-        if dir > floor {
-            worst_ratio = worst_ratio.max(err / (budget * dir));
-            worst_ulps = worst_ulps.max(ulp_distance(v[0], v[1]).unwrap());
+        if f.error >= worst {
+            (worst, at) = (
+                f.error,
+                format!("{} ({}, {} slots read)", sub.describe(j), f.how, f.slots),
+            );
         }
     }
     eprintln!(
-        "{}one white light, {n} pixels ({zeros} with N·L = 0, att = 0 or (N·H)^n below 2^-120): max difference {worst_ulps} \
-         ULP, at most {:.3} of the derived budget{}",
-        emulation.map_or(String::new(), |e| format!("emulated {}: ", e.policy)),
-        worst_ratio,
-        if scale > 1.0 {
-            " (doubled: conforming)"
-        } else {
-            ""
-        }
+        "searched at {} pixels: largest share of the conforming budget {worst:.3} at {at}",
+        sub.n
     );
+    let _ = writeln!(
+        table,
+        "| searched (`conforming::search::climb`) | {} | {worst:.3} | {at} |",
+        sub.n
+    );
+    common::publish_measured("docs/figures.md", "lighting", &table);
+}
+
+fn argmax(v: &[f64]) -> (usize, f64) {
+    v.iter().copied().enumerate().fold(
+        (0, f64::NEG_INFINITY),
+        |a, (i, x)| if x > a.1 { (i, x) } else { a },
+    )
+}
+
+/// One white light: Engel's reconstruction against the direct Blinn-Phong value, as one
+/// function `single(normal, to_eye, to_light, (att, n, m)) -> (reconstructed, direct)`, over
+/// random pixels.
+struct WhiteLight {
+    source: String,
+    n: usize,
+    normals: Vec<[f32; 3]>,
+    eyes: Vec<[f32; 3]>,
+    lights: Vec<[f32; 3]>,
+    params: Vec<[f32; 3]>,
+}
+
+impl WhiteLight {
+    fn new(n: usize) -> WhiteLight {
+        let mut rng = SplitMix(5);
+        let normals: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.2)).collect();
+        let eyes: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(0.05)).collect();
+        let lights: Vec<[f32; 3]> = (0..n).map(|_| rng.hemisphere(-0.4)).collect();
+        // att, light exponent n (integer 1..128), material exponent m (integer 1..16): n·m exact.
+        let params: Vec<[f32; 3]> = (0..n)
+            .map(|i| {
+                let att = if i % 97 == 0 {
+                    0.0
+                } else {
+                    rng.range(0.01, 1.0)
+                };
+                [
+                    att,
+                    rng.range(1.0, 128.0).round(),
+                    rng.range(1.0, 16.0).round(),
+                ]
+            })
+            .collect();
+        let source = format!(
+            "{LPP}\nfn single(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>, p: vec3<f32>) -> vec2<f32> {{\n\
+             let light = lpp_blinn_phong_light(normal, to_eye, to_light, vec3<f32>(1.0), p.x, p.y);\n\
+             let direct = lpp_blinn_phong_light(normal, to_eye, to_light, vec3<f32>(1.0), p.x, p.y * p.z).w;\n\
+             return vec2<f32>(lpp_reconstruct_specular(light, p.z), direct);\n}}"
+        );
+        WhiteLight {
+            source,
+            n,
+            normals,
+            eyes,
+            lights,
+            params,
+        }
+    }
+
+    fn subset(&self, at: &[usize]) -> WhiteLight {
+        let pick = |v: &[[f32; 3]]| at.iter().map(|&i| v[i]).collect();
+        WhiteLight {
+            source: self.source.clone(),
+            n: at.len(),
+            normals: pick(&self.normals),
+            eyes: pick(&self.eyes),
+            lights: pick(&self.lights),
+            params: pick(&self.params),
+        }
+    }
+
+    fn args(&self) -> [Arg<'_>; 4] {
+        [
+            Arg::column(&self.normals),
+            Arg::column(&self.eyes),
+            Arg::column(&self.lights),
+            Arg::column(&self.params),
+        ]
+    }
+
+    fn describe(&self, i: usize) -> String {
+        format!(
+            "N {:?}, V {:?}, L {:?}, (att, n, m) {:?}",
+            self.normals[i], self.eyes[i], self.lights[i], self.params[i]
+        )
+    }
+
+    /// Pixel `i`'s case: exactly zero (nothing divided), below f32's underflow cutoff, or
+    /// `(N·H, n, m)` with the budget applying.
+    fn case(&self, i: usize) -> Case {
+        let (nl, nh) = lpp::exact::lpp_cosines(
+            self.normals[i].map(f64::from),
+            self.eyes[i].map(f64::from),
+            self.lights[i].map(f64::from),
+        );
+        let [att, ln, m] = self.params[i].map(f64::from);
+        if nl == 0.0 || att == 0.0 || nh == 0.0 {
+            Case::Zero
+        } else if nh.powf(ln) < 2f64.powi(-120) {
+            Case::Cutoff
+        } else {
+            Case::Budget(nh, ln, m)
+        }
+    }
+
+    /// The share of its allowance that result `v` of pixel `i` uses (≤ 1 within it; a
+    /// non-finite result or a wrong zero counts as infinite): the search's error.
+    fn share(&self, i: usize, v: [f32; 2], scale: f64) -> f64 {
+        let (rec, dir) = (f64::from(v[0]), f64::from(v[1]));
+        if !(rec.is_finite() && dir.is_finite()) {
+            return f64::INFINITY;
+        }
+        match self.case(i) {
+            Case::Zero => {
+                if (rec, dir) == (0.0, 0.0) {
+                    0.0
+                } else {
+                    f64::INFINITY
+                }
+            }
+            Case::Cutoff => rec.abs().max(dir.abs()) / 2f64.powi(-100),
+            Case::Budget(nh, ln, m) => {
+                let budget = scale * lpp::bounds::single_light_relative(nh, ln, m);
+                (rec - dir).abs() / (budget * dir.abs() + 2f64.powi(-120))
+            }
+        }
+    }
+
+    /// Assert every result of `out` within its allowance (twice the budget under `policy`),
+    /// print the summary, and return each pixel's share of its allowance.
+    fn check(
+        &self,
+        out: &prepass::harness::Output,
+        policy: Option<prepass::conforming::Policy>,
+    ) -> Vec<f64> {
+        let scale = if policy.is_some() {
+            lpp::bounds::CONFORMING_FACTOR
+        } else {
+            1.0
+        };
+        let (mut worst_ratio, mut worst_ulps, mut zeros) = (0.0f64, 0u64, 0);
+        let mut shares = Vec::with_capacity(self.n);
+        for (i, v) in out.as_vec2().iter().enumerate() {
+            let (rec, dir) = (f64::from(v[0]), f64::from(v[1]));
+            assert!(v[0].is_finite() && v[1].is_finite(), "input {i}");
+            shares.push(self.share(i, *v, scale));
+            match self.case(i) {
+                Case::Zero => {
+                    // N·L = 0, attenuation 0 or N·H = 0: nothing is divided, both exactly zero.
+                    assert_eq!((v[0], v[1]), (0.0, 0.0), "input {i}: {}", self.describe(i));
+                    zeros += 1;
+                }
+                Case::Cutoff => {
+                    // The light's own (N·H)^n is at f32's underflow cutoff: both (near) 0.
+                    let cutoff =
+                        "comment above: (N·H)^n at f32's underflow cutoff, both near 0 (2^-100)";
+                    assert_within!(rec, 2f64.powi(-100), cutoff, "input {i}: reconstructed");
+                    assert_within!(dir, 2f64.powi(-100), cutoff, "input {i}: direct");
+                    zeros += 1;
+                }
+                Case::Budget(nh, ln, m) => {
+                    // Derivation: lighting::lpp::bounds::single_light_relative (relative,
+                    // u = 2^-24; N·H and N·L·att are the same f32 in both paths). Results
+                    // below 2^-126 are flushed to 0 by lpp_pow_cosine's cutoff on either side.
+                    let budget = scale * lpp::bounds::single_light_relative(nh, ln, m);
+                    let floor = 2f64.powi(-120);
+                    let err = (rec - dir).abs();
+                    assert_within!(
+                        err,
+                        budget * dir.abs() + floor,
+                        "lighting::lpp::bounds::single_light_relative (× CONFORMING_FACTOR under emulation), + 2^-120",
+                        "input {i}: reconstructed {rec} vs direct {dir} (N·H {nh}, n {ln}, m {m}), budget {budget}"
+                    );
+                    if dir > floor {
+                        worst_ratio = worst_ratio.max(err / (budget * dir));
+                        worst_ulps = worst_ulps.max(ulp_distance(v[0], v[1]).unwrap());
+                    }
+                }
+            }
+        }
+        eprintln!(
+            "{}one white light, {} pixels ({zeros} with N·L = 0, att = 0 or (N·H)^n below 2^-120): max difference {worst_ulps} \
+             ULP, at most {:.3} of the derived budget{}",
+            policy.map_or(String::new(), |p| format!("emulated {p}: ")),
+            self.n,
+            worst_ratio,
+            if scale > 1.0 {
+                " (doubled: conforming)"
+            } else {
+                ""
+            }
+        );
+        shares
+    }
+}
+
+/// What the budget says about one pixel ([`WhiteLight::case`]).
+enum Case {
+    Zero,
+    Cutoff,
+    Budget(f64, f64, f64),
 }
 
 #[test]

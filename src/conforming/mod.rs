@@ -41,8 +41,9 @@
 //!   operation's site and its operands' bits — among the lower end, the host's result and the
 //!   upper end (both ends included), and between the forms.
 //!
-//! - [`Policy::Searched`]: each site at the end a direction table says, the table passed with
-//!   every element; [`search`] climbs from the greedy tables to the worst one it finds.
+//! - [`Policy::Searched`]: each site, in each call context (which call of a helper it is in),
+//!   at the end a direction table says, the table passed with every element; [`search`] climbs
+//!   from the greedy tables to the worst one it finds.
 //!
 //! [`EmulatedKernel`] runs `Upper` and `Lower` as the searched module given the table of all
 //! ones or all zeros (a uniform), which is the same choice at every site, and `Seeded(s)` as

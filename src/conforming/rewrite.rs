@@ -756,7 +756,109 @@ fn apply_to(
     Ok(n)
 }
 
-/// Rewrite `module` (which holds the helper library) according to `plan`; returns the number of
+/// Where the emulation's call contexts come from: every call of one of the module's own
+/// functions is bracketed by `prepass_cf_enter(k)` (a number unique to the call statement; it
+/// returns the caller's context and makes `hash(context ^ k)` the current one) and
+/// `prepass_cf_leave(saved)`. The searched policy's table is read at `hash(site ^ context)`, so
+/// each call of a helper has its own slots: two calls of `pow` in one expression may round in
+/// opposite directions, as they may on an adapter that inlines them.
+struct CallContexts {
+    enter: Handle<Function>,
+    leave: Handle<Function>,
+    /// The module's own functions (not the emulation's helpers).
+    own: HashSet<Handle<Function>>,
+}
+
+fn with_call_contexts(
+    block: Block,
+    f: &mut naga::Arena<Expression>,
+    cx: &CallContexts,
+    next_call: &mut u32,
+) -> Block {
+    let mut out = Block::with_capacity(block.len());
+    for (stmt, span) in block.span_into_iter() {
+        match stmt {
+            Statement::Call {
+                function,
+                arguments,
+                result,
+            } if cx.own.contains(&function) => {
+                *next_call = next_call.wrapping_add(1);
+                let k = f.append(
+                    Expression::Literal(Literal::U32(next_call.wrapping_mul(0x9e37_79b9))),
+                    Span::UNDEFINED,
+                );
+                let saved = f.append(Expression::CallResult(cx.enter), Span::UNDEFINED);
+                out.push(
+                    Statement::Call {
+                        function: cx.enter,
+                        arguments: vec![k],
+                        result: Some(saved),
+                    },
+                    span,
+                );
+                out.push(
+                    Statement::Call {
+                        function,
+                        arguments,
+                        result,
+                    },
+                    span,
+                );
+                out.push(
+                    Statement::Call {
+                        function: cx.leave,
+                        arguments: vec![saved],
+                        result: None,
+                    },
+                    span,
+                );
+            }
+            Statement::Block(b) => out.push(
+                Statement::Block(with_call_contexts(b, f, cx, next_call)),
+                span,
+            ),
+            Statement::If {
+                condition,
+                accept,
+                reject,
+            } => out.push(
+                Statement::If {
+                    condition,
+                    accept: with_call_contexts(accept, f, cx, next_call),
+                    reject: with_call_contexts(reject, f, cx, next_call),
+                },
+                span,
+            ),
+            Statement::Switch {
+                selector,
+                mut cases,
+            } => {
+                for c in cases.iter_mut() {
+                    c.body = with_call_contexts(std::mem::take(&mut c.body), f, cx, next_call);
+                }
+                out.push(Statement::Switch { selector, cases }, span);
+            }
+            Statement::Loop {
+                body,
+                continuing,
+                break_if,
+            } => out.push(
+                Statement::Loop {
+                    body: with_call_contexts(body, f, cx, next_call),
+                    continuing: with_call_contexts(continuing, f, cx, next_call),
+                    break_if,
+                },
+                span,
+            ),
+            other => out.push(other, span),
+        }
+    }
+    out
+}
+
+/// Rewrite `module` (which holds the helper library) according to `plan`, and give every call
+/// of the module's own functions its call context ([`CallContexts`]); returns the number of
 /// sites rewritten.
 pub fn apply(module: &mut Module, plan: &Plan) -> Result<usize, String> {
     let helpers: HashMap<String, Handle<Function>> = module
@@ -788,6 +890,41 @@ pub fn apply(module: &mut Module, plan: &Plan) -> Result<usize, String> {
             _ => continue,
         };
         total += apply_to(f, sites, &helpers, &mut next_site)?;
+    }
+    let helper = |n: &str| {
+        helpers
+            .get(&format!("{PREFIX}{n}"))
+            .copied()
+            .ok_or_else(|| format!("helper {PREFIX}{n} is missing from the module"))
+    };
+    let cx = CallContexts {
+        enter: helper("enter")?,
+        leave: helper("leave")?,
+        own: module
+            .functions
+            .iter()
+            .filter(|(_, f)| f.name.as_deref().is_some_and(|n| !n.starts_with(PREFIX)))
+            .map(|(h, _)| h)
+            .collect(),
+    };
+    let mut next_call = 0u32;
+    for h in cx.own.iter().copied().collect::<BTreeSet<_>>() {
+        let f = &mut module.functions[h];
+        f.body = with_call_contexts(
+            std::mem::take(&mut f.body),
+            &mut f.expressions,
+            &cx,
+            &mut next_call,
+        );
+    }
+    for ep in module.entry_points.iter_mut() {
+        let f = &mut ep.function;
+        f.body = with_call_contexts(
+            std::mem::take(&mut f.body),
+            &mut f.expressions,
+            &cx,
+            &mut next_call,
+        );
     }
     Ok(total)
 }

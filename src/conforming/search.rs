@@ -4,8 +4,11 @@
 //! Under [`Policy::Searched`](super::Policy::Searched) every free operation reads its end from
 //! a 256-slot table, one bit per slot (1: the upper end of its interval, or the larger of two
 //! forms; 0: the lower end or the smaller form); an operation at site `s` reads slot
-//! `hash(s) % 256`, so the table is per site (each operation of a static expression, each lane,
-//! each inner operation of an inherited builtin has its own site). The table is an argument of
+//! `hash(s ^ context) % 256`, so the table is per site and per call context (each operation of
+//! a static expression, each lane, each inner operation of an inherited builtin has its own
+//! site; the rewrite gives every call of the module's own functions its own context, so two
+//! calls of one helper, which an inlining compiler may round differently, have their own
+//! slots). The table is an argument of
 //! every element, so one dispatch evaluates many tables: each round of the climb runs, for every
 //! input and every start, the current table and its 256 single-slot flips at once, and moves to
 //! the best flip while one improves. Starts: the upper and lower tables (the greedy policies)
