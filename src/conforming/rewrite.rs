@@ -656,6 +656,42 @@ pub fn plan(module: &Module, info: &naga::valid::ModuleInfo) -> Plan {
     plan
 }
 
+/// `stmt` with each block nested in it (a block, both arms of an `if`, every case of a
+/// `switch`, a loop's body and continuing) passed through `map`; other statements as they are.
+fn map_nested(stmt: Statement, map: &mut dyn FnMut(Block) -> Block) -> Statement {
+    match stmt {
+        Statement::Block(b) => Statement::Block(map(b)),
+        Statement::If {
+            condition,
+            accept,
+            reject,
+        } => Statement::If {
+            condition,
+            accept: map(accept),
+            reject: map(reject),
+        },
+        Statement::Switch {
+            selector,
+            mut cases,
+        } => {
+            for c in cases.iter_mut() {
+                c.body = map(std::mem::take(&mut c.body));
+            }
+            Statement::Switch { selector, cases }
+        }
+        Statement::Loop {
+            body,
+            continuing,
+            break_if,
+        } => Statement::Loop {
+            body: map(body),
+            continuing: map(continuing),
+            break_if,
+        },
+        other => other,
+    }
+}
+
 fn rebuild(block: Block, calls: &mut HashMap<Handle<Expression>, Statement>) -> Block {
     let mut out = Block::with_capacity(block.len());
     for (stmt, span) in block.span_into_iter() {
@@ -680,41 +716,7 @@ fn rebuild(block: Block, calls: &mut HashMap<Handle<Expression>, Statement>) -> 
                 }
                 flush(&mut out, &mut run);
             }
-            Statement::Block(b) => out.push(Statement::Block(rebuild(b, calls)), span),
-            Statement::If {
-                condition,
-                accept,
-                reject,
-            } => out.push(
-                Statement::If {
-                    condition,
-                    accept: rebuild(accept, calls),
-                    reject: rebuild(reject, calls),
-                },
-                span,
-            ),
-            Statement::Switch {
-                selector,
-                mut cases,
-            } => {
-                for c in cases.iter_mut() {
-                    c.body = rebuild(std::mem::take(&mut c.body), calls);
-                }
-                out.push(Statement::Switch { selector, cases }, span);
-            }
-            Statement::Loop {
-                body,
-                continuing,
-                break_if,
-            } => out.push(
-                Statement::Loop {
-                    body: rebuild(body, calls),
-                    continuing: rebuild(continuing, calls),
-                    break_if,
-                },
-                span,
-            ),
-            other => out.push(other, span),
+            other => out.push(map_nested(other, &mut |b| rebuild(b, calls)), span),
         }
     }
     out
@@ -814,44 +816,10 @@ fn with_call_contexts(
                     span,
                 );
             }
-            Statement::Block(b) => out.push(
-                Statement::Block(with_call_contexts(b, f, cx, next_call)),
+            other => out.push(
+                map_nested(other, &mut |b| with_call_contexts(b, f, cx, next_call)),
                 span,
             ),
-            Statement::If {
-                condition,
-                accept,
-                reject,
-            } => out.push(
-                Statement::If {
-                    condition,
-                    accept: with_call_contexts(accept, f, cx, next_call),
-                    reject: with_call_contexts(reject, f, cx, next_call),
-                },
-                span,
-            ),
-            Statement::Switch {
-                selector,
-                mut cases,
-            } => {
-                for c in cases.iter_mut() {
-                    c.body = with_call_contexts(std::mem::take(&mut c.body), f, cx, next_call);
-                }
-                out.push(Statement::Switch { selector, cases }, span);
-            }
-            Statement::Loop {
-                body,
-                continuing,
-                break_if,
-            } => out.push(
-                Statement::Loop {
-                    body: with_call_contexts(body, f, cx, next_call),
-                    continuing: with_call_contexts(continuing, f, cx, next_call),
-                    break_if,
-                },
-                span,
-            ),
-            other => out.push(other, span),
         }
     }
     out
