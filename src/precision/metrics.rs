@@ -49,11 +49,12 @@ pub fn f32_ulp_at(exact: f64) -> f64 {
     }
     let min_normal = f64::from(f32::MIN_POSITIVE);
     if a < min_normal {
-        return 2f64.powi(-149);
+        return f64::from_bits((1023 - 149) << 52);
     }
-    // floor(log2(a)) read from the f64 exponent field: exact, no libm rounding.
-    let e = ((a.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-    2f64.powi(e.min(127) - 23)
+    // floor(log2(a)) is a's f64 exponent field; 2^(e − 23) is built in that field directly
+    // (exact, and no `powi` loop: this runs once per element of every 2^24 sweep).
+    let biased = (a.to_bits() >> 52) & 0x7ff;
+    f64::from_bits((biased.min(1023 + 127) - 23) << 52)
 }
 
 /// Error of `got` against the exact value, in `f32` ULPs of the exact value.
@@ -69,7 +70,10 @@ pub fn ulp_error(got: f32, exact: f64) -> f64 {
             f64::INFINITY
         };
     }
-    (f64::from(got) - exact).abs() / f32_ulp_at(exact)
+    // × 1/ulp, not ÷ ulp: the same value (ulp is a power of two, its reciprocal exact in
+    // f64), without a division in the sweeps' per-element loop.
+    let inverse = f64::from_bits((2 * 1023) - (f32_ulp_at(exact).to_bits() >> 52) << 52);
+    (f64::from(got) - exact).abs() * inverse
 }
 
 /// Relative error `|got − exact| / |exact|`; 0 when both are 0, `+Inf` when only `exact` is 0,
@@ -284,7 +288,22 @@ mod tests {
         assert_eq!(f32_ulp_at(0.999), 2f64.powi(-24));
         assert_eq!(f32_ulp_at(-3.0), 2f64.powi(-22));
         assert_eq!(f32_ulp_at(0.0), 2f64.powi(-149));
+        // The exponent-field construction is 2^(e − 23) at every f32 binade and past it.
+        for e in -126..=200 {
+            let want = 2f64.powi(e.min(127) - 23);
+            assert_eq!(f32_ulp_at(2f64.powi(e)), want, "2^{e}");
+            assert_eq!(f32_ulp_at(-2f64.powi(e) * 1.75), want, "-1.75·2^{e}");
+        }
         assert_eq!(ulp_error(1.0 + f32::EPSILON, 1.0), 1.0);
+        // Multiplying by the reciprocal is dividing by the ULP, bit for bit, at every binade.
+        for e in -160..=140 {
+            for m in [1.0, 1.3, 1.999_999] {
+                let exact = m * 2f64.powi(e);
+                let got = (exact * 1.000_1) as f32;
+                let want = (f64::from(got) - exact).abs() / f32_ulp_at(exact);
+                assert_eq!(ulp_error(got, exact).to_bits(), want.to_bits(), "{exact:e}");
+            }
+        }
         assert_eq!(ulp_error(f32::INFINITY, f64::INFINITY), 0.0);
         assert!(ulp_error(f32::MAX, f64::INFINITY).is_infinite());
     }
