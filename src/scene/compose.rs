@@ -370,6 +370,22 @@ impl Library {
         &self,
         roots: impl IntoIterator<Item = &'a str>,
     ) -> Result<String, ComposeError> {
+        let out = self.compose_text(roots)?;
+        parse_and_validate(&out).map_err(|error| ComposeError::Wgsl {
+            file: "<composed>".into(),
+            error,
+        })?;
+        Ok(out)
+    }
+
+    /// The text [`Library::compose`] returns, without its naga validation: for callers that
+    /// validate elsewhere or need only the bytes (the scene tests compare it with
+    /// [`Scene::wgsl`](super::Scene::wgsl) for every distinct scene, and validate a sample
+    /// whose argument is in `tests/scene.rs`).
+    pub fn compose_text<'a>(
+        &self,
+        roots: impl IntoIterator<Item = &'a str>,
+    ) -> Result<String, ComposeError> {
         let keep = self.closure(roots)?;
         let mut out = String::from("// Composed by prepass::scene from the shipped WGSL files.\n");
         let mut file = "";
@@ -382,10 +398,6 @@ impl Library {
             out.push_str(&item.text);
             out.push('\n');
         }
-        parse_and_validate(&out).map_err(|error| ComposeError::Wgsl {
-            file: "<composed>".into(),
-            error,
-        })?;
         Ok(out)
     }
 }

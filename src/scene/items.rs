@@ -10,11 +10,12 @@
 
 use crate::wgsl::{FILES, WgslFile};
 use std::collections::{BTreeSet, HashMap};
+use std::sync::OnceLock;
 
 /// One top-level item of a shipped file, cut from its text.
 #[derive(Clone, Debug)]
 pub(crate) struct TextItem {
-    pub name: String,
+    pub name: &'static str,
     pub file: &'static str,
     /// The item with its comment block.
     pub text: &'static str,
@@ -94,7 +95,7 @@ fn item_end(source: &str, start: usize) -> usize {
 }
 
 /// Every top-level item of `file`, in source order.
-pub(crate) fn items_of(file: &WgslFile) -> Vec<TextItem> {
+pub(crate) fn items_of(file: &'static WgslFile) -> Vec<TextItem> {
     let src = file.source;
     let mut items = Vec::new();
     let mut offset = 0;
@@ -102,7 +103,7 @@ pub(crate) fn items_of(file: &WgslFile) -> Vec<TextItem> {
         if let Some(name) = declared_name(line) {
             let end = item_end(src, offset);
             items.push(TextItem {
-                name: name.to_string(),
+                name,
                 file: file.name,
                 text: &src[leading_comment(src, offset)..end],
             });
@@ -112,38 +113,53 @@ pub(crate) fn items_of(file: &WgslFile) -> Vec<TextItem> {
     items
 }
 
+/// The shipped items in registry and source order, each with the items its text names.
+struct Graph {
+    items: Vec<TextItem>,
+    index: HashMap<&'static str, usize>,
+    uses: Vec<Vec<usize>>,
+}
+
+/// Cut once per process: the files are static, and a renderer (or the scene tests, 14,016
+/// times) may compose many scenes.
+fn graph() -> &'static Graph {
+    static GRAPH: OnceLock<Graph> = OnceLock::new();
+    GRAPH.get_or_init(|| {
+        let items: Vec<TextItem> = FILES.iter().flat_map(items_of).collect();
+        let index: HashMap<&'static str, usize> =
+            items.iter().enumerate().map(|(k, i)| (i.name, k)).collect();
+        let uses = items
+            .iter()
+            .map(|item| {
+                identifiers(item.text)
+                    .filter(|id| *id != item.name)
+                    .filter_map(|id| index.get(id).copied())
+                    .collect()
+            })
+            .collect();
+        Graph { items, index, uses }
+    })
+}
+
 /// The module holding exactly what `roots` reach, in registry and source order, each item
 /// after its comment block: the same text as the naga composer's `Library::compose`. `Err`
 /// names a root no shipped file defines.
 pub(crate) fn compose<'a>(roots: impl IntoIterator<Item = &'a str>) -> Result<String, String> {
-    let items: Vec<TextItem> = FILES.iter().flat_map(items_of).collect();
-    let by_name: HashMap<&str, usize> = items
-        .iter()
-        .enumerate()
-        .map(|(k, i)| (i.name.as_str(), k))
-        .collect();
-    let index = |n: &str| by_name.get(n).copied();
+    let g = graph();
     let mut keep = BTreeSet::new();
     let mut stack = Vec::new();
     for r in roots {
-        stack.push(index(r).ok_or_else(|| r.to_string())?);
+        stack.push(*g.index.get(r).ok_or_else(|| r.to_string())?);
     }
     while let Some(i) = stack.pop() {
-        if !keep.insert(i) {
-            continue;
+        if keep.insert(i) {
+            stack.extend(g.uses[i].iter().filter(|j| !keep.contains(*j)));
         }
-        let item = &items[i];
-        stack.extend(
-            identifiers(item.text)
-                .filter(|id| *id != item.name)
-                .filter_map(index)
-                .filter(|j| !keep.contains(j)),
-        );
     }
     let mut out = String::from("// Composed by prepass::scene from the shipped WGSL files.\n");
     let mut file = "";
     for i in keep {
-        let item = &items[i];
+        let item = &g.items[i];
         if item.file != file {
             file = item.file;
             out.push_str(&format!("\n// ---- from wgsl/{file} ----\n"));
