@@ -257,7 +257,13 @@ fn wgsl_rows_stay_in_the_spec_domain_under_emulation() {
     use prepass::conforming::{EmulatedKernel, Emulation, Policy};
     let mut flagged = Vec::new();
     let (mut ran, mut corpus_inputs) = (0, 0);
-    for f in funcs() {
+    let total = funcs().count();
+    for (k, f) in funcs().enumerate() {
+        common::progress(
+            "wgsl_rows_stay_in_the_spec_domain_under_emulation: functions",
+            k,
+            total,
+        );
         let Some((source, name)) = f.wgsl else {
             continue;
         };

@@ -861,7 +861,12 @@ fn columns_for(sig: &Signature, n: usize, seed: u64) -> Vec<Vec<u32>> {
 fn identity_reproduces_every_shipped_module_bit_for_bit() {
     let n = 4096;
     let mut functions = 0;
-    for file in prepass::wgsl::FILES {
+    for (k, file) in prepass::wgsl::FILES.iter().enumerate() {
+        common::progress(
+            "identity_reproduces_every_shipped_module_bit_for_bit: shipped files",
+            k,
+            prepass::wgsl::FILES.len(),
+        );
         let checked = prepass::wgsl::parse_and_validate(file.source).unwrap();
         for (_, f) in checked.module.functions.iter() {
             let Some(name) = f.name.as_deref() else {
@@ -1117,9 +1122,16 @@ fn every_normal_encoding_under_emulation() {
         _ => codes32.clone(),
     };
     let policies = [Policy::Upper, Policy::Lower, Policy::Seeded(1)];
+    let mut inspected = 0;
     let mut inspect = |c: &prepass::sweep::normal::Codec,
                        policy: Policy,
                        e: &prepass::sweep::conforming::EmulatedCodec| {
+        inspected += 1;
+        common::progress(
+            "every_normal_encoding_under_emulation: codecs × policies",
+            inspected,
+            prepass::sweep::normal::CODECS.len() * policies.len(),
+        );
         let (len_rt, bad_rt) = e.round_trip_length;
         let (len_dec, dec_ok) = e.decode_length();
         eprintln!(

@@ -45,7 +45,9 @@ fn one_white_light_reconstructs_blinn_phong_on_every_conforming_adapter() {
         "| emulation | pixels | largest share of the conforming budget | where |\n|---|---|---|---|\n",
     );
     let mut pool: Vec<(f64, usize)> = Vec::new();
-    for policy in Policy::WORST {
+    let label = "one_white_light_reconstructs_blinn_phong_on_every_conforming_adapter: policies (the search follows)";
+    for (j, policy) in Policy::WORST.into_iter().enumerate() {
+        common::progress(label, j, Policy::WORST.len());
         let k = EmulatedKernel::new(gpu(), &w.source, "single", &Emulation::new(policy)).unwrap();
         let shares = w.check(&k.run(&args, w.n as u64).unwrap().0, Some(policy));
         let (i, worst) = argmax(&shares);
@@ -59,6 +61,7 @@ fn one_white_light_reconstructs_blinn_phong_on_every_conforming_adapter() {
         order.sort_by(|&a, &b| shares[b].total_cmp(&shares[a]));
         pool.extend(order.iter().take(searched).map(|&i| (shares[i], i)));
     }
+    common::progress(label, Policy::WORST.len(), Policy::WORST.len());
     pool.sort_by(|a, b| b.0.total_cmp(&a.0));
     let mut seen = std::collections::HashSet::new();
     pool.retain(|p| seen.insert(p.1));
