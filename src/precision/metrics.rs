@@ -72,7 +72,7 @@ pub fn ulp_error(got: f32, exact: f64) -> f64 {
     }
     // × 1/ulp, not ÷ ulp: the same value (ulp is a power of two, its reciprocal exact in
     // f64), without a division in the sweeps' per-element loop.
-    let inverse = f64::from_bits((2 * 1023) - (f32_ulp_at(exact).to_bits() >> 52) << 52);
+    let inverse = f64::from_bits(((2 * 1023) - (f32_ulp_at(exact).to_bits() >> 52)) << 52);
     (f64::from(got) - exact).abs() * inverse
 }
 
