@@ -37,8 +37,8 @@
 //! division), which `exp2` turns into `12u·x·ln 2` relative, and `exp2` adds `(3 + 2x)` ULP: a
 //! decode is within `12u·x·ln 2 + (3 + 2x)·2u` relative (measured on lavapipe: 4.1–14.2 ULP for
 //! ranges 100.5, 1000 and 3e6 — more than 2 ULP, which only the power-of-two tables guarantee).
-//! An encode can pick the neighbouring code only for powers within `18u·255` codes of a
-//! boundary.
+//! An encode can pick the neighbouring code only for powers within `19u·255` codes of a
+//! boundary ([`bounds::encode_neighbour_margin`]).
 //!
 //! ## Bad input (identical in WGSL and Rust)
 //! - `max_power` NaN or `≤ 1`: the range is the single power 1 — every power encodes to 0 and
@@ -297,6 +297,40 @@ pub fn quantisation_limit(max_power: f64) -> f64 {
 ///   adds `(3 + 2x)` ULP `≤ (3 + 2x)·2u`; with `x ≤ L`.
 pub mod bounds {
     const U: f64 = 1.0 / 16_777_216.0;
+
+    /// How far from a code boundary (in codes) a general-range encode may still take the
+    /// neighbouring code: `t` is off by at most `19u·t ≤ 19u·255` (the encode step above).
+    /// Power-of-two ranges decide every boundary exactly: their margin is 0.
+    pub fn encode_neighbour_margin() -> f64 {
+        19.0 * U * 255.0
+    }
+
+    /// A power-of-two range's decode, relative: the table entry correctly rounded and the
+    /// exponent added exactly, so `≤ 0.5 ULP ≤ u` on every conforming adapter.
+    pub const POWER_OF_TWO_DECODE: f64 = U;
+
+    /// Any range's decode against `max_power^(k/255)`, relative: [`POWER_OF_TWO_DECODE`] for
+    /// `2^L`, else [`general_range_decode`] plus `u` for the second-order terms its first-order
+    /// sum drops (below 1e-10 for `L ≤ 127`) and the f64 reference's own error (1e-16).
+    pub fn decode(max_power: f32) -> f64 {
+        if max_power.log2().fract() == 0.0 {
+            POWER_OF_TWO_DECODE
+        } else {
+            general_range_decode(max_power) + U
+        }
+    }
+
+    /// Any range's round trip, relative: for `2^L` the half step plus the decode's rounding,
+    /// `q + u·(1 + q)` with `q` = [`super::quantisation_limit`] (exact code, correctly rounded
+    /// power), else [`general_range`].
+    pub fn round_trip(max_power: f32) -> f64 {
+        if max_power.log2().fract() == 0.0 {
+            let q = super::quantisation_limit(f64::from(max_power));
+            q + U * (1.0 + q)
+        } else {
+            general_range(max_power)
+        }
+    }
 
     /// The decode part: `13u·L·ln 2 + (3 + 2L)·2u`.
     pub fn general_range_decode(max_power: f32) -> f64 {

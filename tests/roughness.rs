@@ -154,87 +154,6 @@ fn linear_8bit_baselines_are_measured_beside_it() {
     }
 }
 
-/// Powers spread over `[1, max]` for the non-power-of-two ranges: every 61st f32 pattern.
-fn sampled_powers(max: f32) -> Vec<f32> {
-    (ONE_BITS..=max.to_bits())
-        .step_by(61)
-        .map(f32::from_bits)
-        .chain([max])
-        .collect()
-}
-
-#[test]
-fn general_ranges_stay_within_their_derived_bound() {
-    for max in [1000.0f32, 100.5, 3.0e6] {
-        let limit = quantisation_limit(f64::from(max));
-        let dec = roughness::bounds::general_range_decode(max);
-        let bound = roughness::bounds::general_range(max);
-        let ps = sampled_powers(max);
-        let out = run_kernel(
-            &format!(
-                "{ROUGHNESS}\nfn rt(p: f32, m: f32) -> vec2<u32> {{ let c = encode_log_roughness(p, m); \
-                     return vec2<u32>(c, bitcast<u32>(decode_log_roughness(c, m))); }}"
-            ),
-            "rt",
-            &[Arg::column(&ps), Arg::splat_f32(max)],
-            ps.len() as u64,
-        );
-        let mut worst = 0.0f64;
-        let (mut code_diff, mut value_diff) = (0u64, 0u64);
-        for (p, w) in ps.iter().zip(out.words().chunks_exact(2)) {
-            let v = f64::from(f32::from_bits(w[1]));
-            worst = worst.max((v - f64::from(*p)).abs() / f64::from(*p));
-            if roughness::encode_log_roughness(*p, max) != w[0] {
-                code_diff += 1;
-            }
-            if roughness::decode_log_roughness(w[0], max).to_bits() != w[1] {
-                value_diff += 1;
-            }
-        }
-        assert_within!(
-            worst,
-            bound,
-            "roughness::bounds::general_range (derivation in its rustdoc)",
-            "max {max}: relative error"
-        );
-        // Every code's decoded value against the exact max^(k/255): within the decode part of
-        // the bound above.
-        let d = decode_all_codes(gpu(), max).unwrap();
-        let dec_rel = d
-            .values
-            .iter()
-            .enumerate()
-            .map(|(k, &v)| {
-                let e = roughness::exact::decode(k as u32, f64::from(max));
-                (f64::from(v) - e).abs() / e
-            })
-            .fold(0.0, f64::max);
-        assert_within!(
-            dec_rel,
-            dec + U,
-            "roughness::bounds::general_range_decode + u (derivation in its rustdoc)",
-            "max {max}: decode relative error"
-        );
-        eprintln!(
-            "general range {max}: decode of every code max {:.2} ULP ({dec_rel:.2e} relative, \
-             derived bound {:.2e})",
-            d.ulps.max,
-            dec + U
-        );
-        assert_at_least!(
-            worst,
-            limit * 0.99,
-            "a dense enough sweep reaches the quantisation limit (within 1%)",
-            "max {max}: sweep too sparse"
-        );
-        eprintln!(
-            "general range {max}: {} sampled powers, max rel {worst:.7} (limit {limit:.7}, bound \
-             {bound:.7}); Rust twin differs in {code_diff} codes and {value_diff} decoded values (of the sampled round trips)",
-            ps.len()
-        );
-    }
-}
-
 #[test]
 fn bad_input_gives_the_documented_answers_on_both_sides() {
     let powers = [
@@ -357,114 +276,161 @@ fn normal_and_roughness_share_one_texel() {
     }
 }
 
-/// The power-of-two ranges are integer constructions, so their promise — the exact nearest
-/// code, and the decode bit-identical to the twin — must hold on every conforming adapter: run
-/// under every worst-case policy of the emulation on sampled powers (every 61st f32 in
-/// [1, max]) and every code. General ranges keep their derived bound under emulation too.
+/// Every range, on the adapter and on the worst conforming adapter
+/// (`sweep::roughness::conforming_figures`): the round trip over sampled powers (every 61st
+/// f32 in [1, max]: the stride is odd, so the sample crosses every code at many significands,
+/// and it reaches the quantisation limit within 1 %, checked below) under every policy; every
+/// code's decode under every policy and the worst-case search (exhaustive over the slots a
+/// decode reads); the encoder searched at its decision points (32 code boundaries, the f32s up
+/// to 128 patterns either side); and the interval enclosure of every allowed result. Power-of-two
+/// ranges are integer constructions, so their promise — the exact nearest code, the decode
+/// bit-identical to the twin — must hold on every conforming adapter; general ranges keep
+/// `roughness::bounds`. Publishes the README's and docs/figures.md's roughness tables.
 #[test]
-fn every_range_keeps_its_promise_under_emulation() {
-    use prepass::conforming::{EmulatedKernel, Emulation, Policy};
-    let src = format!(
-        "{ROUGHNESS}\nfn rt(p: f32, m: f32) -> vec2<u32> {{ let c = encode_log_roughness(p, m); \
-         return vec2<u32>(c, bitcast<u32>(decode_log_roughness(c, m))); }}"
+fn every_range_keeps_its_promise_on_every_conforming_adapter() {
+    use prepass::conforming::Policy;
+    use prepass::sweep::roughness::{EMULATED_RANGES, conforming_figures};
+    use std::fmt::Write as _;
+    let mut round_trips = String::from(
+        "| max power | construction | round trip, max relative error: this adapter | worst conforming (greedy policies) | machine-derived bound (intervals) | bound, every conforming adapter | codes ≠ exact nearest: this adapter / greedy (of sampled powers) | boundary powers a search sends to the neighbour code | farthest such power from its boundary (codes) | machine-derived reach (codes) | bound (codes) |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
-    // The interval enclosure of every result a conforming adapter may give
-    // (prepass::conforming::interval, flushing allowed), on every 64th sampled power (the
-    // evaluator runs on the CPU). Power-of-two ranges: where the enclosure is one code, it must
-    // be the exact code with the twin's decode, a machine-checked exactness; within 2^-8 of a
-    // code boundary the log2 candidate may be either of two codes, and the evaluator, which
-    // does not split cases, carries both through the boundary comparison that settles the
-    // candidate (the dependency problem), so there it can only check that the exact code is
-    // among them — those powers are counted, and the emulation below checks them exactly.
-    // General ranges: the decode's farther end, over every code the enclosure holds, must keep
-    // the derived bound.
-    use prepass::conforming::interval::{Enclosure, Value};
-    let enclosure = Enclosure::new(&src, true).unwrap();
-    for max in [8192.0f32, 256.0, 1000.0, 100.5, 3.0e6] {
-        let (mut worst, mut codes_wide) = (0.0f64, 0u64);
-        let ps: Vec<f32> = sampled_powers(max).into_iter().step_by(64).collect();
-        for &p in &ps {
-            let v = enclosure
-                .of("rt", &[Value::f32s(&[p]), Value::f32s(&[max])])
-                .unwrap_or_else(|e| panic!("max {max}, power {p:e}: {e}"));
-            let Value::U32(l) = v else {
-                panic!("rt returns vec2<u32>")
-            };
-            let (code, bits) = (l[0], l[1]);
-            codes_wide += u64::from(code.0 != code.1);
-            let exact = roughness::exact::encode(f64::from(p), f64::from(max));
-            assert!(
-                code.0 <= exact && exact <= code.1,
-                "max {max}, power {p:e}: the exact code {exact} is outside the enclosure {code:?}"
-            );
-            let pow2 = max.log2().fract() == 0.0;
-            if pow2 && code.0 == code.1 {
-                let twin = roughness::decode_log_roughness(exact, max).to_bits();
-                assert_eq!(
-                    bits,
-                    (twin, twin),
-                    "max {max}, power {p:e}: the decode's enclosure is not the twin's value"
-                );
-            }
-            if !pow2 {
-                for b in [bits.0, bits.1] {
-                    let d = f64::from(f32::from_bits(b));
-                    worst = worst.max((d - f64::from(p)).abs() / f64::from(p));
-                }
-            }
-        }
-        eprintln!(
-            "machine-derived, max {max}: {} powers, max rel {worst:.7} (general ranges), {codes_wide} with more than one code possible",
-            ps.len()
+    let mut decodes = String::from(
+        "| max power | decode, max relative error: this adapter | greedy policies | worst found by the search | search: slots read per code | machine-derived bound (intervals) | bound, every conforming adapter | worst found / machine bound | worst found / bound |\n|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for max in EMULATED_RANGES {
+        let f = conforming_figures(gpu(), max, &Policy::WORST).unwrap();
+        eprintln!("{f:#?}");
+        let (rt_bound, dec_bound) = (
+            roughness::bounds::round_trip(max),
+            roughness::bounds::decode(max),
         );
-        if max.log2().fract() != 0.0 {
+        let margin = if f.power_of_two {
+            0.0
+        } else {
+            roughness::bounds::encode_neighbour_margin()
+        };
+        let why = "roughness::bounds (derivation in its rustdoc)";
+        assert!(
+            f.machine_violations.is_empty() && f.decode_violations.is_empty(),
+            "max {max}: results outside the interval enclosure of every allowed result (a flaw of \
+             the emulation, the evaluator or the function):\n{}\n{}",
+            f.machine_violations.join("\n"),
+            f.decode_violations.join("\n")
+        );
+        for (what, v) in [
+            ("round trip on the adapter", f.round_trip.0),
+            ("round trip, worst policy", f.round_trip.1),
+            ("round trip, machine-derived", f.round_trip_machine),
+        ] {
+            assert_within!(v, rt_bound, why, "max {max}: {what}, relative error");
+        }
+        for (what, v) in [
+            ("on the adapter", f.decode.0),
+            ("worst policy", f.decode.1),
+            ("worst found by the search", f.decode.2),
+            ("machine-derived", f.decode.3),
+        ] {
             assert_within!(
-                worst,
-                roughness::bounds::general_range(max),
-                "roughness::bounds::general_range, against the machine-derived enclosure",
-                "max {max}: relative error of the enclosure's farther end"
+                v,
+                dec_bound,
+                why,
+                "max {max}: decode {what}, relative error"
             );
         }
-    }
-    for policy in Policy::WORST {
-        let k = EmulatedKernel::new(gpu(), &src, "rt", &Emulation::new(policy)).unwrap();
-        for max in [8192.0f32, 256.0, 1000.0, 100.5, 3.0e6] {
-            let ps = sampled_powers(max);
-            let (out, _) = k
-                .run(&[Arg::column(&ps), Arg::splat_f32(max)], ps.len() as u64)
-                .unwrap();
-            let (mut code_diff, mut value_diff, mut worst) = (0u64, 0u64, 0.0f64);
-            for (p, w) in ps.iter().zip(out.words().chunks_exact(2)) {
-                let v = f64::from(f32::from_bits(w[1]));
-                worst = worst.max((v - f64::from(*p)).abs() / f64::from(*p));
-                code_diff +=
-                    u64::from(roughness::exact::encode(f64::from(*p), f64::from(max)) != w[0]);
-                value_diff +=
-                    u64::from(roughness::decode_log_roughness(w[0], max).to_bits() != w[1]);
-            }
-            let limit = quantisation_limit(f64::from(max));
-            eprintln!(
-                "emulated {policy}, max {max}: {} powers, max rel {worst:.7} (limit {limit:.7}); {code_diff} codes off the exact nearest, {value_diff} decodes off the twin",
-                ps.len()
+        assert_within!(
+            f.boundary_flip_distance,
+            margin,
+            "roughness::bounds::encode_neighbour_margin (0 for power-of-two ranges: exact boundary test)",
+            "max {max}: farthest power from its boundary that a conforming adapter encodes to the neighbour code"
+        );
+        if f.power_of_two {
+            assert_eq!(
+                (
+                    f.codes_off,
+                    f.codes_off_twin,
+                    f.decodes_off_twin,
+                    f.boundary_flipped
+                ),
+                ((0, 0), 0, (0, 0), 0),
+                "max {max}: the integer encoder and table decoder must be exact on every \
+                 conforming adapter ((codes ≠ exact: adapter, policies), codes ≠ twin, (decodes \
+                 ≠ twin: adapter, policies), boundary powers flipped by the search)"
             );
-            if max.log2().fract() == 0.0 {
-                assert_eq!(
-                    code_diff, 0,
-                    "{policy} max {max}: the integer encoder is not exact under emulation"
-                );
-                assert_eq!(
-                    value_diff, 0,
-                    "{policy} max {max}: the table decoder differs from the twin under emulation"
-                );
+        } else {
+            // The sample is dense enough to be the round trip's worst case: it reaches the half
+            // step within 1 %.
+            assert_at_least!(
+                f.round_trip.0,
+                0.99 * quantisation_limit(f64::from(max)),
+                "a dense enough sample reaches the quantisation limit (within 1 %)",
+                "max {max}: sample too sparse"
+            );
+        }
+        let construction = if f.power_of_two {
+            "2^L: integer encoder, table decoder"
+        } else {
+            "log2 / exp2"
+        };
+        let reach = |d: f64| {
+            if d == 0.0 {
+                "0 (none)".to_string()
             } else {
-                let bound = roughness::bounds::general_range(max);
-                assert_within!(
-                    worst,
-                    bound,
-                    "roughness::bounds::general_range (derivation in its rustdoc)",
-                    "{policy} max {max}: relative error"
-                );
+                format!("{d:.2e}")
             }
-        }
+        };
+        let _ = writeln!(
+            round_trips,
+            "| {max} | {construction} | {:.6} | {:.6} | {} | {:.6} | {} / {} (of {}) | {} of {} | {} | {} | {} |",
+            f.round_trip.0,
+            f.round_trip.1,
+            if f.power_of_two {
+                "— (exact codes)".to_string()
+            } else {
+                format!("{:.6}", f.round_trip_machine)
+            },
+            rt_bound,
+            f.codes_off.0,
+            f.codes_off.1,
+            f.powers,
+            f.boundary_flipped,
+            f.boundary_inputs,
+            reach(f.boundary_flip_distance),
+            if f.power_of_two {
+                "—".to_string()
+            } else {
+                reach(f.boundary_machine_distance)
+            },
+            reach(margin),
+        );
+        let share = |a: f64, b: f64| {
+            if b == 0.0 {
+                "—".to_string()
+            } else {
+                format!("{:.0} %", 100.0 * a / b)
+            }
+        };
+        let _ = writeln!(
+            decodes,
+            "| {max} | {:.2e} | {:.2e} | {:.2e} | {}–{}{} | {:.2e} | {:.2e} | {} | {} |",
+            f.decode.0,
+            f.decode.1,
+            f.decode.2,
+            f.decode_slots.0,
+            f.decode_slots.1,
+            if f.decode_slots.2 {
+                ", exhaustive"
+            } else {
+                ", climbed"
+            },
+            f.decode.3,
+            dec_bound,
+            share(f.decode.2, f.decode.3),
+            share(f.decode.2, dec_bound),
+        );
     }
+    let table = format!("{round_trips}\n{decodes}");
+    common::publish_measured("README.md", "roughness", &table);
+    let i = gpu().adapter_info();
+    let line = format!("Measured on {} ({}).\n", i.name, i.driver_info);
+    common::publish_measured("docs/figures.md", "roughness", &format!("{line}\n{table}"));
 }
