@@ -533,6 +533,73 @@ fn inverse_sqrt_reaches_both_sides(up: Policy, lo: Policy) -> Checked {
     Ok(out.join("; "))
 }
 
+/// `exp2` (3 + 2|x| ULP) and `log2` (3 ULP outside [0.5, 2]) push every result by the allowance
+/// less the host's assumed error (`HostAccuracy::exp_ulp`, `log_ulp`), from the host's own
+/// result, whose error is not known per input: no single result is promised to reach an end.
+/// What is promised is the shift: each result moves by its push, while a conforming host's
+/// errors average out, so the mean of offset / push over many inputs is at least ½ toward the
+/// policy's end (a host biased by more than half a push in one direction fails here, as its
+/// results would not reach that end). Inputs: exp2 on [1, 4) (push ≥ 2.5 ULP), log2 on
+/// [2^10, 2^18) (push 1 ULP), 2048 each.
+fn exp2_and_log2_shift_toward_both_ends(up: Policy, lo: Policy) -> Checked {
+    use prepass::conforming::{HostAccuracy, allowance};
+    let host = HostAccuracy::default();
+    let mut s = prepass::sweep::SplitMix(0x5eed);
+    let ex: Vec<f32> = (0..2048).map(|_| s.range(1.0, 4.0)).collect();
+    let lx: Vec<f32> = (0..2048)
+        .map(|_| s.range(1.0, 2.0) * 2f32.powi(10 + (s.next_u64() % 8) as i32))
+        .collect();
+    // (function, inputs, per input the exact result and the push in ULPs)
+    type Case<'a> = (&'static str, &'a [f32], Vec<(f64, f64)>);
+    let cases: [Case<'_>; 2] = [
+        (
+            "t_exp2",
+            &ex,
+            ex.iter()
+                .map(|&x| {
+                    let x = f64::from(x);
+                    (x.exp2(), allowance::exp_ulp(x) - host.exp_ulp)
+                })
+                .collect(),
+        ),
+        (
+            "t_log2",
+            &lx,
+            lx.iter()
+                .map(|&x| (f64::from(x).log2(), allowance::LOG_ULP - host.log_ulp))
+                .collect(),
+        ),
+    ];
+    let mut out = Vec::new();
+    for (function, xs, exact) in &cases {
+        let e: Vec<f64> = exact.iter().map(|&(e, _)| e).collect();
+        for (policy, sign) in [(up, 1.0), (lo, -1.0)] {
+            let got = run(
+                function,
+                policy,
+                Freedoms::EXP_LOG,
+                &[Arg::column(xs)],
+                xs.len(),
+            )
+            .0;
+            let d = toward_end(&got, 1, &e, sign);
+            let mean = d
+                .iter()
+                .zip(exact)
+                .map(|(d, &(_, push))| d / push)
+                .sum::<f64>()
+                / d.len() as f64;
+            if mean < 0.5 {
+                return Err(format!(
+                    "{function} {policy}: mean offset over the push {mean:.3} toward its end, want ≥ 0.5"
+                ));
+            }
+            out.push(format!("{function} {policy}: mean {mean:.3} of the push"));
+        }
+    }
+    Ok(out.join("; "))
+}
+
 /// `unpack4x8unorm` reaches 2 ULP above v/255 (3 less the 0.5 of its correctly rounded start,
 /// rounded down to whole half ULPs) under the upper policy and 2 below under the lower.
 fn unpack_reaches_both_ends(up: Policy, lo: Policy) -> Checked {
@@ -603,7 +670,7 @@ fn forms_and_flushes_reach_their_alternatives(up: Policy, lo: Policy) -> Checked
 
 type Check = fn(Policy, Policy) -> Checked;
 
-const CHECKS: [(&str, Check); 11] = [
+const CHECKS: [(&str, Check); 12] = [
     (
         "pack2x16float: either neighbouring f16",
         pack2x16float_either_neighbour,
@@ -632,6 +699,10 @@ const CHECKS: [(&str, Check); 11] = [
     ),
     ("inverseSqrt: 2 ULP", inverse_sqrt_reaches_both_sides),
     ("unpack4x8unorm: 3 ULP", unpack_reaches_both_ends),
+    (
+        "exp2, log2: 3 + 2|x|, 3 ULP",
+        exp2_and_log2_shift_toward_both_ends,
+    ),
     (
         "fusion, reassociation, flush",
         forms_and_flushes_reach_their_alternatives,
