@@ -538,3 +538,210 @@ fn bounds_and_stencil_choice_stay_safe_on_every_conforming_adapter() {
         );
     }
 }
+
+/// Spheres that touch the near rectangle exactly at a corner, centred on the eye's diagonal
+/// through it: the tightest case of the depth-pass test, where `|c| = r + ρ`. Each centre is an
+/// f32 triple moved toward the eye one pattern at a time until the sphere touches in exact
+/// arithmetic (f64), so every case must be sent to depth-fail.
+fn corner_touching_spheres(count: usize) -> Vec<([f32; 3], f32, f32, f32, f32)> {
+    let mut rng = prepass::sweep::SplitMix(0xc0de);
+    let mut out = Vec::new();
+    while out.len() < count {
+        let (n, tx, ty) = (
+            rng.range(0.01, 1.0),
+            rng.range(0.1, 2.0),
+            rng.range(0.1, 2.0),
+        );
+        let r = rng.range(0.01, 4.0);
+        let (sx, sy) = (
+            if rng.next_u64() & 1 == 0 { 1.0 } else { -1.0 },
+            if rng.next_u64() & 1 == 0 { 1.0 } else { -1.0 },
+        );
+        let q = [
+            sx * f64::from(n) * f64::from(tx),
+            sy * f64::from(n) * f64::from(ty),
+            f64::from(n),
+        ];
+        let rho = (q[0] * q[0] + q[1] * q[1] + q[2] * q[2]).sqrt();
+        let k = (f64::from(r) + rho) / rho;
+        let mut c = q.map(|x| (x * k) as f32);
+        let touches = |c: [f32; 3]| {
+            dist_to_near_rect(c.map(f64::from), f64::from(n), f64::from(tx), f64::from(ty))
+                <= f64::from(r)
+        };
+        let mut steps = 0;
+        while !touches(c) && steps < 16 {
+            c = c.map(|x| if x > 0.0 { x.next_down() } else { x.next_up() });
+            steps += 1;
+        }
+        if touches(c) {
+            out.push((c, r, n, tx, ty));
+        }
+    }
+    out
+}
+
+/// The decision's margin as one number a search can climb: the smallest radius, in ULPs of the
+/// radius away from the given one (integer steps of its bit pattern: no float operation of the
+/// probe's own), at which the shipped test says depth-fail, by bisection over ±1024 (the
+/// decision is monotone in the radius under any one direction table). Returned + 2048. The
+/// `_gpu_rho` forms take `ρ` from `light_volume_near_corner_distance` in the same shader.
+const PROBES: &str = "
+fn lv_flag_threshold(center: vec3<f32>, radius: f32, rho: f32) -> u32 {
+    var lo = -1024;
+    var hi = 1024;
+    for (var i = 0; i < 11; i++) {
+        let mid = (lo + hi) / 2;
+        let r = bitcast<f32>(u32(i32(bitcast<u32>(radius)) + mid));
+        if (light_volume_sphere_needs_depth_fail(center, r, rho) == 1u) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    return u32(hi + 2048);
+}
+fn lv_gpu_rho(frustum: vec3<f32>) -> f32 {
+    return light_volume_near_corner_distance(frustum.x, frustum.y, frustum.z);
+}
+fn lv_flag_threshold_gpu_rho(center: vec3<f32>, radius: f32, frustum: vec3<f32>) -> u32 {
+    return lv_flag_threshold(center, radius, lv_gpu_rho(frustum));
+}
+";
+
+/// The tightest case of the depth-pass test — spheres touching the near rectangle at a corner,
+/// centred on the eye's diagonal through it, `|c| = r + ρ` — on every conforming adapter, with
+/// `ρ` from the twin (as the example renderer computes it, on the CPU) and from the WGSL in the
+/// same shader. The worst-case search (`conforming::search::climb`) maximises how far above the
+/// smallest touching radius the shipped test starts saying depth-fail (above 0, a touching
+/// sphere would get depth-pass); the interval enclosure of every allowed result
+/// (`conforming::interval`) then proves the decision at each case where it is one value. Before
+/// `ρ` was rounded up, the search sent a touching sphere to depth-pass with the GPU's `ρ`.
+#[test]
+fn corner_touching_spheres_go_to_depth_fail_on_every_conforming_adapter() {
+    use prepass::conforming::interval::{Enclosure, Value};
+    use prepass::conforming::search::{SearchConfig, climb};
+    use prepass::conforming::{EmulatedKernel, Emulation, Policy};
+    use std::fmt::Write as _;
+    let cases = corner_touching_spheres(256);
+    let centers: Vec<[f32; 3]> = cases.iter().map(|c| c.0).collect();
+    let radii: Vec<f32> = cases.iter().map(|c| c.1).collect();
+    let frusta: Vec<[f32; 3]> = cases.iter().map(|c| [c.2, c.3, c.4]).collect();
+    let rho: Vec<f32> = cases
+        .iter()
+        .map(|c| light_volume::light_volume_near_corner_distance(c.2, c.3, c.4))
+        .collect();
+    // The smallest radius offset (ULPs) at which each sphere touches, exactly (f64).
+    let touch: Vec<i32> = cases
+        .iter()
+        .map(|&(c, r, n, tx, ty)| {
+            let at = |k: i32| f32::from_bits((r.to_bits() as i32 + k) as u32);
+            let d = dist_to_near_rect(c.map(f64::from), f64::from(n), f64::from(tx), f64::from(ty));
+            let mut k = 0;
+            while d <= f64::from(at(k - 1)) {
+                k -= 1;
+            }
+            k
+        })
+        .collect();
+    let src = format!("{LIGHT_VOLUME}\n{PROBES}");
+    let enclosure = Enclosure::new(&src, true).unwrap();
+    let over = |i: usize, out: &prepass::harness::Output, e: usize| {
+        f64::from(out.as_u32()[e] as i32 - 2048 - touch[i])
+    };
+    let mut table = String::from(
+        "| ρ computed by | spheres | worst found by the search: depth-fail from (ULPs of the radius above the smallest touching one; ≤ 0 is safe) | greedy policies | slots read | interval enclosure proves depth-fail at |\n|---|---|---|---|---|---|\n",
+    );
+    for gpu_rho in [false, true] {
+        let (probe, decide) = if gpu_rho {
+            ("lv_flag_threshold_gpu_rho", "")
+        } else {
+            ("lv_flag_threshold", "light_volume_sphere_needs_depth_fail")
+        };
+        let third = if gpu_rho {
+            Arg::column(&frusta)
+        } else {
+            Arg::column(&rho)
+        };
+        let args = [Arg::column(&centers), Arg::column(&radii), third];
+        let k = EmulatedKernel::new(gpu(), &src, probe, &Emulation::new(Policy::Searched)).unwrap();
+        let found = climb(&k, &args, cases.len(), &over, &SearchConfig::default()).unwrap();
+        let worst = found
+            .iter()
+            .map(|f| f.error)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let greedy = found
+            .iter()
+            .map(|f| f.start_error)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let slots = found.iter().map(|f| f.slots).max().unwrap_or(0);
+        // The enclosure with the twin's ρ: with the GPU's, `1 + tan_x² + tan_y²` is a sum of
+        // three terms, which conforming::interval refuses (it does not enumerate their orders).
+        let mut proved = 0;
+        for i in (0..cases.len()).filter(|_| !gpu_rho) {
+            let args = [
+                Value::f32s(&centers[i]),
+                Value::f32s(&[radii[i]]),
+                Value::f32s(&[rho[i]]),
+            ];
+            let Value::U32(l) = enclosure.of(decide, &args).unwrap() else {
+                panic!("{decide} returns u32")
+            };
+            assert!(
+                l[0].1 == 1,
+                "case {i} {:?}: the enclosure {:?} excludes depth-fail for a touching sphere",
+                cases[i],
+                l[0]
+            );
+            proved += usize::from(l[0] == (1, 1));
+        }
+        eprintln!(
+            "corner-touching spheres, ρ from the {}: the search's worst table says depth-fail from {worst} ULPs of the radius above the smallest touching one (greedy starts {greedy}; {slots} slots, climbed); {}",
+            if gpu_rho { "GPU (WGSL)" } else { "twin (CPU)" },
+            if gpu_rho {
+                "no enclosure (a three-term sum in ρ)".to_string()
+            } else {
+                format!(
+                    "the enclosure proves depth-fail at {proved} of {}",
+                    cases.len()
+                )
+            }
+        );
+        let _ = writeln!(
+            table,
+            "| {} | {} | {worst} | {greedy} | {slots}, climbed | {} |",
+            if gpu_rho {
+                "the WGSL, in the same shader"
+            } else {
+                "the twin, on the CPU (as the example renderer does)"
+            },
+            cases.len(),
+            if gpu_rho {
+                "— (`1 + tan_x² + tan_y²` is a three-term sum, which the evaluator refuses)"
+                    .to_string()
+            } else {
+                format!("{proved} of {}", cases.len())
+            }
+        );
+        if !gpu_rho {
+            assert_eq!(
+                proved,
+                cases.len(),
+                "the enclosure leaves the decision open at a corner-touching sphere: the 16u margin \
+                 (src/lighting/light_volume.rs) no longer covers every conforming rounding"
+            );
+        }
+        assert!(
+            worst <= 0.0,
+            "ρ from the {}: a conforming adapter sends a sphere touching the near rectangle to \
+             depth-pass ({worst} ULPs of its radius inside the touching range)",
+            if gpu_rho { "GPU" } else { "twin" }
+        );
+    }
+    let i = gpu().adapter_info();
+    common::publish_measured(
+        "docs/figures.md",
+        "light-volumes",
+        &format!("Measured on {} ({}).\n\n{table}", i.name, i.driver_info),
+    );
+}

@@ -49,7 +49,13 @@ fn light_volume_sum_overflows(a: f32, b: f32) -> bool {
 }
 
 // rho: distance from the eye to the corners of the near-plane rectangle,
-// near·sqrt(1 + tan_half_fov_x² + tan_half_fov_y²). Bad input (NaN/Inf, negative, a tangent
+// near·sqrt(1 + tan_half_fov_x² + tan_half_fov_y²), rounded up: enlarged by 2^-19 (32u), which
+// covers its own rounding on any conforming adapter (within 15u, derivation in
+// src/lighting/light_volume.rs), so it is never below the exact corner distance and a volume
+// touching a corner always gets depth-fail, also when rho is computed here on the GPU. The
+// constant multiplies near first, the order Mesa's optimiser picks for (near·r)·K anyway: written
+// so, every compiler seen evaluates the same order as the twin (any order is within the bound).
+// Bad input (NaN/Inf, negative, a tangent
 // above 2^60, or a distance that would pass 3.4e38) gives +Inf's stand-in 3.4e38, which makes
 // every volume need depth-fail; no square or product overflows.
 fn light_volume_near_corner_distance(near: f32, tan_half_fov_x: f32, tan_half_fov_y: f32) -> f32 {
@@ -62,7 +68,7 @@ fn light_volume_near_corner_distance(near: f32, tan_half_fov_x: f32, tan_half_fo
     if (near > 3.4e38 / r) {
         return 3.4e38;
     }
-    return near * r;
+    return (near * (1.0 + 32.0 * LIGHT_VOLUME_U)) * r;
 }
 
 // 1 when a sphere light volume (view-space centre, radius) may touch the eye's rho-ball, so the

@@ -17,7 +17,7 @@
 //! | `+ − ×` | either f32 neighbour of the exact result (the spec's "correctly rounded") |
 //! | `/` | within 2.5 ULP of the exact quotient, for divisors of magnitude in `[2^-126, 2^126]`; any other divisor is [`IntervalError::Indeterminate`] |
 //! | `f32(u32)`, `f32(i32)` | either neighbour where the integer is not an f32 |
-//! | matrix × vector | each row's products summed in every order (the spec's inherited accuracy) |
+//! | matrix × vector, `dot` | each row's (the lanes') products summed in every order (the spec's inherited accuracy) |
 //! | `log2` | 3 ULP, absolute `2^-21` on `[0.5, 2]`; `exp2(x)`: `3 + 2|x|` ULP |
 //! | `fract(x)` | as `x − floor(x)` (inherited) |
 //! | `min max clamp abs floor ceil round trunc select`, comparisons, bit casts, integers | exact |
@@ -32,7 +32,8 @@
 //! Products and quotients are reassociated: where an operand of `·` or `/` is itself a product
 //! or quotient (through locals and calls too), every one-level reordering the spec's
 //! `(a·b)/c ↔ (a/c)·b` stands for is evaluated and hulled in; a chain of three or more is
-//! [`IntervalError::NotCovered`].
+//! [`IntervalError::NotCovered`]. A product by an exact power of two (a scaling, exact in any
+//! order while it stays normal) starts no chain.
 //! Builtins other than those in the table are refused ([`IntervalError::NotCovered`]).
 //!
 //! Intervals are evaluated per input, so the dependency problem of interval arithmetic (the
@@ -302,6 +303,28 @@ fn mul_div(kind: u8, p: Iv, q: Iv, flush: bool) -> R<Iv> {
         }?;
         Ok(fl(r))
     };
+    // A product by an exact power of two (a scaling) is exact where it stays normal, in every
+    // order, so it adds no rounding to reorder: it starts no chain, and one is not refused for it.
+    let pow2 = |v: Iv| {
+        v.lo == v.hi && v.lo != 0.0 && v.lo.is_normal() && v.lo.to_bits() & 0x007f_ffff == 0
+    };
+    let normal_or_zero = |v: Iv| {
+        [v.lo, v.hi]
+            .iter()
+            .all(|x| *x == 0.0 || x.abs() >= f32::MIN_POSITIVE)
+            && !(v.lo < 0.0 && v.hi > 0.0 && flush)
+    };
+    if kind == 1 {
+        for (s, x) in [(q, p), (p, q)] {
+            if pow2(s) && x.chain.kind == 0 {
+                let mut r = op(1, x, s)?;
+                if normal_or_zero(r) && normal_or_zero(x) {
+                    r.chain = NO_CHAIN;
+                    return Ok(r);
+                }
+            }
+        }
+    }
     if p.chain.depth >= 2 || q.chain.depth >= 2 {
         return Err(not_covered(
             "a chain of three or more products and quotients (a compiler may reorder it)",
@@ -1419,6 +1442,26 @@ fn math(fun: MathFunction, a: Value, b: Option<Value>, c: Option<Value>, flush: 
                 .collect::<R<_>>()?;
             Value::F32 { lanes, sum: 0 }
         }
+        M::Dot => {
+            // Inherited: the lanes' products summed in any order (fused or not, as for matrix ×
+            // vector), so the hull over every order.
+            let b = b.ok_or_else(|| not_covered("dot arity"))?;
+            let (x, y) = (
+                a.f32_lanes()
+                    .ok_or_else(|| not_covered("dot of integers"))?,
+                b.f32_lanes()
+                    .ok_or_else(|| not_covered("dot of integers"))?,
+            );
+            let terms = x
+                .iter()
+                .zip(y)
+                .map(|(&p, &q)| mul_div(1, p, q, flush))
+                .collect::<R<Vec<_>>>()?;
+            Value::F32 {
+                lanes: vec![every_order(&terms, flush)?],
+                sum: 1,
+            }
+        }
         other => return Err(IntervalError::NotCovered(format!("builtin {other:?}"))),
     })
 }
@@ -1640,6 +1683,8 @@ mod tests {
             return select(x, 1e30, (bits & 0x7fffffffu) >= 0x7f800000u);
         }
         fn spread(a: f32, b: f32) -> f32 { return sane((a / b) * b - a); }
+        fn dotted(a: f32, b: f32, c: f32) -> f32 { return dot(vec3<f32>(a, b, c), vec3<f32>(1.0)); }
+        fn scaled_chain(a: f32, b: f32, c: f32) -> f32 { return ((a * 4.0) * b) * c; }
         fn row(a: f32, b: f32, c: f32) -> f32 {
             return (mat3x3<f32>(vec3<f32>(1.0), vec3<f32>(1.0), vec3<f32>(1.0)) * vec3<f32>(a, b, c)).x;
         }
@@ -1733,6 +1778,31 @@ mod tests {
             assert!(iv.lo <= r && r <= iv.hi, "{r:e} outside {iv:?}");
         }
         assert!(iv.lo <= 0.0 && iv.hi >= 2f32.powi(-24));
+    }
+
+    #[test]
+    fn a_dot_product_is_summed_in_every_order() {
+        // As the matrix row above: dot's inherited accuracy lets any order stand.
+        let (a, b, c) = (1.0f32, 2f32.powi(-24), -1.0f32);
+        let iv = f("dotted", &[a, b, c], false).unwrap();
+        for r in [(a + b) + c, a + (b + c), (a + c) + b] {
+            assert!(iv.lo <= r && r <= iv.hi, "{r:e} outside {iv:?}");
+        }
+    }
+
+    #[test]
+    fn a_power_of_two_scaling_starts_no_chain() {
+        // a·4 is exact, so ((a·4)·b)·c has the roundings of (a·b)·c, whose reorderings are
+        // hulled in; without the exemption the chain of three would be refused.
+        let (a, b, c) = (1.0f32 / 3.0, 3.0f32.sqrt(), 7.0f32.sqrt());
+        let iv = f("scaled_chain", &[a, b, c], false).unwrap();
+        for r in [
+            ((a * 4.0) * b) * c,
+            (a * 4.0) * (b * c),
+            ((a * 4.0) * c) * b,
+        ] {
+            assert!(iv.lo <= r && r <= iv.hi, "{r:e} outside {iv:?}");
+        }
     }
 
     #[test]

@@ -67,7 +67,15 @@ fn light_volume_sum_overflows(a: f32, b: f32) -> bool {
 }
 
 /// `ρ = near·√(1 + tan_x² + tan_y²)`: distance from the eye to the near-plane rectangle's
-/// corners. Bad input (NaN/Inf, negative, a tangent above `2^60`, a distance that would pass
+/// corners, rounded up — enlarged by `2^-19` (`32u`) so that it is never below the exact corner
+/// distance on any conforming adapter, and a volume touching a corner always gets depth-fail.
+/// Its own rounding, first order with `u = 2^-24` and one ULP `≤ 2u` relative: the squares and
+/// the two sums `2u` each put the radicand within `6u`, which `√` halves to `3u`; `√` itself is
+/// inherited as `1/inverseSqrt` (2 ULP, then a 2.5-ULP division: `9u`); the product `2u`: within
+/// `14u`, `15u` with second-order terms. Then `(1 − 15u)(1 + 32u)(1 − 2u) > 1` (the enlarging
+/// product's own rounding included), and the result is at most `≈ 49u` above the exact distance.
+/// Without it, a worst conforming adapter computing `ρ` in WGSL can send a sphere that touches a
+/// corner to depth-pass (`tests/light_volume.rs`, the corner-touching search). Bad input (NaN/Inf, negative, a tangent above `2^60`, a distance that would pass
 /// `3.4e38`) → `3.4e38` (every volume then needs depth-fail); no square or product overflows.
 pub fn light_volume_near_corner_distance(
     near: f32,
@@ -89,7 +97,8 @@ pub fn light_volume_near_corner_distance(
     if near > 3.4e38 / r {
         return 3.4e38;
     }
-    near * r
+    // The constant first, as the WGSL writes it (and as Mesa reorders `(near·r)·K`).
+    (near * (1.0 + 32.0 * LIGHT_VOLUME_U)) * r
 }
 
 /// 1 when a sphere volume (view-space `center`, `radius`) may touch the eye's `ρ`-ball (use
