@@ -382,18 +382,12 @@ fn every_path_holds_its_conforming_bound_under_emulation() {
         );
         let _ = writeln!(
             table,
-            "| `{}` | {:.2} | {:.2} | {:.2} | {}–{}{} | {:.2} | {:.2} | {:.2} | {:.0} % | {:.0} % |",
+            "| `{}` | {:.2} | {:.2} | {:.2} | {} | {:.2} | {:.2} | {:.2} | {:.0} % | {:.0} % |",
             r.function,
             r.adapter,
             r.emulated,
             r.searched,
-            r.searched_slots.0,
-            r.searched_slots.1,
-            if r.searched_slots.2 {
-                ", exhaustive"
-            } else {
-                ", climbed"
-            },
+            common::slots_cell(r.searched_slots),
             r.machine,
             r.bound_correctly_rounded,
             r.bound_conforming,

@@ -411,17 +411,11 @@ fn every_range_keeps_its_promise_on_every_conforming_adapter() {
         };
         let _ = writeln!(
             decodes,
-            "| {max} | {:.2e} | {:.2e} | {:.2e} | {}–{}{} | {:.2e} | {:.2e} | {} | {} |",
+            "| {max} | {:.2e} | {:.2e} | {:.2e} | {} | {:.2e} | {:.2e} | {} | {} |",
             f.decode.0,
             f.decode.1,
             f.decode.2,
-            f.decode_slots.0,
-            f.decode_slots.1,
-            if f.decode_slots.2 {
-                ", exhaustive"
-            } else {
-                ", climbed"
-            },
+            common::slots_cell(f.decode_slots),
             f.decode.3,
             dec_bound,
             share(f.decode.2, f.decode.3),

@@ -307,6 +307,14 @@ pub fn progress(label: &str, done: usize, total: usize) {
     let _ = std::io::stderr().write_all(line.as_bytes());
 }
 
+/// A published "slots read" cell: the fewest and most direction-table slots a searched
+/// evaluation read, and whether every input was searched exhaustively.
+#[allow(dead_code)]
+pub fn slots_cell((least, most, exhaustive): (u32, u32, bool)) -> String {
+    let how = if exhaustive { "exhaustive" } else { "climbed" };
+    format!("{least}–{most}, {how}")
+}
+
 /// Whether the full-strength run was asked for (`PREPASS_FULL=1 bash .ci/test`, CONTRIBUTING.md):
 /// the tests that sample where a sample proves the same bound (each says why) then run every
 /// case instead.
