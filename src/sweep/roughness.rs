@@ -303,6 +303,12 @@ pub fn conforming_figures(
     let src = round_trip_source();
     let machine_err = |e: IntervalError| HarnessError::Shader(format!("interval evaluation: {e}"));
     let enclosure = Enclosure::new(&src, true).map_err(machine_err)?;
+    // `function(first, max_power)` over intervals.
+    let enclose = |function: &str, first: Value| {
+        enclosure
+            .of(function, &[first, Value::f32s(&[max_power])])
+            .map_err(machine_err)
+    };
     let rel = |v: f32, x: f64| (f64::from(v) - x).abs() / x;
     let config = SearchConfig::default();
     let slots_of = |found: &[crate::conforming::search::Found]| {
@@ -320,27 +326,34 @@ pub fn conforming_figures(
         .iter()
         .map(|&p| exact::encode(f64::from(p), m64))
         .collect();
-    let tally = |words: &[u32]| {
+    // A decode depends on the code alone: the twin's 256 decodes, once.
+    let twin_decodes: Vec<u32> = (0..=255u32)
+        .map(|k| roughness::decode_log_roughness(k, max_power).to_bits())
+        .collect();
+    // (worst relative error, codes ≠ exact, decodes ≠ twin, codes ≠ twin when `twin` asks).
+    let tally = |words: &[u32], twin: bool| {
         let (mut worst, mut codes_off, mut decodes_off, mut twin_off) = (0.0f64, 0u64, 0u64, 0u64);
         for ((&p, w), &c) in ps.iter().zip(words.chunks_exact(2)).zip(&exact_codes) {
             worst = worst.max(rel(f32::from_bits(w[1]), f64::from(p)));
             codes_off += u64::from(c != w[0]);
-            twin_off += u64::from(roughness::encode_log_roughness(p, max_power) != w[0]);
-            decodes_off +=
-                u64::from(roughness::decode_log_roughness(w[0], max_power).to_bits() != w[1]);
+            decodes_off += u64::from(twin_decodes[w[0].min(255) as usize] != w[1]);
+            if twin {
+                twin_off += u64::from(roughness::encode_log_roughness(p, max_power) != w[0]);
+            }
         }
         (worst, codes_off, decodes_off, twin_off)
     };
     let on_adapter = gpu
         .kernel(&src, ROUND_TRIP_FUNCTION)?
         .run(&args, ps.len() as u64)?;
-    let (rt_adapter, codes_adapter, decodes_adapter, codes_off_twin) = tally(on_adapter.words());
+    let (rt_adapter, codes_adapter, decodes_adapter, codes_off_twin) =
+        tally(on_adapter.words(), true);
     let (mut rt_emulated, mut rt_policy, mut codes_emulated, mut decodes_emulated) =
         (0.0f64, String::new(), 0u64, 0u64);
     for &policy in policies {
         let k = EmulatedKernel::new(gpu, &src, ROUND_TRIP_FUNCTION, &Emulation::new(policy))?;
         let (out, _) = k.run(&args, ps.len() as u64)?;
-        let (worst, codes, decodes, _) = tally(out.words());
+        let (worst, codes, decodes, _) = tally(out.words(), false);
         if worst >= rt_emulated {
             (rt_emulated, rt_policy) = (worst, policy.to_string());
         }
@@ -357,12 +370,7 @@ pub fn conforming_figures(
         .map(|(&p, &c)| (p, c))
         .collect();
     for &(p, exact_code) in &machine_ps {
-        let v = enclosure
-            .of(
-                ROUND_TRIP_FUNCTION,
-                &[Value::f32s(&[p]), Value::f32s(&[max_power])],
-            )
-            .map_err(machine_err)?;
+        let v = enclose(ROUND_TRIP_FUNCTION, Value::f32s(&[p]))?;
         let Value::U32(l) = v else {
             return Err(HarnessError::Shader(
                 "the round trip returns vec2<u32>".into(),
@@ -423,12 +431,7 @@ pub fn conforming_figures(
     let mut boundary_machine_distance = 0.0f64;
     if !power_of_two {
         for &p in &bps {
-            let v = enclosure
-                .of(
-                    "encode_log_roughness",
-                    &[Value::f32s(&[p]), Value::f32s(&[max_power])],
-                )
-                .map_err(machine_err)?;
+            let v = enclose("encode_log_roughness", Value::f32s(&[p]))?;
             if let Value::U32(l) = v
                 && l[0].0 != l[0].1
             {
@@ -452,12 +455,7 @@ pub fn conforming_figures(
     let mut hull = Vec::with_capacity(256);
     let mut decode_machine = 0.0f64;
     for &k in &codes {
-        let v = enclosure
-            .of(
-                "decode_log_roughness",
-                &[Value::u32s(&[k]), Value::f32s(&[max_power])],
-            )
-            .map_err(machine_err)?;
+        let v = enclose("decode_log_roughness", Value::u32s(&[k]))?;
         let iv = v
             .f32_lanes()
             .ok_or_else(|| HarnessError::Shader("decode_log_roughness returns an f32".into()))?[0];
@@ -475,10 +473,7 @@ pub fn conforming_figures(
             ));
         }
     };
-    let on_adapter = gpu
-        .kernel(crate::wgsl::ROUGHNESS, "decode_log_roughness")?
-        .run(&dargs, 256)?;
-    let decode_adapter = worst_of(on_adapter.as_f32());
+    let decode_adapter = worst_of(&decode_all_codes(gpu, max_power)?.values);
     let mut decode_emulated = 0.0f64;
     for &policy in policies {
         let k = EmulatedKernel::new(
