@@ -245,11 +245,11 @@ fn prepass_cf_mul_err(a0: f32, b0: f32, p: f32) -> f32 {
     return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
 }
 
-// Exact a + b - s for s = a + b rounded to nearest (Knuth's TwoSum).
-// Tiny operands are scaled by 2^64 first (exact, and rounding commutes with it while the sum
-// stays normal) so the error term itself cannot fall into the subnormals; subnormal sums are
-// exact and need no error term.
-fn prepass_cf_add_err(a0: f32, b0: f32, s0: f32) -> f32 {
+// The sign of a + b - s for s = a + b rounded to nearest (Knuth's TwoSum), as the exact error
+// scaled by 2^64 where both operands are below 2^-60: scaling first (exact, and rounding
+// commutes with it while the sum stays normal) keeps the error term out of the subnormals, so
+// a host that flushes them still gets its sign. Subnormal sums are exact and need no error term.
+fn prepass_cf_add_err_scaled(a0: f32, b0: f32, s0: f32) -> f32 {
     if (!prepass_cf_finite(s0) || abs(s0) < bitcast<f32>(0x00800000u)) {
         return 0.0;
     }
@@ -259,6 +259,12 @@ fn prepass_cf_add_err(a0: f32, b0: f32, s0: f32) -> f32 {
     let s = s0 * k;
     let bb = s - a;
     return (a - (s - bb)) + (b - bb);
+}
+
+// Exact a + b - s (the scaled error scaled back: an f32 sum's error is always a float).
+fn prepass_cf_add_err(a0: f32, b0: f32, s0: f32) -> f32 {
+    let scaled = max(abs(a0), abs(b0)) < bitcast<f32>(0x21800000u);
+    return prepass_cf_add_err_scaled(a0, b0, s0) * select(1.0, bitcast<f32>(0x1f800000u), scaled);
 }
 
 // s or its other neighbour across the exact value s + err: either rounding is allowed.
@@ -278,7 +284,7 @@ fn prepass_cf_add(site: u32, a0: f32, b0: f32) -> f32 {
     prepass_cf_undefined_if(!prepass_cf_finite(s));
     var r = s;
     if (prepass_cf_on(PREPASS_CF_ROUNDING)) {
-        r = prepass_cf_round(site, s, prepass_cf_add_err(a, b, s), a, b);
+        r = prepass_cf_round(site, s, prepass_cf_add_err_scaled(a, b, s), a, b);
     }
     return prepass_cf_ftz(site + 3u, r);
 }
@@ -300,23 +306,134 @@ fn prepass_cf_mul(site: u32, a0: f32, b0: f32) -> f32 {
     return prepass_cf_ftz(site + 3u, r);
 }
 
-// a / b within 2.5 ULP: the host's quotient (within DIV_HOST) pushed by the rest of the budget.
-// Divisors outside +-[2^-126, 2^126] make the result indeterminate.
+// ---- Results at the ends of their intervals, from exact references ----
+// The helpers for /, inverseSqrt, exp, exp2, log, log2 and unpack*norm compute the exact
+// result as an unevaluated sum hi + lo of two f32 (double-f32, from the error-free
+// transformations above, accurate to far below one ULP of hi) and return the last float
+// inside `exact ± allowance` in the chosen direction: the end of the spec interval itself, not
+// the host's result pushed by the allowance less an assumed host error. Where a reference
+// cannot be formed (a product beyond Dekker's range, an exp2 result below 2^-100, an exact 0),
+// the push of the host's result stands (PREPASS_CF_*_HALVES, HostAccuracy in Rust).
+
+// a + b as hi + lo, exactly (TwoSum). Never Fast2Sum's b - ((a + b) - a): Mesa's NIR applies
+// its inexact algebraic rules to SPIR-V float operations without NoContraction and folds that
+// to 0 (measured: every placed inverseSqrt and unpack off its end); the TwoSum in add_err reads
+// its operands through a run-time scaling the rules cannot see through.
+fn prepass_cf_two_sum(a: f32, b: f32) -> vec2<f32> {
+    let s = prepass_cf_opaque(a) + prepass_cf_opaque(b);
+    return vec2<f32>(s, prepass_cf_add_err(a, b, s));
+}
+
+// Whether prepass_cf_mul_err(a, b, p) is the exact error (not its out-of-range 0).
+fn prepass_cf_mul_err_ok(a: f32, b: f32, p: f32) -> bool {
+    let big = bitcast<f32>(0x5d800000u); // 2^60
+    let small = bitcast<f32>(0x0d800000u); // 2^-100
+    return abs(a) < big && abs(b) < big && abs(p) > small && prepass_cf_finite(p);
+}
+
+// x * y of two double-f32 values, to about 2^-44 relative (the lo*lo term and one rounding of
+// the cross terms are lost).
+fn prepass_cf_df_mul(x: vec2<f32>, y: vec2<f32>) -> vec2<f32> {
+    let p = prepass_cf_opaque(x.x) * prepass_cf_opaque(y.x);
+    let e = prepass_cf_mul_err(x.x, y.x, p) + (x.x * y.y + x.y * y.x);
+    return prepass_cf_two_sum(p, e);
+}
+
+// x + y of two double-f32 values, to about 2^-44 relative where they do not cancel.
+fn prepass_cf_df_add(x: vec2<f32>, y: vec2<f32>) -> vec2<f32> {
+    let s = prepass_cf_two_sum(x.x, y.x);
+    return prepass_cf_two_sum(s.x, s.y + (x.y + y.y));
+}
+
+// 2^p for p in [-126, 127].
+fn prepass_cf_pow2(p: i32) -> f32 {
+    return bitcast<f32>(u32(clamp(p, -126, 127) + 127) << 23u);
+}
+
+// Exponent p of one ULP (2^p) of the real value hi + lo, |hi| normal: the spacing of the floats
+// around it; at a power of two, or just below one, the spacing below (WGSL's ULP of x is the
+// smallest gap between floats a <= x <= b).
+fn prepass_cf_ulp_exp(hi: f32, lo: f32) -> i32 {
+    let a = bitcast<u32>(hi) & 0x7fffffffu;
+    let ex = i32(a >> 23u);
+    let below = (a & 0x7fffffu) == 0u && (lo == 0.0 || (lo < 0.0) == (hi > 0.0));
+    return max(select(ex, ex - 1, below), 1) - 150;
+}
+
+// k ULPs of hi + lo, less 2^-12 of itself. The margin (at least 2^-11 ULP, as k >= 2) covers
+// each reference's own error (below 2^-17 ULP: the exp/log references are good to about 2^-40
+// relative, the others to about 2^-44), so a placed result never leaves the interval; an end
+// float closer than the margin to the interval's edge is given up for its neighbour. No margin
+// where `exact` (a reference that is exact when its lo part is 0: the quotient and unpack,
+// whose residuals are then 0) and lo is 0: an end lying on a float (an exact result
+// and a whole number of ULPs) is reached, and the excess below is then computed exactly.
+fn prepass_cf_ulp_budget(e: vec2<f32>, k: f32, exact: bool) -> f32 {
+    let margin = select(1.0 - 1.0 / 4096.0, 1.0, exact && e.y == 0.0);
+    return k * margin * prepass_cf_pow2(prepass_cf_ulp_exp(e.x, e.y));
+}
+
+// How far t lies beyond distance `budget` from hi + lo on side dir (> 0: outside). Plain f32:
+// its rounding is below 2^-23 of the budget, inside the 2^-12 margin every budget carries, so
+// a t it calls inside is inside the spec's interval.
+fn prepass_cf_excess(t: f32, e: vec2<f32>, budget: f32, dir: f32) -> f32 {
+    return (dir * (prepass_cf_opaque(t) - e.x) - budget) - dir * e.y;
+}
+
+// The last float on side dir (+1 above, -1 below) whose distance from the exact e.x + e.y is
+// within budget (absolute): the end of the interval exact ± budget. The guess
+// t0 = e.x ± budget, rounded, is within one spacing of t0 of the edge (|e.y| is at most half a
+// spacing of e.x), so the end is t0's outer neighbour, t0, or one or two floats inside it (two
+// where t0 is a power of two and the floats inside it are twice as dense).
+fn prepass_cf_place(e: vec2<f32>, budget: f32, dir: i32) -> f32 {
+    let s = f32(dir);
+    let t0 = prepass_cf_clamp_finite(e.x + s * budget);
+    let out = prepass_cf_next(t0, dir > 0);
+    if (prepass_cf_finite(out) && prepass_cf_excess(out, e, budget, s) <= 0.0) {
+        return out;
+    }
+    if (prepass_cf_excess(t0, e, budget, s) <= 0.0) {
+        return t0;
+    }
+    let t1 = prepass_cf_next(t0, dir < 0);
+    return select(prepass_cf_next(t1, dir < 0), t1, prepass_cf_excess(t1, e, budget, s) <= 0.0);
+}
+
+// A result at the end of its k-ULP interval on side dir; the nearest float to the exact value
+// where dir is 0 (the seeded policy's middle).
+fn prepass_cf_place_ulp(e: vec2<f32>, k: f32, dir: i32, exact: bool) -> f32 {
+    if (dir == 0) {
+        return e.x + prepass_cf_opaque(e.y);
+    }
+    return prepass_cf_place(e, prepass_cf_ulp_budget(e, k, exact), dir);
+}
+
+// a / b within 2.5 ULP of the exact quotient q + r/b, r = a - q*b exactly (a - p is exact:
+// p = q*b rounded is within a few ULPs of a). Outside Dekker's range the host's quotient
+// (within DIV_HOST) is pushed by the rest of the budget. Divisors outside
+// +-[2^-126, 2^126] make the result indeterminate.
 fn prepass_cf_div(site: u32, a0: f32, b0: f32) -> f32 {
     let a = prepass_cf_ftz(site + 1u, a0);
     let b = prepass_cf_ftz(site + 2u, b0);
     prepass_cf_undefined_if(!(abs(b) >= bitcast<f32>(0x00800000u) && abs(b) <= bitcast<f32>(0x7e800000u)));
     let q = a / b;
     prepass_cf_undefined_if(!prepass_cf_finite(q));
-    let halves = prepass_cf_dir(PREPASS_CF_DIVISION, site, a, b) * PREPASS_CF_DIV_HALVES;
-    return prepass_cf_ftz(site + 3u, prepass_cf_push(q, halves));
+    let dir = prepass_cf_dir(PREPASS_CF_DIVISION, site, a, b);
+    let p = prepass_cf_opaque(q) * b;
+    if (dir != 0 && abs(q) >= bitcast<f32>(0x0d800000u) && prepass_cf_mul_err_ok(q, b, p)) {
+        let r = (prepass_cf_opaque(a) - p) - prepass_cf_mul_err(q, b, p);
+        let e = prepass_cf_two_sum(q, r / b);
+        return prepass_cf_ftz(site + 3u, prepass_cf_place_ulp(e, 2.5, dir, true));
+    }
+    return prepass_cf_ftz(site + 3u, prepass_cf_push(q, dir * PREPASS_CF_DIV_HALVES));
 }
 
 // inverseSqrt(x) within 2 ULP; x <= 0, subnormal or infinite is outside the domain.
-// 1/sqrt(x) to within about 0.5 ULP whatever the host's inverseSqrt does (lavapipe's is
-// 1/sqrt, up to 1.44 ULP off): from y = sqrt(x) and r = 1/y, corrected by the exact residuals
-// x - y^2 and 1 - r*y (Dekker). x is scaled by 2^-+64 first so that no product overflows.
-fn prepass_cf_inverse_sqrt_refined(x0: f32) -> f32 {
+// The exact 1/sqrt(x) as hi + lo whatever the host's inverseSqrt does (lavapipe's is 1/sqrt,
+// up to 1.44 ULP off): from y = sqrt(x) and r = 1/y, 1/sqrt(x) = r(1 + rr - ry/(2x)) to second
+// order (about 2^-44), with the exact residuals rr = 1 - r*y and ry = x - y^2 (Dekker), which
+// needs only a sqrt and a / within a few ULPs. x is scaled by 2^-+64 first so that no product
+// overflows.
+fn prepass_cf_inverse_sqrt_exact(x0: f32) -> vec2<f32> {
     var x = x0;
     var scale = 1.0;
     if (x0 > bitcast<f32>(0x5f800000u)) {
@@ -332,7 +449,7 @@ fn prepass_cf_inverse_sqrt_refined(x0: f32) -> f32 {
     let r = 1.0 / y;
     let q = r * y;
     let rr = (1.0 - q) - prepass_cf_mul_err(r, y, q);
-    return (r + r * (rr - 0.5 * ry * r * r)) * scale;
+    return prepass_cf_two_sum(r, r * (rr - 0.5 * ry * r * r)) * scale;
 }
 
 fn prepass_cf_inverse_sqrt(site: u32, x0: f32) -> f32 {
@@ -342,8 +459,7 @@ fn prepass_cf_inverse_sqrt(site: u32, x0: f32) -> f32 {
     if (dir == 0) {
         return prepass_cf_ftz(site + 3u, inverseSqrt(x));
     }
-    let halves = dir * PREPASS_CF_ISQRT_HALVES;
-    return prepass_cf_ftz(site + 3u, prepass_cf_push(prepass_cf_inverse_sqrt_refined(x), halves));
+    return prepass_cf_ftz(site + 3u, prepass_cf_place_ulp(prepass_cf_inverse_sqrt_exact(x), 2.0, dir, false));
 }
 
 // sqrt(x) as the spec defines its accuracy: 1.0 / inverseSqrt(x). sqrt(+-0) stays 0: the
@@ -358,46 +474,124 @@ fn prepass_cf_sqrt(site: u32, x: f32) -> f32 {
     return prepass_cf_div(site + 8u, 1.0, prepass_cf_inverse_sqrt(site, x));
 }
 
-// Budget of exp and exp2, 3 + 2|x| ULP, less the host's own error, in half ULPs.
+// Budget of exp and exp2, 3 + 2|x| ULP, less the host's own error, in half ULPs (the push of
+// the host's result, where no reference is formed).
 fn prepass_cf_exp_halves(site: u32, x: f32) -> i32 {
     let budget = 2.0 * (3.0 + 2.0 * min(abs(x), 1000.0)) - f32(PREPASS_CF_EXP_HOST_HALVES);
     return prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x) * i32(floor(max(budget, 0.0)));
+}
+
+// 2^(f + n) as hi + lo for |f| <= 0.5 (double-f32) and an integer n with a normal result:
+// e^t, t = f*ln2 (|t| <= 0.35), is 1 + t(1 + t(1/2 + t(1/6 + t(1/24 + t*R(t))))) with the last
+// four steps in double-f32 and R (terms 5 to 10) in f32; the first omitted term and R's
+// rounding are below 2^-40 of the result.
+fn prepass_cf_exp2_exact(f: vec2<f32>, n: f32) -> vec2<f32> {
+    let t = prepass_cf_df_mul(f, vec2<f32>(bitcast<f32>(0x3f317218u), bitcast<f32>(0xb102e308u)));
+    let z = t.x;
+    let r = 1.0 / 120.0 + z * (1.0 / 720.0 + z * (1.0 / 5040.0 + z * (1.0 / 40320.0 + z * (1.0 / 362880.0 + z / 3628800.0))));
+    var s = prepass_cf_df_add(vec2<f32>(bitcast<f32>(0x3d2aaaabu), bitcast<f32>(0xb0aaaaabu)), vec2<f32>(z * r, 0.0));
+    s = prepass_cf_df_add(vec2<f32>(bitcast<f32>(0x3e2aaaabu), bitcast<f32>(0xb1aaaaabu)), prepass_cf_df_mul(t, s));
+    s = prepass_cf_df_add(vec2<f32>(0.5, 0.0), prepass_cf_df_mul(t, s));
+    s = prepass_cf_df_add(vec2<f32>(1.0, 0.0), prepass_cf_df_mul(t, s));
+    s = prepass_cf_df_add(vec2<f32>(1.0, 0.0), prepass_cf_df_mul(t, s));
+    // Two power-of-two steps: n may be 128 with a result below 2^128.
+    let k = i32(n);
+    return s * prepass_cf_pow2(k / 2) * prepass_cf_pow2(k - k / 2);
+}
+
+// An exponential within 3 + 2|x| ULP of its exact value e (hi + lo), or the host's result r
+// pushed where there is no reference.
+fn prepass_cf_exp_end(site: u32, x: f32, r: f32, e: vec2<f32>, exact: bool) -> f32 {
+    if (!exact) {
+        return prepass_cf_push(r, prepass_cf_exp_halves(site, x));
+    }
+    let dir = prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x);
+    if (dir == 0) {
+        return r;
+    }
+    return prepass_cf_place_ulp(e, 3.0 + 2.0 * abs(x), dir, false);
 }
 
 fn prepass_cf_exp2(site: u32, x0: f32) -> f32 {
     let x = prepass_cf_ftz(site + 1u, x0);
     let r = exp2(x);
     prepass_cf_undefined_if(!(x < 128.0) || !prepass_cf_finite(r));
-    return prepass_cf_ftz(site + 3u, prepass_cf_push(r, prepass_cf_exp_halves(site, x)));
+    // A reference where the result is at least 2^-100 (its lo part stays normal).
+    let exact = x >= -100.0 && x < 128.0;
+    let n = round(x);
+    let e = prepass_cf_exp2_exact(vec2<f32>(prepass_cf_opaque(x) - n, 0.0), n);
+    return prepass_cf_ftz(site + 3u, prepass_cf_exp_end(site, x, r, e, exact));
 }
 
 fn prepass_cf_exp(site: u32, x0: f32) -> f32 {
     let x = prepass_cf_ftz(site + 1u, x0);
     let r = exp(x);
     prepass_cf_undefined_if(!(x < 88.0) || !prepass_cf_finite(r));
-    return prepass_cf_ftz(site + 3u, prepass_cf_push(r, prepass_cf_exp_halves(site, x)));
+    let exact = x >= -69.0 && x < 88.0;
+    // x*log2(e) as hi + lo, split into n + f with |f| <= 0.5 (the subtraction of n is exact).
+    let t = prepass_cf_df_mul(vec2<f32>(x, 0.0), vec2<f32>(bitcast<f32>(0x3fb8aa3bu), bitcast<f32>(0x32a57060u)));
+    let n = round(t.x);
+    let e = prepass_cf_exp2_exact(prepass_cf_two_sum(prepass_cf_opaque(t.x) - n, t.y), n);
+    return prepass_cf_ftz(site + 3u, prepass_cf_exp_end(site, x, r, e, exact));
 }
 
-// log and log2: absolute 2^-21 on [0.5, 2], 3 ULP elsewhere; x <= 0, subnormal or infinite is
-// outside the domain.
-fn prepass_cf_log_push(site: u32, x: f32, r: f32) -> f32 {
-    let dir = prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x);
-    if (x >= 0.5 && x <= 2.0) {
-        return r + f32(dir) * PREPASS_CF_LOG_ABS_PUSH;
+// ln(x) (base2 false) or log2(x) of a normal positive finite x as hi + lo: x = m*2^k with m in
+// [sqrt(1/2), sqrt(2)), ln m = 2 atanh(s), s = (m - 1)/(m + 1) (|s| <= 0.1716) in double-f32
+// from the exact residual of the division, the series 2(s + s^3/3) in double-f32 and its
+// terms s^5 to s^15 in f32 (at most 2^-12 of ln m, so their rounding is below 2^-33 of it); the
+// first omitted term is below 2^-44.
+fn prepass_cf_log_exact(x: f32, base2: bool) -> vec2<f32> {
+    let b = bitcast<u32>(x);
+    var k = f32(i32(b >> 23u) - 127);
+    var m = bitcast<f32>((b & 0x7fffffu) | 0x3f800000u);
+    if (m > bitcast<f32>(0x3fb504f3u)) {
+        m = m * 0.5;
+        k = k + 1.0;
     }
-    return prepass_cf_push(r, dir * PREPASS_CF_LOG_HALVES);
+    let u = prepass_cf_opaque(m) - 1.0; // exact (Sterbenz)
+    let v = prepass_cf_two_sum(m, 1.0);
+    let sh = u / v.x;
+    let p = prepass_cf_opaque(sh) * v.x;
+    let res = ((u - p) - prepass_cf_mul_err(sh, v.x, p)) - sh * v.y;
+    let s = prepass_cf_two_sum(sh, res / v.x);
+    let z = s.x * s.x;
+    let tail = s.x * z * z * (2.0 / 5.0 + z * (2.0 / 7.0 + z * (2.0 / 9.0 + z * (2.0 / 11.0 + z * (2.0 / 13.0 + z * (2.0 / 15.0))))));
+    let s3 = prepass_cf_df_mul(prepass_cf_df_mul(s, s), s);
+    let two_thirds = vec2<f32>(bitcast<f32>(0x3f2aaaabu), bitcast<f32>(0xb2aaaaabu));
+    let ln_m = prepass_cf_df_add(prepass_cf_df_add(2.0 * s, prepass_cf_df_mul(s3, two_thirds)), vec2<f32>(tail, 0.0));
+    if (base2) {
+        let inv_ln2 = vec2<f32>(bitcast<f32>(0x3fb8aa3bu), bitcast<f32>(0x32a57060u));
+        return prepass_cf_df_add(vec2<f32>(k, 0.0), prepass_cf_df_mul(ln_m, inv_ln2));
+    }
+    let ln2 = vec2<f32>(bitcast<f32>(0x3f317218u), bitcast<f32>(0xb102e308u));
+    return prepass_cf_df_add(prepass_cf_df_mul(vec2<f32>(k, 0.0), ln2), ln_m);
+}
+
+// log and log2: absolute 2^-21 on [0.5, 2], 3 ULP elsewhere, of the exact value; x <= 0,
+// subnormal or infinite is outside the domain (no reference is needed there: the result is
+// indeterminate).
+fn prepass_cf_log_end(site: u32, x: f32, r: f32, base2: bool) -> f32 {
+    let dir = prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x);
+    if (dir == 0 || !(x >= bitcast<f32>(0x00800000u) && x <= bitcast<f32>(0x7f7fffffu))) {
+        return r;
+    }
+    let e = prepass_cf_log_exact(x, base2);
+    if (x >= 0.5 && x <= 2.0) {
+        return prepass_cf_place(e, bitcast<f32>(0x35000000u) * (1.0 - 1.0 / 4096.0), dir);
+    }
+    return prepass_cf_place_ulp(e, 3.0, dir, false);
 }
 
 fn prepass_cf_log2(site: u32, x0: f32) -> f32 {
     let x = prepass_cf_ftz(site + 1u, x0);
     prepass_cf_undefined_if(!(x >= bitcast<f32>(0x00800000u) && x <= bitcast<f32>(0x7f7fffffu)));
-    return prepass_cf_ftz(site + 3u, prepass_cf_log_push(site, x, log2(x)));
+    return prepass_cf_ftz(site + 3u, prepass_cf_log_end(site, x, log2(x), true));
 }
 
 fn prepass_cf_log(site: u32, x0: f32) -> f32 {
     let x = prepass_cf_ftz(site + 1u, x0);
     prepass_cf_undefined_if(!(x >= bitcast<f32>(0x00800000u) && x <= bitcast<f32>(0x7f7fffffu)));
-    return prepass_cf_ftz(site + 3u, prepass_cf_log_push(site, x, log(x)));
+    return prepass_cf_ftz(site + 3u, prepass_cf_log_end(site, x, log(x), false));
 }
 
 // pow(x, y) as inherited: exp2(y * log2(x)).
@@ -529,29 +723,35 @@ fn prepass_cf_mix(site: u32, a: f32, b: f32, t: f32) -> f32 {
     return prepass_cf_mad(site, b, t, left);
 }
 
-// v / (s2 - 1) correctly rounded, whatever the host's division does: the quotient corrected by
-// its exact residual v - q*(s2 - 1) (q*s2 is exact, the subtraction's error comes from
-// Fast2Sum).
-fn prepass_cf_unorm_quotient(v: f32, s2: f32) -> f32 {
-    var q = v / (s2 - 1.0);
+// v / (s2 - 1) exactly, as hi + lo, whatever the host's division does: the quotient q and its
+// exact residual v - q*(s2 - 1) (Dekker; v - p is exact, p being within a few ULPs of v).
+fn prepass_cf_unorm_exact(v: f32, s2: f32) -> vec2<f32> {
+    let d = s2 - 1.0;
+    let q = v / d;
     if (v == 0.0) {
-        return q;
+        return vec2<f32>(q, 0.0);
     }
-    let hi = q * s2;
-    let t = hi - q;
-    let e = (-q) - (t - hi);
-    let r = (v - t) - e;
-    let spacing = abs(prepass_cf_next(q, true) - q);
-    if (2.0 * abs(r) > (s2 - 1.0) * spacing) {
-        q = prepass_cf_next(q, r > 0.0);
-    }
-    return q;
+    let p = prepass_cf_opaque(q) * d;
+    let r = (prepass_cf_opaque(v) - p) - prepass_cf_mul_err(q, d, p);
+    return prepass_cf_two_sum(q, r / d);
 }
 
-// A correctly rounded v / s pushed by the rest of unpack's 3 ULP.
-fn prepass_cf_unpack_lane(site: u32, q: f32) -> f32 {
-    let halves = prepass_cf_dir(PREPASS_CF_UNPACK, site, q, q) * PREPASS_CF_UNPACK_HALVES;
-    return prepass_cf_push(q, halves);
+// max(v / (s2 - 1), -1) exactly, as hi + lo.
+fn prepass_cf_snorm_exact(v: f32, s2: f32) -> vec2<f32> {
+    if (v <= 1.0 - s2) {
+        return vec2<f32>(-1.0, 0.0);
+    }
+    return prepass_cf_unorm_exact(v, s2);
+}
+
+// An unpacked lane at the end of unpack's 3 ULP around its exact value; 0 stays 0 on the
+// nearest side and is pushed into the subnormals by the rest of the budget elsewhere.
+fn prepass_cf_unpack_lane(site: u32, e: vec2<f32>) -> f32 {
+    let dir = prepass_cf_dir(PREPASS_CF_UNPACK, site, e.x, e.x);
+    if (e.x == 0.0) {
+        return prepass_cf_push(e.x, dir * PREPASS_CF_UNPACK_HALVES);
+    }
+    return prepass_cf_place_ulp(e, 3.0, dir, true);
 }
 
 fn prepass_cf_unpack4x8unorm(site: u32, p: u32) -> vec4<f32> {
@@ -560,7 +760,7 @@ fn prepass_cf_unpack4x8unorm(site: u32, p: u32) -> vec4<f32> {
     }
     var r: vec4<f32>;
     for (var i = 0u; i < 4u; i++) {
-        r[i] = prepass_cf_unpack_lane(site + 8u * i, prepass_cf_unorm_quotient(f32((p >> (8u * i)) & 0xffu), 256.0));
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, prepass_cf_unorm_exact(f32((p >> (8u * i)) & 0xffu), 256.0));
     }
     return r;
 }
@@ -572,7 +772,7 @@ fn prepass_cf_unpack4x8snorm(site: u32, p: u32) -> vec4<f32> {
     var r: vec4<f32>;
     for (var i = 0u; i < 4u; i++) {
         let v = bitcast<i32>(p << (24u - 8u * i)) >> 24u;
-        r[i] = prepass_cf_unpack_lane(site + 8u * i, max(prepass_cf_unorm_quotient(f32(v), 128.0), -1.0));
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, prepass_cf_snorm_exact(f32(v), 128.0));
     }
     return r;
 }
@@ -583,7 +783,7 @@ fn prepass_cf_unpack2x16unorm(site: u32, p: u32) -> vec2<f32> {
     }
     var r: vec2<f32>;
     for (var i = 0u; i < 2u; i++) {
-        r[i] = prepass_cf_unpack_lane(site + 8u * i, prepass_cf_unorm_quotient(f32((p >> (16u * i)) & 0xffffu), 65536.0));
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, prepass_cf_unorm_exact(f32((p >> (16u * i)) & 0xffffu), 65536.0));
     }
     return r;
 }
@@ -595,7 +795,7 @@ fn prepass_cf_unpack2x16snorm(site: u32, p: u32) -> vec2<f32> {
     var r: vec2<f32>;
     for (var i = 0u; i < 2u; i++) {
         let v = bitcast<i32>(p << (16u - 16u * i)) >> 16u;
-        r[i] = prepass_cf_unpack_lane(site + 8u * i, max(prepass_cf_unorm_quotient(f32(v), 32768.0), -1.0));
+        r[i] = prepass_cf_unpack_lane(site + 8u * i, prepass_cf_snorm_exact(f32(v), 32768.0));
     }
     return r;
 }

@@ -32,8 +32,11 @@
 //! Products and quotients are reassociated: where an operand of `·` or `/` is itself a product
 //! or quotient (through locals and calls too), every one-level reordering the spec's
 //! `(a·b)/c ↔ (a/c)·b` stands for is evaluated and hulled in; a chain of three or more is
-//! [`IntervalError::NotCovered`]. A product by an exact power of two (a scaling, exact in any
-//! order while it stays normal) starts no chain.
+//! [`IntervalError::NotCovered`]. A product by an exact power of two (a scaling) counts no depth
+//! among products, where every order is exact; with a quotient it reorders like any product,
+//! `(4·x)/c ↔ (4/c)·x` rounding a quotient of the power of two (found when the emulation placed
+//! `decode_log_roughness`'s quotients at their ends): enumerated where the scaling is an operand
+//! of the division, refused elsewhere.
 //! Builtins other than those in the table are refused ([`IntervalError::NotCovered`]).
 //!
 //! Intervals are evaluated per input, so the dependency problem of interval arithmetic (the
@@ -84,13 +87,16 @@ pub struct Iv {
 }
 
 /// A value's last multiplicative operation: `kind` 0 none, 1 `a·b`, 2 `a/b`, with the operand
-/// enclosures and how many such operations are chained at and below it.
+/// enclosures and how many such operations are chained at and below it; whether the chain holds
+/// a scaling by a power of two (depth 0 when it is the scaling itself) and a quotient.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Chain {
     kind: u8,
     a: (f32, f32),
     b: (f32, f32),
     depth: u8,
+    scaled: bool,
+    quotient: bool,
 }
 
 const NO_CHAIN: Chain = Chain {
@@ -98,6 +104,8 @@ const NO_CHAIN: Chain = Chain {
     a: (0.0, 0.0),
     b: (0.0, 0.0),
     depth: 0,
+    scaled: false,
+    quotient: false,
 };
 
 impl Iv {
@@ -303,8 +311,12 @@ fn mul_div(kind: u8, p: Iv, q: Iv, flush: bool) -> R<Iv> {
         }?;
         Ok(fl(r))
     };
-    // A product by an exact power of two (a scaling) is exact where it stays normal, in every
-    // order, so it adds no rounding to reorder: it starts no chain, and one is not refused for it.
+    // A product by an exact power of two (a scaling) is exact in every order among products,
+    // so it counts no depth: (s·x)·y may be any order of the three at no extra rounding. With
+    // a quotient it does reorder: (s·x)/c ↔ (s/c)·x rounds a quotient of s. That one-level
+    // reordering is enumerated below where the scaling is an operand of the division and the
+    // other operand is no chain; any other meeting of a scaling and a quotient in one chain is
+    // refused (its reorderings are not enumerated).
     let pow2 = |v: Iv| {
         v.lo == v.hi && v.lo != 0.0 && v.lo.is_normal() && v.lo.to_bits() & 0x007f_ffff == 0
     };
@@ -319,11 +331,28 @@ fn mul_div(kind: u8, p: Iv, q: Iv, flush: bool) -> R<Iv> {
             if pow2(s) && x.chain.kind == 0 {
                 let mut r = op(1, x, s)?;
                 if normal_or_zero(r) && normal_or_zero(x) {
-                    r.chain = NO_CHAIN;
+                    r.chain = Chain {
+                        kind: 1,
+                        a: (x.lo, x.hi),
+                        b: (s.lo, s.hi),
+                        depth: 0,
+                        scaled: true,
+                        quotient: false,
+                    };
                     return Ok(r);
                 }
             }
         }
+    }
+    let scaling_operand = |v: Iv, other: Iv| {
+        kind == 2 && v.chain.scaled && v.chain.depth == 0 && other.chain.kind == 0
+    };
+    let scaled = p.chain.scaled || q.chain.scaled;
+    let quotient = kind == 2 || p.chain.quotient || q.chain.quotient;
+    if scaled && quotient && !scaling_operand(p, q) && !scaling_operand(q, p) {
+        return Err(not_covered(
+            "a power-of-two scaling and a quotient in one chain (a compiler may divide the power of two)",
+        ));
     }
     if p.chain.depth >= 2 || q.chain.depth >= 2 {
         return Err(not_covered(
@@ -370,6 +399,8 @@ fn mul_div(kind: u8, p: Iv, q: Iv, flush: bool) -> R<Iv> {
         a: (p.lo, p.hi),
         b: (q.lo, q.hi),
         depth: 1 + p.chain.depth.max(q.chain.depth),
+        scaled,
+        quotient,
     };
     Ok(r)
 }
@@ -1500,11 +1531,25 @@ fn log2(v: Iv) -> R<Iv> {
     inward(a - allow, b + allow, "log2")
 }
 
-/// `exp2(x)`: within `3 + 2|x|` ULP (WGSL).
+/// `exp2(x)`: within `3 + 2|x|` ULP (WGSL). The ULP is the exact value's: for a nonzero `x`
+/// below 2^-53, f64's `exp2` rounds to 1 while the value lies above 1 (ULP 2^-23, not the
+/// 2^-24 below it) for `x > 0` — the one place an f32 argument's `exp2` rounds onto a power of
+/// two in f64 (elsewhere it differs from one by at least 2^-24 relative).
 fn exp2(v: Iv) -> R<Iv> {
+    let ulp = |x: f32, e: f64| {
+        if e == 1.0 && x > 0.0 {
+            f64::powi(2.0, -23)
+        } else {
+            ulp_spec(e)
+        }
+    };
     let (a, b) = (f64::from(v.lo).exp2(), f64::from(v.hi).exp2());
     let ulps = 3.0 + 2.0 * f64::from(v.lo.abs().max(v.hi.abs()));
-    inward(a - ulps * ulp_spec(a), b + ulps * ulp_spec(b), "exp2")
+    // The lower end with the largest ULP over the interval (the one at its top): an x just
+    // above an integer inside it has a value just above a power of two, whose ULP is twice
+    // the one below, so the allowed results there reach lower than at x = v.lo.
+    let widest = ulp(v.lo, a).max(ulp(v.hi, b));
+    inward(a - ulps * widest, b + ulps * ulp(v.hi, b), "exp2")
 }
 
 /// `min` or `max` of two integer intervals: monotone in both, so end by end.

@@ -331,7 +331,8 @@ pub fn lpp_combine_two_buffers(albedo: Vec3, gloss: Vec3, diffuse: Vec3, specula
 }
 
 /// Error bounds of the light pre-pass maths, kept once: `tests/lpp.rs` asserts them on the
-/// adapter and, multiplied by [`bounds::CONFORMING_FACTOR`], under the worst-case emulation.
+/// adapter and, multiplied by [`bounds::CONFORMING_FACTOR`] and with
+/// [`bounds::independent_cosines_relative`] added, under the worst-case emulation.
 pub mod bounds {
     const U: f64 = 1.0 / 16_777_216.0;
 
@@ -381,6 +382,33 @@ pub mod bounds {
             + pow_relative(r, material_power)
             + pow_relative(n_dot_h, light_power * material_power)
             + 8.0 * U
+    }
+
+    /// Relative difference between two evaluations of the same light's cosines on a conforming
+    /// adapter — the direct Blinn-Phong value's and the light pass's — which
+    /// [`single_light_relative`] takes to be the same f32 (they are, where `+ − ×` round
+    /// correctly: the same operations on the same inputs). The spec makes no two evaluations
+    /// bit-identical, and the worst-case search found a pixel at 1.33 of the doubled budget
+    /// without this term. First order, `u = 2^-24`, every `+ − ×` within `2u` relative, the
+    /// directions from `lpp_direction` (`s·inverseSqrt(s·s)`, a power-of-two scaling first):
+    /// `s·s` within `6u` (a product and two sums of positive terms), `inverseSqrt` half of that
+    /// plus its 2 ULP (`4u`), the product `2u`: each unit direction within `9u`. `h` is the
+    /// direction of `l + v`: the sum's error is at most `9u·2 + 2u·|l + v|`, which turns the
+    /// direction by at most that over `|l + v|`, plus `9u` of its own. A dot of two unit
+    /// vectors adds `6u` absolute (three products, two sums, each bounded by `Σ|aᵢbᵢ| ≤ 1`).
+    /// So `N·H` is within `ε_h = (18u/|l + v| + 26u)/N·H` relative and `N·L·att` within
+    /// `ε_d = 24u/N·L + 2u`; the direct value carries `(N·H)^{n·m}` and `N·L·att` of one
+    /// evaluation, the reconstruction those of another: `2·n·m·ε_h + 2·ε_d`.
+    pub fn independent_cosines_relative(
+        n_dot_h: f64,
+        n_dot_l: f64,
+        l_plus_v: f64,
+        light_power: f64,
+        material_power: f64,
+    ) -> f64 {
+        let eps_h = (18.0 * U / l_plus_v + 26.0 * U) / n_dot_h;
+        let eps_d = 24.0 * U / n_dot_l + 2.0 * U;
+        2.0 * light_power * material_power * eps_h + 2.0 * eps_d
     }
 }
 
