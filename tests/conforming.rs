@@ -1248,6 +1248,112 @@ fn every_normal_encoding_under_emulation() {
     common::publish_measured("docs/figures.md", "normal-encodings", &full);
 }
 
+/// The precise (hemi-)octahedral encoders' choice among four codes, searched on the decision
+/// margin (`sweep::normal::searched_decision`): inputs where the closest candidate leads the
+/// runner-up by graded amounts (below), and per input the climb that pushes
+/// the runner-up's score below the best's. The promise: whatever the search makes the encoder
+/// choose is within `optimality_tolerance_conforming_deg` of the closest code. Published in
+/// docs/figures.md (block `normal-decision`) with how much of the slack the search reached.
+#[test]
+fn precise_choice_searched_on_the_decision_margin() {
+    use prepass::conforming::search::SearchConfig;
+    use prepass::sweep::conforming::optimality_tolerance_conforming_deg;
+    use prepass::sweep::normal::{
+        CODECS, SCORES_FN, chain_choice, decision_inputs, optimality_tolerance_deg, scores_source,
+        searched_decisions,
+    };
+    use std::fmt::Write as _;
+    let bound = optimality_tolerance_conforming_deg();
+    // Leads as fractions of the correctly rounded slack (the conforming bound is 5 of it): ten
+    // from the conforming bound down to 1/64, over eight cells. The cost is the two modules'
+    // compiles (the climb over 80 inputs per encoder adds about a second), so nothing is sampled.
+    let cells = 8;
+    let fractions = [
+        5.0,
+        1.0,
+        0.5,
+        0.25,
+        0.125,
+        1.0 / 12.0,
+        1.0 / 16.0,
+        1.0 / 24.0,
+        1.0 / 32.0,
+        1.0 / 64.0,
+    ];
+    let gaps: Vec<f64> = fractions
+        .iter()
+        .map(|f| f * optimality_tolerance_deg())
+        .collect();
+    let mut s = common::adapter_line();
+    s.push_str("\n| encoding | inputs (exact lead of the closest code over the runner-up) | choices overturned: at the start tables / by the search | worst excess over the closest code found | smallest lead the search did not overturn | bound on every conforming adapter | worst found / bound | slots read per input |\n|---|---|---|---|---|---|---|---|\n");
+    let precise: Vec<_> = CODECS
+        .iter()
+        .filter(|c| scores_source(c).is_some())
+        .collect();
+    assert_eq!(
+        precise.len(),
+        4,
+        "oct16, oct24, oct32 and hemioct24 precise"
+    );
+    let jobs: Vec<_> = precise
+        .iter()
+        .map(|&c| (c, decision_inputs(c, cells, &gaps)))
+        .collect();
+    // The scores function reads the encoder's candidates in the encoder's order: where the
+    // lead is at least the bound (no conforming adapter can overturn it), the adapter's scores
+    // and its shipped encoder both give the exact closest code.
+    for (c, inputs) in &jobs {
+        let clear: Vec<_> = inputs.iter().filter(|d| d.gap() >= bound).collect();
+        assert!(!clear.is_empty(), "{}: no input leads by the bound", c.name);
+        let ns: Vec<[f32; 3]> = clear.iter().map(|d| d.n).collect();
+        let bits: Vec<u32> = vec![c.bits / 2; ns.len()];
+        let source = scores_source(c).unwrap();
+        let args = [Arg::column(&ns), Arg::column(&bits)];
+        let scores = run_kernel(&source, SCORES_FN, &args, ns.len() as u64);
+        let codes = run_kernel(c.source, c.encode, &[Arg::column(&ns)], ns.len() as u64);
+        for ((d, v), &code) in clear.iter().zip(scores.as_vec4()).zip(codes.as_u32()) {
+            let best = d.codes[d.best];
+            assert_eq!(
+                (d.codes[chain_choice(*v)], code),
+                (best, best),
+                "{} at {:?}: (scores' choice, encoder's code) against the closest code",
+                c.name,
+                d.n
+            );
+        }
+    }
+    let results = searched_decisions(gpu(), &jobs, &SearchConfig::default()).unwrap();
+    for ((c, inputs), r) in jobs.iter().zip(&results) {
+        let (lo, hi) = inputs
+            .iter()
+            .map(|d| d.gap())
+            .fold((f64::INFINITY, 0.0f64), |(a, b), g| (a.min(g), b.max(g)));
+        eprintln!("{}: {r:?}", c.name);
+        assert_within!(
+            r.worst_excess_deg,
+            bound,
+            "sweep::conforming::optimality_tolerance_conforming_deg",
+            "{}: the precise encoder's choice at the searched worst, degrees beyond the closest code (at {:?})",
+            c.name,
+            r.worst_at
+        );
+        let _ = writeln!(
+            s,
+            "| {} | {} ({lo:.2e}° to {hi:.2e}°) | {} / {} | {:.3e}° | {:.3e}° | {bound:.3e}° | {:.2} | {}–{} |",
+            c.name,
+            r.inputs,
+            r.flipped_at_starts,
+            r.flipped,
+            r.worst_excess_deg,
+            r.smallest_lead_kept,
+            r.worst_excess_deg / bound,
+            r.slots.0,
+            r.slots.1
+        );
+    }
+    common::publish_measured("docs/figures.md", "normal-decision", &s);
+}
+
 /// Each call of a helper reads its own table slots (the call context): `h(x, y) − h(x, y)` is 0
 /// wherever both calls take one end (every uniform table: the upper and lower policies), and
 /// the search must find tables where the two calls err apart, by up to the division's 2.5 ULP

@@ -103,7 +103,8 @@ pub mod exact {
         crate::normal::exact::unit([d.x, d.y, d.z].map(f64::from)).expect("|D|_1 = M")
     }
 
-    fn continuous(n: [f64; 3]) -> [f64; 2] {
+    /// Continuous code coordinates of a direction (z clamped to ≥ 0) in f64.
+    pub fn continuous(n: [f64; 3]) -> [f64; 2] {
         let z = n[2].max(0.0);
         let l1 = n[0].abs() + n[1].abs() + z;
         let p = [n[0] / l1, n[1] / l1];

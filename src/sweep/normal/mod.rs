@@ -7,6 +7,7 @@
 //! one file per sweep; everything public is re-exported here.
 
 mod codecs;
+mod decision;
 mod decoder;
 mod inputs;
 mod myth;
@@ -17,6 +18,10 @@ mod searched;
 mod unorm;
 
 pub use codecs::{CODECS, Codec, codec};
+pub use decision::{
+    DecisionInput, SCORES_FN, SearchedDecision, chain_choice, decision_inputs, scores_source,
+    searched_decisions,
+};
 pub use decoder::{DecoderCheck, decode_all_32, decode_codes, decode_codes_with, decode_range};
 pub use inputs::{adversarial_directions, bad_inputs, fibonacci_directions, stratified_codes32};
 pub use myth::{Myth, killzone_myth};

@@ -3,9 +3,7 @@
 use super::codecs::Codec;
 use super::pool::par_fold;
 use super::round_trip::RoundTrip;
-use crate::normal::{hemioct, oct};
 use crate::precision::metrics::{angle_degrees, widen3};
-use crate::wgsl::NORMAL_HEMIOCT;
 
 /// How close the precise octahedral encoder's choices are to the best of the four neighbours.
 #[derive(Clone, Copy, Debug, Default)]
@@ -19,7 +17,7 @@ pub struct Optimality {
 }
 
 /// The slack the precise encoder's choice may have over the best neighbour, in degrees: twice
-/// its f32 score error (`(2√3 + 3)·2^-24` rad, see [`oct::encode_precise`]) plus twice the
+/// its f32 score error (`(2√3 + 3)·2^-24` rad, see [`crate::normal::oct::encode_precise`]) plus twice the
 /// decoder's rounding of each direction (`√2·2^-24` rad: only the final per-component
 /// multiply turns the direction; the length's error does not).
 pub fn optimality_tolerance_deg() -> f64 {
@@ -45,7 +43,6 @@ fn sin2_f64(a: [f64; 3], b: [f64; 3]) -> f64 {
 /// ranked by f64 `sin²` (every error here is far below 90°); the excess is then measured with
 /// [`angle_degrees`].
 pub fn precise_optimality(codec: &Codec, inputs: &[[f32; 3]], rt: &RoundTrip) -> Optimality {
-    let bits = codec.bits / 2;
     let parts = par_fold(inputs.len(), |r| {
         let mut o = Optimality {
             worst_excess_deg: f64::NEG_INFINITY,
@@ -55,12 +52,7 @@ pub fn precise_optimality(codec: &Codec, inputs: &[[f32; 3]], rt: &RoundTrip) ->
             let n = widen3(inputs[i]);
             let chosen = widen3(rt.decoded[i]);
             let mut best = (f64::INFINITY, chosen);
-            let neighbours = if codec.source == NORMAL_HEMIOCT {
-                hemioct::exact::neighbours(n)
-            } else {
-                oct::exact::neighbours(n, bits)
-            };
-            for p in neighbours {
+            for p in super::decision::neighbours(codec, n) {
                 let d = widen3((codec.twin_decode)(p).to_array());
                 let s = sin2_f64(n, d);
                 if s < best.0 {
