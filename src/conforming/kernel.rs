@@ -22,14 +22,24 @@ fn touched_words() -> Vec<String> {
         .collect()
 }
 
+/// Up to this many elements (32 bytes each: 32 MiB), [`Policy::Upper`], [`Policy::Lower`] and
+/// [`Policy::Seeded`] pass their fixed table as per-element columns, as the search
+/// ([`super::search::climb`]) passes its tables, rather than as uniforms: the pipeline is
+/// specialised to its arguments' feeds, and a suite that runs the policies and then searches the
+/// same function compiles it once, not twice (on lavapipe an emulated lighting function takes
+/// about 20 s to compile cold). Larger runs take the uniforms.
+pub const FIXED_TABLE_AS_COLUMNS: u64 = 1 << 20;
+
 /// A function of an emulated module, ready to run, with its "not defined by the spec" flag.
 ///
 /// One pipeline per function for every policy but the identity: the flag is a tail word of the
 /// values' own pipeline ([`Gpu::kernel_with_tail`]; the search's slot mask, of a second one
 /// built only when asked for). [`Policy::Upper`], [`Policy::Lower`] and [`Policy::Seeded`] run
-/// the [`Policy::Searched`] module with, as uniforms, the table [`DirectionTable::UPPER`] or
-/// [`DirectionTable::LOWER`], or the seeded mode ([`super::search::seeded_mode`]): the
-/// policies' own results (`tests/conforming.rs` checks it), from one compiled pipeline.
+/// the [`Policy::Searched`] module with the table [`DirectionTable::UPPER`] or
+/// [`DirectionTable::LOWER`] (per-element columns, as the search's tables, up to
+/// [`FIXED_TABLE_AS_COLUMNS`] elements; uniforms beyond), or the seeded mode
+/// ([`super::search::seeded_mode`]): the policies' own results (`tests/conforming.rs` checks
+/// it), from the pipeline the search of the same function runs.
 pub struct EmulatedKernel<'g> {
     /// The emulated module (under [`Policy::Upper`], [`Policy::Lower`] and [`Policy::Seeded`],
     /// the searched one).
@@ -124,16 +134,25 @@ impl<'g> EmulatedKernel<'g> {
         &self.signature
     }
 
-    /// Values, tail words (flag first), for `args` with a fixed table appended.
+    /// Values, tail words (flag first), for `args` with a fixed table appended: as columns up
+    /// to [`FIXED_TABLE_AS_COLUMNS`] elements, the feed the search gives its tables, so that
+    /// the policies' runs and a search of the same function share one compiled pipeline.
     fn run_tail(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<u32>), HarnessError> {
-        match &self.fixed {
-            Some(f) => {
-                let mut all = args.to_vec();
-                all.extend_from_slice(f);
-                self.kernel.run_with_tail(&all, n)
+        let Some(f) = &self.fixed else {
+            return self.kernel.run_with_tail(args, n);
+        };
+        let mut all = args.to_vec();
+        let columns = match f {
+            [Arg::Splat(h0), Arg::Splat(h1), _] if n <= FIXED_TABLE_AS_COLUMNS => {
+                Some((vec![*h0; n as usize], vec![*h1; n as usize]))
             }
-            None => self.kernel.run_with_tail(args, n),
+            _ => None,
+        };
+        match &columns {
+            Some((c0, c1)) => all.extend([Arg::column(c0), Arg::column(c1), f[2]]),
+            None => all.extend_from_slice(f),
         }
+        self.kernel.run_with_tail(&all, n)
     }
 
     /// Under [`Policy::Searched`]: per element, the mask of the direction-table slots

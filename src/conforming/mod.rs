@@ -133,7 +133,7 @@ mod rewrite;
 mod kernel;
 #[cfg(feature = "harness")]
 #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
-pub use kernel::{EmulatedKernel, UNDEFINED_FLAG};
+pub use kernel::{EmulatedKernel, FIXED_TABLE_AS_COLUMNS, UNDEFINED_FLAG};
 #[cfg(feature = "harness")]
 #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub mod search;
