@@ -1,6 +1,6 @@
 //! Running an emulated module on the adapter (feature `harness`).
 
-use super::search::DirectionTable;
+use super::search::{DirectionTable, TABLE_MODE};
 use super::{Emulated, Emulation, Policy, emulate};
 use crate::harness::{Arg, Gpu, HarnessError, Kernel, Output, Signature};
 
@@ -52,9 +52,8 @@ pub struct EmulatedKernel<'g> {
     masks: Option<Kernel<'g>>,
     /// The signature callers pass arguments for (a fixed table's two parameters removed).
     signature: Signature,
-    /// Under Upper, Lower and Seeded: the trailing arguments appended to every run (a table and
-    /// the mode).
-    fixed: Option<[Arg<'static>; 3]>,
+    /// Under Upper, Lower and Seeded: the table and the mode appended to every run.
+    fixed: Option<(DirectionTable, [u32; 4])>,
 }
 
 impl<'g> EmulatedKernel<'g> {
@@ -67,12 +66,9 @@ impl<'g> EmulatedKernel<'g> {
     ) -> Result<Self, HarnessError> {
         let shader = |e: super::EmulateError| HarnessError::Shader(e.to_string());
         let fixed = match emulation.policy {
-            Policy::Upper => Some(DirectionTable::UPPER.args()),
-            Policy::Lower => Some(DirectionTable::LOWER.args()),
-            Policy::Seeded(seed) => {
-                let [a, b, _] = DirectionTable::UPPER.args();
-                Some([a, b, Arg::Splat(super::search::seeded_mode(seed))])
-            }
+            Policy::Upper => Some((DirectionTable::UPPER, TABLE_MODE)),
+            Policy::Lower => Some((DirectionTable::LOWER, TABLE_MODE)),
+            Policy::Seeded(seed) => Some((DirectionTable::UPPER, super::search::seeded_mode(seed))),
             _ => None,
         };
         let mut tail = vec![UNDEFINED_FLAG.to_string()];
@@ -138,20 +134,23 @@ impl<'g> EmulatedKernel<'g> {
     /// to [`FIXED_TABLE_AS_COLUMNS`] elements, the feed the search gives its tables, so that
     /// the policies' runs and a search of the same function share one compiled pipeline.
     fn run_tail(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<u32>), HarnessError> {
-        let Some(f) = &self.fixed else {
+        let Some((table, mode)) = self.fixed else {
             return self.kernel.run_with_tail(args, n);
         };
-        let mut all = args.to_vec();
-        let columns = match f {
-            [Arg::Splat(h0), Arg::Splat(h1), _] if n <= FIXED_TABLE_AS_COLUMNS => {
-                Some((vec![*h0; n as usize], vec![*h1; n as usize]))
-            }
-            _ => None,
+        let [h0, h1] = table.halves();
+        let columns = n <= FIXED_TABLE_AS_COLUMNS;
+        let (c0, c1) = if columns {
+            (vec![h0; n as usize], vec![h1; n as usize])
+        } else {
+            (Vec::new(), Vec::new())
         };
-        match &columns {
-            Some((c0, c1)) => all.extend([Arg::column(c0), Arg::column(c1), f[2]]),
-            None => all.extend_from_slice(f),
+        let mut all = args.to_vec();
+        if columns {
+            all.extend([Arg::column(&c0), Arg::column(&c1)]);
+        } else {
+            all.extend([Arg::Splat(h0), Arg::Splat(h1)]);
         }
+        all.push(Arg::Splat(mode));
         self.kernel.run_with_tail(&all, n)
     }
 

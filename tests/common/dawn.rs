@@ -145,9 +145,9 @@ fn run_one_process(jobs: Vec<Job>) -> (String, Vec<Outcome>) {
     // Dawn's node binding sometimes dies by a signal, mid-run and before any result is written
     // (SIGSEGV, or SIGABRT after "std::system_error: Invalid argument": 6 of 14 runs of
     // tests/implementations.rs on a 2-core EPYC, 2026-12-04). A crashed process has produced
-    // no results (results.txt is written last); it is run again,
-    // a few times, and the crash printed each time. A runner that exits with a status (an
-    // error it reports) fails at once, as does one that keeps crashing.
+    // no results (results.txt is written last); it is run again, a few times, and the crash
+    // printed each time. A runner that exits with a status (an error it reports) fails at once,
+    // as does one that keeps crashing.
     const ATTEMPTS: usize = 3;
     for attempt in 1..=ATTEMPTS {
         let status = Command::new("bash")
