@@ -9,16 +9,10 @@ use crate::harness::{Arg, Gpu, HarnessError, Kernel, Output, Signature};
 pub const UNDEFINED_FLAG: &str = "prepass_cf_undefined";
 
 /// The table slots an evaluation under [`Policy::Searched`] read, as eight `u32` expressions
-/// (`core.wgsl`'s `prepass_cf_touched`, lanes in [`DirectionTable`]'s word order).
+/// (`core.wgsl`'s `prepass_cf_touched`, in [`DirectionTable`]'s word order).
 fn touched_words() -> Vec<String> {
     (0..8)
-        .map(|k| {
-            format!(
-                "prepass_cf_touched[{}u].{}",
-                k / 4,
-                ["x", "y", "z", "w"][k % 4]
-            )
-        })
+        .map(|k| format!("prepass_cf_touched[{k}u]"))
         .collect()
 }
 
@@ -48,7 +42,7 @@ pub struct EmulatedKernel<'g> {
     kernel: Kernel<'g>,
     /// Under Searched: the same wrapper with the slot mask in its tail too, compiled only if
     /// [`EmulatedKernel::touched`] runs (reading the mask keeps its bookkeeping alive, which
-    /// costs the compiler dearly; the values' pipeline lets it fall away).
+    /// costs the compiler more; the values' pipeline lets it fall away).
     masks: Option<Kernel<'g>>,
     /// The signature callers pass arguments for (a fixed table's two parameters removed).
     signature: Signature,
