@@ -1148,6 +1148,7 @@ fn every_normal_encoding_under_emulation() {
     // together, which the greedy policies never combine.
     let rows = normal_figures_with(
         gpu(),
+        &prepass::sweep::normal::CODECS,
         &inputs,
         &policies,
         SEARCHED_NORMAL_INPUTS,

@@ -222,17 +222,19 @@ pub fn spread_codes(bits: u32) -> Vec<u32> {
         .collect()
 }
 
-/// [`NormalFigures`] of every codec over `inputs`, under each of `policies`, then searched at
-/// the `searched_inputs` inputs those policies erred most on (0: no search); each decoder also
-/// over [`spread_codes`].
+/// [`NormalFigures`] of each of `codecs` (e.g. [`super::normal::CODECS`]) over `inputs`, under
+/// each of `policies`, then searched at the `searched_inputs` inputs those policies erred most
+/// on (0: no search); each decoder also over [`spread_codes`].
 pub fn normal_figures(
     gpu: &Gpu,
+    codecs: &[Codec],
     inputs: &[[f32; 3]],
     policies: &[crate::conforming::Policy],
     searched_inputs: usize,
 ) -> Result<Vec<NormalFigures>, HarnessError> {
     normal_figures_with(
         gpu,
+        codecs,
         inputs,
         policies,
         searched_inputs,
@@ -248,6 +250,7 @@ pub const SEARCHED_NORMAL_INPUTS: usize = 16;
 /// to `inspect` as it is measured (a suite asserts on the same measurement it publishes).
 pub fn normal_figures_with(
     gpu: &Gpu,
+    codecs: &[Codec],
     inputs: &[[f32; 3]],
     policies: &[crate::conforming::Policy],
     searched_inputs: usize,
@@ -256,7 +259,7 @@ pub fn normal_figures_with(
 ) -> Result<Vec<NormalFigures>, HarnessError> {
     use crate::scene::{NormalChoice, NormalEncoding, Scene};
     let mut rows = Vec::new();
-    for c in &super::normal::CODECS {
+    for c in codecs {
         let hemisphere = c.name.starts_with("hemioct") || c.name.starts_with("xy");
         let pick = |rt: &RoundTrip| {
             if hemisphere { rt.error_upper } else { rt.error }
