@@ -694,3 +694,46 @@ fn cell(f: &Figure) -> String {
         v
     }
 }
+
+/// Dawn's node binding crashes or hangs now and then (tests/common/dawn.rs, `run_to_the_end`):
+/// with a crash and a hang injected into the runner, every job still comes back once, in order,
+/// with the results wgpu gives, and two runner processes were replaced. Fails if a crashed or
+/// hung runner lost a job, repeated one, or was not detected (the hang would never end).
+#[test]
+fn dawn_runner_survives_a_crash_and_a_hang() {
+    let codes: Vec<u32> = (0..64).map(|k| k * 262_143).collect();
+    let dispatches: Vec<Dispatch> = (0..6)
+        .map(|k| {
+            let part = &codes[k * 10..k * 10 + 10];
+            call(
+                prepass::wgsl::DEPTH24,
+                "hyperbolic_depth_from_depth24",
+                &[Arg::column(part)],
+                part.len() as u64,
+            )
+        })
+        .collect();
+    let want: Vec<Vec<u32>> = dispatches
+        .iter()
+        .map(|d| run_dispatch_on_wgpu(d.clone()).into_words())
+        .collect();
+    let jobs = dispatches
+        .into_iter()
+        .enumerate()
+        .map(|(i, d)| dawn::Job {
+            name: format!("call {i}"),
+            source: String::new(),
+            dispatch: Some(d),
+        })
+        .collect();
+    let (_, outcomes, restarts) = dawn::run_with_faults(jobs, "crash:2,hang:4");
+    assert_eq!(restarts, 2, "a crash and a hang, each replaced once");
+    let got: Vec<Vec<u32>> = outcomes
+        .into_iter()
+        .map(|o| o.output.expect("every job's output").into_words())
+        .collect();
+    assert_eq!(
+        got, want,
+        "Dawn's results after the restarts, against wgpu's"
+    );
+}

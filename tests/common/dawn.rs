@@ -5,9 +5,11 @@
 //! Without that setup every caller FAILS, naming the command.
 
 use prepass::harness::{Dispatch, Output};
+use std::collections::VecDeque;
 use std::fmt::Write as _;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::time::{Duration, Instant};
 
 /// The fix named in every failure to start Dawn.
 pub const SETUP: &str = "run `bash .ci/setup-dawn` (installs the pinned npm package `webgpu` in \
@@ -42,7 +44,17 @@ const JOBS_PER_PROCESS: usize = 256;
 
 /// The adapter Dawn ran on and one [`Outcome`] per job, in order. Panics (the test fails) when
 /// Dawn cannot be started, with the setup command.
-pub fn run(mut jobs: Vec<Job>) -> (String, Vec<Outcome>) {
+pub fn run(jobs: Vec<Job>) -> (String, Vec<Outcome>) {
+    let (adapter, outcomes, _) = run_with_faults(jobs, "");
+    (adapter, outcomes)
+}
+
+/// [`run`], with faults injected into the runner to prove that the supervision survives them
+/// (`tests/implementations.rs`): `faults` is run.mjs's `PREPASS_DAWN_FAULTS`, e.g.
+/// `"crash:2,hang:4"` (abort at job 2 and block at job 4, each only in a process that started
+/// before that job, as a real crash strikes once). Also returns how many runner processes were
+/// replaced after a crash or a hang.
+pub fn run_with_faults(mut jobs: Vec<Job>, faults: &str) -> (String, Vec<Outcome>, usize) {
     let mut chunks = Vec::new();
     while !jobs.is_empty() {
         let rest = jobs.split_off(jobs.len().min(JOBS_PER_PROCESS));
@@ -51,7 +63,7 @@ pub fn run(mut jobs: Vec<Job>) -> (String, Vec<Outcome>) {
     }
     // One node process per core at a time.
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let mut results: Vec<Option<(String, Vec<Outcome>)>> =
+    let mut results: Vec<Option<(String, Vec<Outcome>, usize)>> =
         (0..chunks.len()).map(|_| None).collect();
     let total: usize = chunks.iter().map(Vec::len).sum();
     let mut done = 0;
@@ -76,7 +88,7 @@ pub fn run(mut jobs: Vec<Job>) -> (String, Vec<Outcome>) {
         std::thread::scope(|scope| {
             let handles: Vec<_> = batch
                 .into_iter()
-                .map(|(i, c)| scope.spawn(move || (i, run_one_process(c))))
+                .map(|(i, c)| scope.spawn(move || (i, run_one_process(c, faults))))
                 .collect();
             for h in handles {
                 let (i, r) = h.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
@@ -84,16 +96,16 @@ pub fn run(mut jobs: Vec<Job>) -> (String, Vec<Outcome>) {
             }
         });
     }
-    let mut adapter = String::new();
-    let mut outcomes = Vec::new();
-    for (a, o) in results.into_iter().flatten() {
+    let (mut adapter, mut outcomes, mut restarts) = (String::new(), Vec::new(), 0);
+    for (a, o, r) in results.into_iter().flatten() {
         adapter = a;
         outcomes.extend(o);
+        restarts += r;
     }
-    (adapter, outcomes)
+    (adapter, outcomes, restarts)
 }
 
-fn run_one_process(jobs: Vec<Job>) -> (String, Vec<Outcome>) {
+fn run_one_process(jobs: Vec<Job>, faults: &str) -> (String, Vec<Outcome>, usize) {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     let env_file = root.join("target/dawn-env");
     assert!(
@@ -142,38 +154,7 @@ fn run_one_process(jobs: Vec<Job>) -> (String, Vec<Outcome>) {
         }
     }
     std::fs::write(dir.join("jobs.tsv"), tsv).unwrap();
-    // Dawn's node binding sometimes dies by a signal, mid-run and before any result is written
-    // (SIGSEGV, or SIGABRT after "std::system_error: Invalid argument": 6 of 14 runs of
-    // tests/implementations.rs on a 2-core EPYC, 2026-12-04). A crashed process has produced
-    // no results (results.txt is written last); it is run again, a few times, and the crash
-    // printed each time. A runner that exits with a status (an error it reports) fails at once,
-    // as does one that keeps crashing.
-    // 3 attempts were not enough once in CI (2026-12-04: SIGABRT, SIGSEGV, then a glibc
-    // assertion in __pthread_tpp_change_priority, all in Dawn's process).
-    const ATTEMPTS: usize = 8;
-    for attempt in 1..=ATTEMPTS {
-        let status = Command::new("bash")
-            .arg("-c")
-            .arg("source target/dawn-env && exec node tests/dawn/run.mjs \"$0\"")
-            .arg(&dir)
-            .current_dir(&root)
-            .status()
-            .unwrap_or_else(|e| panic!("cannot start bash/node for Dawn ({e}): {SETUP}"));
-        if status.success() {
-            break;
-        }
-        let crashed = status.code().is_none();
-        assert!(
-            crashed && attempt < ATTEMPTS,
-            "Dawn's runner failed ({status}; its message is above{}): {SETUP}",
-            if crashed { ", every attempt" } else { "" }
-        );
-        eprintln!(
-            "Dawn's runner crashed ({status}), attempt {attempt} of {ATTEMPTS}: running it again"
-        );
-    }
-    let text = std::fs::read_to_string(dir.join("results.txt")).unwrap();
-    let mut adapter = String::new();
+    let (adapter, done, restarts) = run_to_the_end(&root, &dir, jobs.len(), faults);
     let mut out: Vec<Outcome> = jobs
         .iter()
         .map(|j| Outcome {
@@ -183,12 +164,9 @@ fn run_one_process(jobs: Vec<Job>) -> (String, Vec<Outcome>) {
             output: None,
         })
         .collect();
-    for line in text.lines() {
+    for line in &done {
+        let line = line.as_str();
         let (kind, rest) = line.split_once(' ').unwrap_or((line, ""));
-        if kind == "adapter" {
-            adapter = rest.to_string();
-            continue;
-        }
         let (i, rest) = rest.split_once(' ').unwrap_or((rest, ""));
         let i: usize = i.parse().unwrap();
         match kind {
@@ -210,7 +188,180 @@ fn run_one_process(jobs: Vec<Job>) -> (String, Vec<Outcome>) {
         }
     }
     let _ = std::fs::remove_dir_all(&dir);
-    (adapter, out)
+    (adapter, out, restarts)
+}
+
+/// What the runner's `results.txt` holds so far: the adapter it named, the lines of every
+/// finished job (a job's lines end with its `job` line, appended together), and the byte length
+/// of that finished part (anything after it is a job cut off by a crash).
+struct Finished {
+    adapter: String,
+    jobs: usize,
+    lines: Vec<String>,
+    bytes: u64,
+}
+
+fn read_finished(results: &Path) -> Finished {
+    let text = std::fs::read_to_string(results).unwrap_or_default();
+    let mut done = Finished {
+        adapter: String::new(),
+        jobs: 0,
+        lines: Vec::new(),
+        bytes: 0,
+    };
+    let mut pending = Vec::new();
+    let mut at = 0;
+    for line in text.split_inclusive('\n') {
+        at += line.len();
+        let Some(line) = line.strip_suffix('\n') else {
+            break; // cut off mid-line
+        };
+        if let Some(a) = line.strip_prefix("adapter ") {
+            done.adapter = a.to_string();
+            pending.clear();
+        } else if line.starts_with("job ") {
+            done.jobs += 1;
+            done.lines.append(&mut pending);
+            done.bytes = at as u64;
+        } else {
+            pending.push(line.to_string());
+        }
+    }
+    done
+}
+
+/// CPU time (user + system, in the kernel's clock ticks, 100 a second for user space) that a
+/// process has used, all its threads together; `None` where /proc cannot tell (not Linux).
+fn cpu_ticks(pid: u32) -> Option<u64> {
+    let stat = std::fs::read_to_string(format!("/proc/{pid}/stat")).ok()?;
+    // Fields after the parenthesised command name: state is field 3, utime 14, stime 15.
+    let fields: Vec<&str> = stat.rsplit_once(')')?.1.split_whitespace().collect();
+    Some(fields.get(11)?.parse::<u64>().ok()? + fields.get(12)?.parse::<u64>().ok()?)
+}
+
+/// A runner that finishes no job and uses less than `IDLE_CPU_TICKS` of CPU (2 % of a core)
+/// over the last `HANG_WINDOW` is hung: seen here as a deadlock in Dawn's event processing
+/// (`dawn::native::InstanceBase::ProcessEvents` waiting on a mutex no thread holds; 2 s of CPU
+/// in 16 min, 0.2 %), in 2 of 100 runs of 246 small dispatches. A job that is compiling keeps a
+/// core busy, and so does a dispatch on lavapipe (on a GPU these dispatches take milliseconds),
+/// so a slow job is not mistaken for a hang. Where CPU time cannot be read (not Linux), only
+/// `NO_JOB_LIMIT` without a finished job counts as hung.
+const HANG_WINDOW: Duration = Duration::from_secs(5);
+const IDLE_CPU_TICKS: u64 = 10;
+const NO_JOB_LIMIT: Duration = Duration::from_secs(900);
+
+/// Starts in a row that finish no job before the runner is given up on.
+const FRUITLESS_STARTS: usize = 5;
+
+/// Runs `dir`'s jobs to the end through as many node processes as it takes. Dawn's node
+/// binding dies by a signal now and then, or hangs (SIGSEGV; SIGABRT after "std::system_error:
+/// Invalid argument", "The futex facility returned an unexpected error code" or a glibc
+/// assertion in `__pthread_mutex_lock_full`; a deadlock at 0 % CPU): 5 of 100 runs of 246
+/// small dispatches on a 2-core Xeon (2026-12-05), after 6 of 14 runs of
+/// tests/implementations.rs on an EPYC (2026-12-04). `node --single-threaded` made it worse
+/// (41 of 100), keeping every Dawn object alive did not cure it (3 of 100). Every finished
+/// job is on disk (run.mjs appends it whole), so a crashed or hung process is replaced by one
+/// that starts at the first unfinished job, and the crash is printed. A runner that exits with
+/// a status (an error it reports) fails at once, as does one that crashes or hangs
+/// `FRUITLESS_STARTS` times in a row without finishing a job.
+fn run_to_the_end(
+    root: &Path,
+    dir: &Path,
+    total: usize,
+    faults: &str,
+) -> (String, Vec<String>, usize) {
+    let results = dir.join("results.txt");
+    let (mut fruitless, mut restarts) = (0, 0);
+    loop {
+        let before = read_finished(&results);
+        if before.jobs == total {
+            return (before.adapter, before.lines, restarts);
+        }
+        // Drop a job cut off mid-write before appending again.
+        if let Ok(f) = std::fs::OpenOptions::new().write(true).open(&results) {
+            f.set_len(before.bytes).unwrap();
+        }
+        let mut child = Command::new("bash")
+            .arg("-c")
+            .arg("source target/dawn-env && exec node tests/dawn/run.mjs \"$0\" \"$1\"")
+            .arg(dir)
+            .arg(before.jobs.to_string())
+            .current_dir(root)
+            .env("PREPASS_DAWN_FAULTS", faults)
+            .spawn()
+            .unwrap_or_else(|e| panic!("cannot start bash/node for Dawn ({e}): {SETUP}"));
+        let (mut seen_jobs, mut since_job) = (before.jobs, Instant::now());
+        // CPU time samples of the last HANG_WINDOW, oldest first.
+        let mut samples: VecDeque<(Instant, Option<u64>)> = VecDeque::new();
+        let ended = loop {
+            if let Some(status) = child.try_wait().unwrap() {
+                break Some(status);
+            }
+            std::thread::sleep(Duration::from_millis(100));
+            let now = read_finished(&results).jobs;
+            if now > seen_jobs {
+                (seen_jobs, since_job) = (now, Instant::now());
+            }
+            samples.push_back((Instant::now(), cpu_ticks(child.id())));
+            while samples.len() > 2 && samples[1].0.elapsed() >= HANG_WINDOW {
+                samples.pop_front();
+            }
+            let idle = match (samples.front(), samples.back()) {
+                (Some(&(then, Some(a))), Some(&(_, Some(b)))) => {
+                    then.elapsed() >= HANG_WINDOW
+                        && since_job.elapsed() >= HANG_WINDOW
+                        && b.saturating_sub(a) < IDLE_CPU_TICKS
+                }
+                _ => false,
+            };
+            if idle || since_job.elapsed() >= NO_JOB_LIMIT {
+                let _ = child.kill();
+                let _ = child.wait();
+                break None;
+            }
+        };
+        let after = read_finished(&results);
+        let what = match ended {
+            Some(status) if status.success() => {
+                assert_eq!(
+                    after.jobs, total,
+                    "Dawn's runner exited 0 with {} of {total} jobs finished: {SETUP}",
+                    after.jobs
+                );
+                continue;
+            }
+            Some(status) => {
+                assert!(
+                    status.code().is_none(),
+                    "Dawn's runner failed ({status}; its message is above): {SETUP}"
+                );
+                format!("crashed ({status})")
+            }
+            None => format!(
+                "hung (no job finished in {} s, under {} s of CPU in the last {} s)",
+                since_job.elapsed().as_secs(),
+                IDLE_CPU_TICKS as f64 / 100.0,
+                HANG_WINDOW.as_secs()
+            ),
+        };
+        fruitless = if after.jobs > before.jobs {
+            0
+        } else {
+            fruitless + 1
+        };
+        restarts += 1;
+        assert!(
+            fruitless < FRUITLESS_STARTS,
+            "Dawn's runner {what}, {FRUITLESS_STARTS} starts in a row without finishing a \
+             job (at job {} of {total}): {SETUP}",
+            after.jobs
+        );
+        eprintln!(
+            "Dawn's runner {what} after job {} of {total} (this start began at {}): starting \
+             again from job {}",
+            after.jobs, before.jobs, after.jobs
+        );
+    }
 }
 
 fn unique() -> u64 {

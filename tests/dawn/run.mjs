@@ -1,13 +1,17 @@
 // Runs WGSL jobs through Dawn's node binding (npm `webgpu`, pinned in package.json), whose WGSL
 // compiler is Tint: what Chrome and Edge compile a renderer's shaders with.
-//   node tests/dawn/run.mjs --probe   prints the adapter, exits 1 when Dawn finds none
-//   node tests/dawn/run.mjs DIR       runs DIR/jobs.tsv, writes DIR/results.txt (+ out files)
+//   node tests/dawn/run.mjs --probe      prints the adapter, exits 1 when Dawn finds none
+//   node tests/dawn/run.mjs DIR [FROM]   runs DIR/jobs.tsv from job FROM (default 0), appending
+//                                        to DIR/results.txt (+ out files)
 // jobs.tsv, one job a line, tab-separated: name, source file, then for a dispatch (else "-"):
 // entry, uniform words (comma-separated), column files (comma-separated, or "-"), output words,
 // workgroups "x,y" — the harness's Dispatch (src/harness/mod.rs): bind group 0 = uniform, the
 // column buffers in order, the output buffer last; columns and outputs are little-endian files
-// in DIR. results.txt: "adapter TEXT", then per job "job I ok|error", "msg I TYPE LINE:COL TEXT",
-// "err I TEXT", "out I FILE" (texts on one line).
+// in DIR. results.txt: "adapter TEXT" once per start, then per job "msg I TYPE LINE:COL TEXT",
+// "err I TEXT", "out I FILE" and last "job I ok|error MS" (texts on one line; MS the job's
+// milliseconds). Each job's lines are appended together once the job is done, "job" last, so a
+// process that dies mid-run leaves every finished job readable and the caller (tests/common/
+// dawn.rs) starts a new one FROM the first job without a "job" line.
 import { create, globals } from 'webgpu';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -27,6 +31,13 @@ if (process.argv[2] === '--probe') {
   process.exit(0);
 }
 const dir = process.argv[2];
+const from = Number(process.argv[3] || 0);
+// Injected faults, for the test of the caller's supervision only: PREPASS_DAWN_FAULTS
+// "crash:I,hang:J" aborts at job I / blocks (no CPU, as Dawn's deadlock does) at job J, each only
+// in a process that started before that job.
+const faults = Object.fromEntries((process.env.PREPASS_DAWN_FAULTS || '').split(',').filter(f => f)
+  .map(f => f.split(':')).map(([kind, at]) => [kind, Number(at)]));
+const results = path.join(dir, 'results.txt');
 const device = await adapter.requestDevice();
 const jobs = fs.readFileSync(path.join(dir, 'jobs.tsv'), 'utf8').split('\n').filter(l => l).map(l => {
   const [name, file, entry, uniform, columns, outWords, groups] = l.split('\t');
@@ -43,8 +54,12 @@ const jobs = fs.readFileSync(path.join(dir, 'jobs.tsv'), 'utf8').split('\n').fil
   return job;
 });
 const oneLine = t => String(t).replace(/\s+/g, ' ').trim();
-const lines = [`adapter ${oneLine(describe)}`];
+fs.appendFileSync(results, `adapter ${oneLine(describe)}\n`);
 for (const [i, job] of jobs.entries()) {
+  if (i < from) continue;
+  if (faults.crash === i && from < i) process.abort();
+  if (faults.hang === i && from < i) Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 0);
+  const started = performance.now();
   const r = { name: job.name, messages: [], error: null, out: null };
   device.pushErrorScope('validation');
   const module = device.createShaderModule({ code: job.source, label: job.name });
@@ -90,10 +105,11 @@ for (const [i, job] of jobs.entries()) {
       read.unmap();
     }
   }
-  lines.push(`job ${i} ${r.error ? 'error' : 'ok'}`);
+  const lines = [];
   for (const m of r.messages) lines.push(`msg ${i} ${m.type} ${m.line}:${m.col} ${oneLine(m.message)}`);
   if (r.error) lines.push(`err ${i} ${oneLine(r.error)}`);
   if (r.out) lines.push(`out ${i} ${r.out}`);
+  lines.push(`job ${i} ${r.error ? 'error' : 'ok'} ${Math.round(performance.now() - started)}`);
+  fs.appendFileSync(results, lines.join('\n') + '\n');
 }
-fs.writeFileSync(path.join(dir, 'results.txt'), lines.join('\n') + '\n');
 process.exit(0);
