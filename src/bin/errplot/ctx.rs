@@ -3,11 +3,13 @@
 
 use crate::plot::{self, Chart};
 use crate::variant::Variant;
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use prepass::harness::Gpu;
 use std::path::PathBuf;
+use std::sync::Arc;
 
 /// Command-line options.
+#[derive(Clone)]
 pub struct Options {
     /// Output folder.
     pub out: PathBuf,
@@ -17,12 +19,14 @@ pub struct Options {
     pub exhaustive32: bool,
 }
 
-/// The report being built.
+/// The report being built, or one section's part of it ([`Ctx::fork`]).
 pub struct Ctx {
     /// Options.
     pub opts: Options,
-    /// The adapter, or `None` with the reason.
-    pub gpu: Result<Gpu, String>,
+    /// The adapter, or `None` with the reason; shared by the sections that run side by side.
+    pub gpu: Arc<Result<Gpu, String>>,
+    /// The progress bars of every section running at the time, drawn together.
+    bars: MultiProgress,
     md: String,
     /// Every encoding variant registered by the sections, for the cost table and Pareto plots.
     pub variants: Vec<Variant>,
@@ -38,16 +42,43 @@ impl Ctx {
     pub fn new(opts: Options, gpu: Result<Gpu, String>) -> Self {
         Ctx {
             opts,
-            gpu,
+            gpu: Arc::new(gpu),
+            bars: MultiProgress::new(),
             md: String::new(),
             variants: Vec::new(),
             written: Vec::new(),
         }
     }
 
+    /// An empty part for one section to write into, on any thread: the same options, adapter
+    /// and progress display, its own Markdown, variants and files ([`Ctx::absorb`] appends them).
+    pub fn fork(&self) -> Self {
+        Ctx {
+            opts: self.opts.clone(),
+            gpu: Arc::clone(&self.gpu),
+            bars: self.bars.clone(),
+            md: String::new(),
+            variants: Vec::new(),
+            written: Vec::new(),
+        }
+    }
+
+    /// Append a part made by [`Ctx::fork`]: its Markdown after this one's, its variants and files
+    /// after these.
+    pub fn absorb(&mut self, part: Ctx) {
+        self.md.push_str(&part.md);
+        self.variants.extend(part.variants);
+        self.written.extend(part.written);
+    }
+
+    /// Print a line on stderr without tearing the progress bars being drawn.
+    pub fn say(&self, line: &str) {
+        self.bars.suspend(|| eprintln!("{line}"));
+    }
+
     /// The adapter, if there is one.
     pub fn gpu(&self) -> Option<&Gpu> {
-        self.gpu.as_ref().ok()
+        self.gpu.as_ref().as_ref().ok()
     }
 
     /// Append one line of Markdown.
@@ -79,9 +110,10 @@ impl Ctx {
         Ok(())
     }
 
-    /// A progress bar for `len` steps (drawn only when stderr is a terminal).
+    /// A progress bar for `len` steps (drawn only when stderr is a terminal), beside those of
+    /// the other sections running at the time.
     pub fn progress(&self, len: u64, what: &str) -> ProgressBar {
-        let bar = ProgressBar::new(len);
+        let bar = self.bars.add(ProgressBar::new(len));
         if let Ok(style) =
             ProgressStyle::with_template("{prefix:>22} [{bar:30}] {pos}/{len} {msg} ({elapsed})")
         {

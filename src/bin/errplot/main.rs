@@ -13,7 +13,7 @@
 //!    (from `src/sweep/<topic>`), writes Markdown (`ctx.line`), CSV (`ctx.csv`) and charts
 //!    (`ctx.chart` with a `plot::Chart`), marking adapter-only cells `NEEDS_ADAPTER` when
 //!    `ctx.gpu()` is `None`;
-//! 2. one line in [`SECTIONS`] (before the cost section);
+//! 2. one line in [`MEASURING`] (the sections that run side by side before the cost table);
 //! 3. one `ctx.variants.push(variant::Variant { .. })` per encoding variant (its error, the WGSL and
 //!    timing arguments, the twin's timer): the cost table and the Pareto plots pick them up;
 //! 4. one line per CSV file in `files.rs` documenting its columns.
@@ -35,14 +35,17 @@ mod variant;
 use ctx::{Ctx, Options};
 use prepass::harness::Gpu;
 use std::path::PathBuf;
+use std::sync::Mutex;
 use std::time::Instant;
 
 /// A section of the report: writes into the context, or fails with a message.
 type Section = fn(&mut Ctx) -> Result<(), String>;
 
-/// The report's sections in order; each writes its Markdown, CSV and plots and registers its
-/// encoding variants. The cost table (which measures the registered variants) comes last.
-const SECTIONS: &[(&str, Section)] = &[
+/// The measuring sections, in the report's order; each writes its Markdown, CSV and plots and
+/// registers its encoding variants. They run side by side, one per core (on a CPU adapter most
+/// of their time is the driver compiling their kernels, which takes one thread per kernel),
+/// started from the last: the conforming section, the longest, first.
+const MEASURING: &[(&str, Section)] = &[
     ("depth resolution", depth_resolution::section),
     ("linear depth", linear_depth::section),
     ("24-bit depth", depth24::section),
@@ -50,6 +53,11 @@ const SECTIONS: &[(&str, Section)] = &[
     ("roughness", roughness::section),
     ("light pre-pass (lpp)", lpp::section),
     ("conforming adapters", conforming::section),
+];
+
+/// Then, alone, so that nothing else competes for the cores while it times: the cost table,
+/// which times the registered variants, and the list of files.
+const AFTER: &[(&str, Section)] = &[
     ("error against run time", cost::section),
     ("files", files::section),
 ];
@@ -98,7 +106,7 @@ fn run(ctx: &mut Ctx) -> Result<(), String> {
     let started = Instant::now();
     ctx.line("# prepass error report");
     ctx.line("");
-    let header = match &ctx.gpu {
+    let header = match ctx.gpu.as_ref() {
         Ok(g) => {
             let mut s = format!("- Adapter: {}", g.describe());
             if g.is_software() {
@@ -138,15 +146,59 @@ fn run(ctx: &mut Ctx) -> Result<(), String> {
         "- Regenerate: `bash .ci/errplot` (= `cargo run --release --all-features --bin errplot`)",
     );
     ctx.line("");
-    for (name, section) in SECTIONS {
+    run_side_by_side(ctx, MEASURING)?;
+    for (name, section) in AFTER {
         let t = Instant::now();
         section(ctx).map_err(|e| format!("section {name}: {e}"))?;
-        eprintln!("errplot: {name} ({:.1} s)", t.elapsed().as_secs_f64());
+        ctx.say(&format!(
+            "errplot: {name} ({:.1} s)",
+            t.elapsed().as_secs_f64()
+        ));
     }
     ctx.line(format!(
         "Generated in {:.1} s.",
         started.elapsed().as_secs_f64()
     ));
+    Ok(())
+}
+
+/// Run `sections` on one thread per core, the last first, each into its own part of the
+/// report; the parts are appended in the sections' order (also the ones before a failure, so
+/// the report shows it in context), and the first failure in that order is returned.
+fn run_side_by_side(ctx: &mut Ctx, sections: &[(&str, Section)]) -> Result<(), String> {
+    type Done = (Ctx, Result<(), String>);
+    let todo: Mutex<Vec<(usize, Ctx)>> = Mutex::new(
+        sections
+            .iter()
+            .enumerate()
+            .map(|(i, _)| (i, ctx.fork()))
+            .collect(),
+    );
+    let done: Mutex<Vec<Option<Done>>> = Mutex::new(sections.iter().map(|_| None).collect());
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    std::thread::scope(|scope| {
+        for _ in 0..threads.min(sections.len()) {
+            scope.spawn(|| {
+                loop {
+                    // Its own statement: a `while let` would hold the lock through the section.
+                    let next = todo.lock().unwrap().pop();
+                    let Some((i, mut part)) = next else { break };
+                    let (name, section) = sections[i];
+                    let t = Instant::now();
+                    let result = section(&mut part).map_err(|e| format!("section {name}: {e}"));
+                    part.say(&format!(
+                        "errplot: {name} ({:.1} s)",
+                        t.elapsed().as_secs_f64()
+                    ));
+                    done.lock().unwrap()[i] = Some((part, result));
+                }
+            });
+        }
+    });
+    for (part, result) in done.into_inner().unwrap().into_iter().flatten() {
+        ctx.absorb(part);
+        result?;
+    }
     Ok(())
 }
 

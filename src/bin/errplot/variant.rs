@@ -27,13 +27,17 @@ pub struct Wgsl {
     pub args: Vec<TimedArg>,
 }
 
-/// Times `calls` calls of a Rust twin and returns the elapsed nanoseconds.
-pub type TwinTimer = Box<dyn Fn(usize) -> f64>;
+/// Times `calls` calls of a Rust twin and returns the elapsed nanoseconds (`Send`: the section
+/// that registers it may run on another thread than the cost table that calls it).
+pub type TwinTimer = Box<dyn Fn(usize) -> f64 + Send>;
 
 /// A timer for `f` over `inputs` (a power-of-two count, cycled): the loop is monomorphised for
 /// `f`, so the call inlines as it would in a user's loop; `black_box` on each input and result
 /// keeps the compiler from hoisting or dropping the work.
-pub fn twin_timer<I: Copy + 'static, O>(inputs: Vec<I>, f: impl Fn(I) -> O + 'static) -> TwinTimer {
+pub fn twin_timer<I: Copy + Send + 'static, O>(
+    inputs: Vec<I>,
+    f: impl Fn(I) -> O + Send + 'static,
+) -> TwinTimer {
     assert!(inputs.len().is_power_of_two());
     let mask = inputs.len() - 1;
     Box::new(move |calls| {
