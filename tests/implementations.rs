@@ -87,18 +87,22 @@ fn run_dispatch_on_wgpu(d: Dispatch) -> Output {
 /// Dawn (Tint).
 struct Dawn(RefCell<String>);
 
+/// One Dawn job per dispatch, named by its place.
+fn dawn_jobs(calls: Vec<Dispatch>) -> Vec<dawn::Job> {
+    calls
+        .into_iter()
+        .enumerate()
+        .map(|(i, d)| dawn::Job {
+            name: format!("call {i}"),
+            source: String::new(),
+            dispatch: Some(d),
+        })
+        .collect()
+}
+
 impl Executor for Dawn {
     fn run_all(&self, calls: Vec<Dispatch>) -> Vec<Output> {
-        let jobs = calls
-            .into_iter()
-            .enumerate()
-            .map(|(i, d)| dawn::Job {
-                name: format!("call {i}"),
-                source: String::new(),
-                dispatch: Some(d),
-            })
-            .collect();
-        let (adapter, outcomes) = dawn::run(jobs);
+        let (adapter, outcomes) = dawn::run(dawn_jobs(calls));
         *self.0.borrow_mut() = adapter;
         outcomes
             .into_iter()
@@ -717,16 +721,7 @@ fn dawn_runner_survives_a_crash_and_a_hang() {
         .iter()
         .map(|d| run_dispatch_on_wgpu(d.clone()).into_words())
         .collect();
-    let jobs = dispatches
-        .into_iter()
-        .enumerate()
-        .map(|(i, d)| dawn::Job {
-            name: format!("call {i}"),
-            source: String::new(),
-            dispatch: Some(d),
-        })
-        .collect();
-    let (_, outcomes, restarts) = dawn::run_with_faults(jobs, "crash:2,hang:4");
+    let (_, outcomes, restarts) = dawn::run_with_faults(dawn_jobs(dispatches), "crash:2,hang:4");
     assert_eq!(restarts, 2, "a crash and a hang, each replaced once");
     let got: Vec<Vec<u32>> = outcomes
         .into_iter()
