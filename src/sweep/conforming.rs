@@ -2,7 +2,8 @@
 //! [`crate::conforming::emulate`] and run through the same sweeps as on the adapter itself.
 
 use super::normal::{
-    Codec, DecoderCheck, RoundTrip, decode_codes_with, round_trip, round_trip_with,
+    Codec, DecoderCheck, ROUND_TRIP_FN, RoundTrip, decode_codes_with, round_trip,
+    round_trip_measured, round_trip_source,
 };
 use crate::conforming::{EmulateError, EmulatedKernel, Emulation, emulate};
 use crate::harness::{Arg, Gpu, HarnessError};
@@ -135,16 +136,25 @@ pub fn emulated_codec_sweep(
     inputs: &[[f32; 3]],
     codes: &[u32],
 ) -> Result<EmulatedCodec, HarnessError> {
-    // EmulatedKernel: Upper and Lower share one compiled pipeline per function.
-    let kernel = |f: &str| EmulatedKernel::new(gpu, codec.source, f, emulation);
-    let (encode, decode) = (kernel(codec.encode)?, kernel(codec.decode)?);
-    let (encode, decode) = (
-        |a: &[Arg<'_>], n: u64| Ok(encode.run(a, n)?.0),
-        |a: &[Arg<'_>], n: u64| Ok(decode.run(a, n)?.0),
-    );
-    let rt = round_trip_with(codec, inputs, &encode, &decode)?;
+    // EmulatedKernel: every policy runs one compiled pipeline per function. The round trip is
+    // the encoder and decoder as one function, the one the search of the same codec runs
+    // (`normal::searched_round_trip`), so the two share its pipeline instead of compiling the
+    // encoder alone too; a fixed table or the seeded draw gives each operation the direction
+    // it has in the encoder's or decoder's own module (sites and operands, not the caller).
+    let round_trip_kernel =
+        EmulatedKernel::new(gpu, &round_trip_source(codec), ROUND_TRIP_FN, emulation)?;
+    let decode = EmulatedKernel::new(gpu, codec.source, codec.decode, emulation)?;
+    let (out, _) = round_trip_kernel.run(&[Arg::column(inputs)], inputs.len() as u64)?;
+    let (codes_rt, decoded) = out
+        .as_vec4()
+        .iter()
+        .map(|v| (v[3].to_bits(), [v[0], v[1], v[2]]))
+        .unzip();
+    let rt = round_trip_measured(codec, inputs, codes_rt, decoded);
     let round_trip_length = length_check(&rt.decoded, UNIT_TOLERANCE_CONFORMING);
-    let decoder = decode_codes_with(codec, codes, &decode)?;
+    let decoder = decode_codes_with(codec, codes, &|a: &[Arg<'_>], n: u64| {
+        Ok(decode.run(a, n)?.0)
+    })?;
     let max_code_step = rt
         .codes
         .iter()

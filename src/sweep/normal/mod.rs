@@ -27,7 +27,8 @@ pub use inputs::{adversarial_directions, bad_inputs, fibonacci_directions, strat
 pub use myth::{Myth, killzone_myth};
 pub use optimality::{Optimality, optimality_tolerance_deg, precise_optimality};
 pub use round_trip::{
-    RoundTrip, Runner, UNIT_TOLERANCE, reference_error, round_trip, round_trip_with,
+    RoundTrip, Runner, UNIT_TOLERANCE, reference_error, round_trip, round_trip_measured,
+    round_trip_with,
 };
 pub use searched::{ROUND_TRIP_FN, SearchedRoundTrip, round_trip_source, searched_round_trip};
 pub use unorm::{UnormForms, unorm_forms};

@@ -63,6 +63,24 @@ pub fn round_trip_with(
     let n = inputs.len() as u64;
     let codes = encode(&[Arg::column(inputs)], n)?.into_words();
     let decoded = decode(&[Arg::column(&codes)], n)?.as_vec3().to_vec();
+    Ok(round_trip_measured(codec, inputs, codes, decoded))
+}
+
+/// A round trip already run (the codes an encoder chose for `inputs`, in order, and the
+/// vectors its decoder gave for them), measured as [`round_trip`] measures: against the inputs
+/// and against `codec`'s twins. For runs where encoder and decoder are one function (the
+/// emulated round trip, [`super::round_trip_source`]).
+pub fn round_trip_measured(
+    codec: &Codec,
+    inputs: &[[f32; 3]],
+    codes: Vec<u32>,
+    decoded: Vec<[f32; 3]>,
+) -> RoundTrip {
+    assert_eq!(
+        (codes.len(), decoded.len()),
+        (inputs.len(), inputs.len()),
+        "one code and one decoded vector per input"
+    );
     let parts = par_fold(inputs.len(), |r| {
         let base = r.start as u64;
         let mut e = ErrorStats::default();
@@ -105,7 +123,7 @@ pub fn round_trip_with(
         rt.twin_encode.merge(enc, base);
         rt.twin_decode.merge(dec, base * 3);
     }
-    Ok(rt)
+    rt
 }
 
 /// The f64 reproduction of `codec`'s algorithm on the same inputs: reference encoder, exact
