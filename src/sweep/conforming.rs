@@ -3,7 +3,7 @@
 
 use super::normal::{
     Codec, DecoderCheck, ROUND_TRIP_FN, RoundTrip, decode_codes_with, round_trip,
-    round_trip_measured, round_trip_source,
+    round_trip_measured, round_trip_source, round_trip_with,
 };
 use crate::conforming::{EmulateError, EmulatedKernel, Emulation, emulate};
 use crate::harness::{Arg, Gpu, HarnessError};
@@ -128,7 +128,8 @@ impl EmulatedCodec {
     }
 }
 
-/// Run `codec` under `emulation`: encode and decode `inputs`, and decode `codes`.
+/// Run `codec` under `emulation`: encode and decode `inputs`, and decode `codes`. The encoder
+/// and the decoder run as two kernels (two emulated pipelines to compile).
 pub fn emulated_codec_sweep(
     gpu: &Gpu,
     codec: &Codec,
@@ -136,25 +137,40 @@ pub fn emulated_codec_sweep(
     inputs: &[[f32; 3]],
     codes: &[u32],
 ) -> Result<EmulatedCodec, HarnessError> {
-    // EmulatedKernel: every policy runs one compiled pipeline per function. The round trip is
-    // the encoder and decoder as one function, the one the search of the same codec runs
-    // (`normal::searched_round_trip`), so the two share its pipeline instead of compiling the
-    // encoder alone too; a fixed table or the seeded draw gives each operation the direction
-    // it has in the encoder's or decoder's own module (sites and operands, not the caller).
-    let round_trip_kernel =
-        EmulatedKernel::new(gpu, &round_trip_source(codec), ROUND_TRIP_FN, emulation)?;
+    codec_sweep(gpu, codec, emulation, inputs, codes, false)
+}
+
+/// [`emulated_codec_sweep`]; with `composed`, the round trip runs as the encoder and decoder in
+/// one function ([`round_trip_source`]), the function and pipeline the round-trip search of the
+/// same codec runs, so a caller that searches next compiles the encoder once, not twice (on
+/// lavapipe most of an emulated sweep is compiling). Either way every operation gets the
+/// direction it has in the encoder's or decoder's own module: a fixed table's and the seeded
+/// draw's depend on the operation's site and operands, not on its caller.
+fn codec_sweep(
+    gpu: &Gpu,
+    codec: &Codec,
+    emulation: &Emulation,
+    inputs: &[[f32; 3]],
+    codes: &[u32],
+    composed: bool,
+) -> Result<EmulatedCodec, HarnessError> {
     let decode = EmulatedKernel::new(gpu, codec.source, codec.decode, emulation)?;
-    let (out, _) = round_trip_kernel.run(&[Arg::column(inputs)], inputs.len() as u64)?;
-    let (codes_rt, decoded) = out
-        .as_vec4()
-        .iter()
-        .map(|v| (v[3].to_bits(), [v[0], v[1], v[2]]))
-        .unzip();
-    let rt = round_trip_measured(codec, inputs, codes_rt, decoded);
+    let decode = |a: &[Arg<'_>], n: u64| Ok(decode.run(a, n)?.0);
+    let rt = if composed {
+        let k = EmulatedKernel::new(gpu, &round_trip_source(codec), ROUND_TRIP_FN, emulation)?;
+        let (out, _) = k.run(&[Arg::column(inputs)], inputs.len() as u64)?;
+        let (codes_rt, decoded) = out
+            .as_vec4()
+            .iter()
+            .map(|v| (v[3].to_bits(), [v[0], v[1], v[2]]))
+            .unzip();
+        round_trip_measured(codec, inputs, codes_rt, decoded)
+    } else {
+        let encode = EmulatedKernel::new(gpu, codec.source, codec.encode, emulation)?;
+        round_trip_with(codec, inputs, &|a, n| Ok(encode.run(a, n)?.0), &decode)?
+    };
     let round_trip_length = length_check(&rt.decoded, UNIT_TOLERANCE_CONFORMING);
-    let decoder = decode_codes_with(codec, codes, &|a: &[Arg<'_>], n: u64| {
-        Ok(decode.run(a, n)?.0)
-    })?;
+    let decoder = decode_codes_with(codec, codes, &decode)?;
     let max_code_step = rt
         .codes
         .iter()
@@ -296,7 +312,8 @@ pub fn normal_figures_with(
         // (angle, input index, policy) of each policy's worst round trips.
         let mut pool: Vec<(f64, usize, crate::conforming::Policy)> = Vec::new();
         for &policy in policies {
-            let e = emulated_codec_sweep(gpu, c, &Emulation::new(policy), inputs, &codes)?;
+            let emulation = Emulation::new(policy);
+            let e = codec_sweep(gpu, c, &emulation, inputs, &codes, searched_inputs > 0)?;
             inspect(c, policy, &e);
             let mut worst: Vec<(f64, usize, crate::conforming::Policy)> = inputs
                 .iter()
@@ -440,11 +457,32 @@ pub const SEARCHED_INPUTS: usize = 32;
 
 /// [`LinearFigures`] of every shipped path under each of `policies`, then searched at the
 /// `searched_inputs` inputs those policies erred most on (each policy's `searched_inputs / 2`
-/// worst, pooled).
+/// worst, pooled), with the machine-derived bound.
 pub fn linear_depth_figures(
     gpu: &Gpu,
     policies: &[crate::conforming::Policy],
     searched_inputs: usize,
+) -> Result<Vec<LinearFigures>, HarnessError> {
+    linear_depth_figures_with(gpu, policies, searched_inputs, MachineBound::Derive)
+}
+
+/// Whether [`linear_depth_figures_with`] derives the machine bound (the interval enclosure
+/// over the policies' sample and the searched inputs: about two CPU-seconds per path).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MachineBound {
+    /// Derive it: [`LinearFigures::machine`], `machine_at` and `machine_violations` filled.
+    Derive,
+    /// Leave it out (a report that does not show it): `machine` is NaN, `machine_at` says it
+    /// was not derived, `machine_violations` is empty.
+    Skip,
+}
+
+/// [`linear_depth_figures`], deriving the machine bound or not.
+pub fn linear_depth_figures_with(
+    gpu: &Gpu,
+    policies: &[crate::conforming::Policy],
+    searched_inputs: usize,
+    machine_bound: MachineBound,
 ) -> Result<Vec<LinearFigures>, HarnessError> {
     use super::linear_depth::{PATHS, sampled_worst, searched_worst, worst_inputs};
     use crate::conforming::EmulatedKernel;
@@ -494,6 +532,23 @@ pub fn linear_depth_figures(
                     s.at, s.error, f.how, f.slots, f.evaluated
                 );
             }
+        }
+        if machine_bound == MachineBound::Skip {
+            rows.push(LinearFigures {
+                function: path.function,
+                adapter,
+                emulated,
+                emulated_at,
+                searched,
+                searched_at,
+                searched_slots,
+                machine: f64::NAN,
+                machine_at: "not derived (MachineBound::Skip)".into(),
+                machine_violations: Vec::new(),
+                bound_correctly_rounded: cr,
+                bound_conforming: conf,
+            });
+            continue;
         }
         // The enclosure at every searched input must hold what the emulation gave there.
         let machine_err = |e: crate::conforming::interval::IntervalError| {

@@ -5,7 +5,8 @@
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
 use prepass::conforming::Policy;
 use prepass::sweep::conforming::{
-    SEARCHED_INPUTS, SEARCHED_NORMAL_INPUTS, linear_depth_figures, normal_figures,
+    MachineBound, SEARCHED_INPUTS, SEARCHED_NORMAL_INPUTS, linear_depth_figures_with,
+    normal_figures,
 };
 use prepass::sweep::normal::{CODECS, Codec, adversarial_directions, fibonacci_directions};
 
@@ -33,7 +34,6 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         &Policy::WORST
     };
     let searched = if quick { 8 } else { SEARCHED_INPUTS };
-    let linear = linear_depth_figures(gpu, policies, searched).map_err(|e| e.to_string())?;
     let mut inputs = fibonacci_directions(if quick { 1 << 12 } else { 1 << 18 });
     if !quick {
         inputs.extend(adversarial_directions());
@@ -51,8 +51,23 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         .into_iter()
         .filter(|c| !quick || !(c.name.contains("fast") || c.name.contains("hemi")))
         .collect();
-    let normals = normal_figures(gpu, &codecs, &inputs, normal_policies, normal_searched)
-        .map_err(|e| e.to_string())?;
+    // The two families on two threads: most of each is the driver compiling emulated modules,
+    // one thread per module, and this section is the report's longest.
+    let (linear, normals) = std::thread::scope(|s| {
+        // The report shows no machine-derived bound (tests/linear_depth.rs derives and
+        // publishes it): not derived here.
+        let linear =
+            s.spawn(|| linear_depth_figures_with(gpu, policies, searched, MachineBound::Skip));
+        let normals = normal_figures(gpu, &codecs, &inputs, normal_policies, normal_searched);
+        (
+            linear.join().expect("the linear-depth figures' thread"),
+            normals,
+        )
+    });
+    let (linear, normals) = (
+        linear.map_err(|e| e.to_string())?,
+        normals.map_err(|e| e.to_string())?,
+    );
     let names: Vec<String> = policies.iter().map(Policy::to_string).collect();
     ctx.line(format!(
         "Linear depth over the stiff grid, sampled (`sweep::linear_depth::sampled_worst`); \
