@@ -533,52 +533,14 @@ pub fn linear_depth_figures_with(
                 );
             }
         }
-        if machine_bound == MachineBound::Skip {
-            rows.push(LinearFigures {
-                function: path.function,
-                adapter,
-                emulated,
-                emulated_at,
-                searched,
-                searched_at,
-                searched_slots,
-                machine: f64::NAN,
-                machine_at: "not derived (MachineBound::Skip)".into(),
-                machine_violations: Vec::new(),
-                bound_correctly_rounded: cr,
-                bound_conforming: conf,
-            });
-            continue;
-        }
-        // The enclosure at every searched input must hold what the emulation gave there.
-        let machine_err = |e: crate::conforming::interval::IntervalError| {
-            HarnessError::Shader(format!("{}: interval evaluation: {e}", path.function))
+        let (machine, machine_at, machine_violations) = match machine_bound {
+            MachineBound::Derive => machine_bound_of(path, &found, &pool)?,
+            MachineBound::Skip => (
+                f64::NAN,
+                "not derived (MachineBound::Skip)".into(),
+                Vec::new(),
+            ),
         };
-        let enclosure =
-            crate::conforming::interval::Enclosure::new(crate::wgsl::LINEAR_DEPTH, true)
-                .map_err(machine_err)?;
-        let (mut machine, mut machine_at) =
-            super::linear_depth::machine_worst(path, &enclosure).map_err(machine_err)?;
-        let mut machine_violations = Vec::new();
-        for (f, s) in found.iter().zip(&pool) {
-            let m = super::linear_depth::machine_error(
-                path,
-                &enclosure,
-                s.input_bits,
-                &s.case,
-                &s.consts,
-            )
-            .map_err(machine_err)?;
-            if m > machine {
-                (machine, machine_at) = (m, format!("searched input {}", s.at));
-            }
-            if f.error.max(s.error) > m {
-                machine_violations.push(format!(
-                    "{}: policy {:.3} ULP, search {:.3} ULP, enclosure {m:.3} ULP",
-                    s.at, s.error, f.error
-                ));
-            }
-        }
         rows.push(LinearFigures {
             function: path.function,
             adapter,
@@ -595,4 +557,39 @@ pub fn linear_depth_figures_with(
         });
     }
     Ok(rows)
+}
+
+/// The machine-derived bound of `path` ([`LinearFigures::machine`]): the interval enclosure's
+/// worst over the policies' sample ([`super::linear_depth::machine_worst`]) and at every
+/// searched input, where the emulation's error (a policy's or the search's, `found`) must lie
+/// inside it; the inputs where it does not are returned as violations.
+fn machine_bound_of(
+    path: &super::linear_depth::Path,
+    found: &[crate::conforming::search::Found],
+    pool: &[super::linear_depth::SampledInput],
+) -> Result<(f64, String, Vec<String>), HarnessError> {
+    // The enclosure at every searched input must hold what the emulation gave there.
+    let machine_err = |e: crate::conforming::interval::IntervalError| {
+        HarnessError::Shader(format!("{}: interval evaluation: {e}", path.function))
+    };
+    let enclosure = crate::conforming::interval::Enclosure::new(crate::wgsl::LINEAR_DEPTH, true)
+        .map_err(machine_err)?;
+    let (mut machine, mut machine_at) =
+        super::linear_depth::machine_worst(path, &enclosure).map_err(machine_err)?;
+    let mut machine_violations = Vec::new();
+    for (f, s) in found.iter().zip(pool) {
+        let m =
+            super::linear_depth::machine_error(path, &enclosure, s.input_bits, &s.case, &s.consts)
+                .map_err(machine_err)?;
+        if m > machine {
+            (machine, machine_at) = (m, format!("searched input {}", s.at));
+        }
+        if f.error.max(s.error) > m {
+            machine_violations.push(format!(
+                "{}: policy {:.3} ULP, search {:.3} ULP, enclosure {m:.3} ULP",
+                s.at, s.error, f.error
+            ));
+        }
+    }
+    Ok((machine, machine_at, machine_violations))
 }
