@@ -3,7 +3,7 @@
 
 use super::normal::{
     Codec, DecoderCheck, ROUND_TRIP_FN, RoundTrip, decode_codes_with, round_trip,
-    round_trip_measured, round_trip_source, round_trip_with,
+    round_trip_measured, round_trip_parts, round_trip_source, round_trip_with,
 };
 use crate::conforming::{EmulateError, EmulatedKernel, Emulation, emulate};
 use crate::harness::{Arg, Gpu, HarnessError};
@@ -159,11 +159,7 @@ fn codec_sweep(
     let rt = if composed {
         let k = EmulatedKernel::new(gpu, &round_trip_source(codec), ROUND_TRIP_FN, emulation)?;
         let (out, _) = k.run(&[Arg::column(inputs)], inputs.len() as u64)?;
-        let (codes_rt, decoded) = out
-            .as_vec4()
-            .iter()
-            .map(|v| (v[3].to_bits(), [v[0], v[1], v[2]]))
-            .unzip();
+        let (codes_rt, decoded) = out.as_vec4().iter().map(|&v| round_trip_parts(v)).unzip();
         round_trip_measured(codec, inputs, codes_rt, decoded)
     } else {
         let encode = EmulatedKernel::new(gpu, codec.source, codec.encode, emulation)?;

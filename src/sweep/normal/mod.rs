@@ -30,5 +30,7 @@ pub use round_trip::{
     RoundTrip, Runner, UNIT_TOLERANCE, reference_error, round_trip, round_trip_measured,
     round_trip_with,
 };
-pub use searched::{ROUND_TRIP_FN, SearchedRoundTrip, round_trip_source, searched_round_trip};
+pub use searched::{
+    ROUND_TRIP_FN, SearchedRoundTrip, round_trip_parts, round_trip_source, searched_round_trip,
+};
 pub use unorm::{UnormForms, unorm_forms};

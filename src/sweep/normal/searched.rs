@@ -13,6 +13,11 @@ use crate::precision::metrics::{angle_degrees, widen3};
 /// result carries the decoded direction and the code the encoder chose.
 pub const ROUND_TRIP_FN: &str = "prepass_round_trip";
 
+/// The code and the decoded direction in one result of [`ROUND_TRIP_FN`].
+pub fn round_trip_parts(v: [f32; 4]) -> (u32, [f32; 3]) {
+    (v[3].to_bits(), [v[0], v[1], v[2]])
+}
+
 /// `codec`'s file with [`ROUND_TRIP_FN`] appended.
 pub fn round_trip_source(codec: &Codec) -> String {
     format!(
@@ -63,10 +68,13 @@ pub fn searched_round_trip(
     Ok(found
         .into_iter()
         .zip(out.as_vec4())
-        .map(|(found, v)| SearchedRoundTrip {
-            found,
-            code: v[3].to_bits(),
-            decoded: [v[0], v[1], v[2]],
+        .map(|(found, &v)| {
+            let (code, decoded) = round_trip_parts(v);
+            SearchedRoundTrip {
+                found,
+                code,
+                decoded,
+            }
         })
         .collect())
 }
