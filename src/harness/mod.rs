@@ -382,6 +382,12 @@ impl Output {
         bytemuck::cast_slice(&self.words)
     }
 
+    /// Take the scalar `f32` results (or lanes) without copying them: the words' allocation is
+    /// reused (a sweep's 2^24 results are 64 MiB, and a fresh copy costs its page faults).
+    pub fn into_f32(self) -> Vec<f32> {
+        self.words.into_iter().map(f32::from_bits).collect()
+    }
+
     /// Scalar `u32` results (or lanes).
     pub fn as_u32(&self) -> &[u32] {
         &self.words

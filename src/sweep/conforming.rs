@@ -488,7 +488,7 @@ pub fn linear_depth_figures_with(
         let (cr, conf, _) =
             crate::linear_depth::bounds::of(path.function).expect("every shipped path has a bound");
         let k = gpu.kernel(crate::wgsl::LINEAR_DEPTH, path.function)?;
-        let adapter = sampled_worst(path, &|a, n| Ok(k.run(a, n)?.as_f32().to_vec()))?.0;
+        let adapter = sampled_worst(path, &|a, n| Ok(k.run(a, n)?.into_f32()))?.0;
         let (mut emulated, mut emulated_at) = (0.0f64, String::new());
         let mut pool = Vec::new();
         for &policy in policies {
@@ -498,7 +498,7 @@ pub fn linear_depth_figures_with(
                 path.function,
                 &Emulation::new(policy),
             )?;
-            let run = |a: &[crate::harness::Arg<'_>], n: u64| Ok(k.run(a, n)?.0.as_f32().to_vec());
+            let run = |a: &[crate::harness::Arg<'_>], n: u64| Ok(k.run(a, n)?.0.into_f32());
             let worst = worst_inputs(path, &run, searched_inputs.div_ceil(2))?;
             if let Some(w) = worst.first()
                 && w.error > emulated

@@ -67,7 +67,7 @@ pub fn hyperbolic_all(gpu: &Gpu, source: &str, function: &str) -> Result<Hyperbo
     let out = gpu
         .kernel(source, function)?
         .run(&[Arg::Index { start: 0 }], CODES)?;
-    let values = out.as_f32().to_vec();
+    let values = out.into_f32();
     Ok(measure_hyperbolic(values))
 }
 

@@ -138,7 +138,7 @@ pub fn codes_sweep(
     let out = gpu
         .kernel(source, function)?
         .run(&args, u64::from(DEPTH24_MAX) + 1)?;
-    let got = out.as_f32().to_vec();
+    let got = out.into_f32();
     let exact =
         |i: usize| crate::linear_depth::exact::view_z_from_depth24(i as u32, case.near, case.far);
     let twin_i = twin.map(|t| move |i: usize| t(i as u32));
@@ -190,7 +190,7 @@ pub fn float_sweep(
     let out = gpu
         .kernel(call.source, call.function)?
         .run(&args, depths.len() as u64)?;
-    let got = out.as_f32().to_vec();
+    let got = out.into_f32();
     let exact = |i: usize| match convention {
         _ if subnormal_sky(depths[i], case.far, got[i]) => f64::INFINITY,
         DepthConvention::Standard => {

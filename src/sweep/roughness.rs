@@ -67,7 +67,7 @@ pub fn roundtrip_all_powers(
     let table = gpu
         .kernel(source, decode)?
         .run(&[Arg::Index { start: 0 }, Arg::splat_f32(max_power)], 256)?;
-    let table: Vec<f32> = table.as_f32().to_vec();
+    let table: Vec<f32> = table.into_f32();
     let kernel = gpu.kernel(source, encode)?;
     let n = powers_in(max_power);
     let mut r = RoundTrip {
@@ -159,7 +159,7 @@ pub fn decode_all_codes(gpu: &Gpu, max_power: f32) -> Result<Decoded, HarnessErr
     let out = gpu
         .kernel(crate::wgsl::ROUGHNESS, "decode_log_roughness")?
         .run(&[Arg::Index { start: 0 }, Arg::splat_f32(max_power)], 256)?;
-    let values = out.as_f32().to_vec();
+    let values = out.into_f32();
     let mut ulps = ErrorStats::default();
     for (k, &v) in values.iter().enumerate() {
         ulps.add(
