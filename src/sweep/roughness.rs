@@ -67,7 +67,7 @@ pub fn roundtrip_all_powers(
     let table = gpu
         .kernel(source, decode)?
         .run(&[Arg::Index { start: 0 }, Arg::splat_f32(max_power)], 256)?;
-    let table: Vec<f32> = table.into_f32();
+    let table = table.into_f32();
     let kernel = gpu.kernel(source, encode)?;
     let n = powers_in(max_power);
     let mut r = RoundTrip {
