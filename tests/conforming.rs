@@ -882,6 +882,85 @@ fn identity_reproduces_every_shipped_module_bit_for_bit() {
     );
 }
 
+/// Every [`prepass::conforming::EXACT_FUNCTIONS`] entry is exact on its domain: emulated like
+/// any other function (`Emulation::with_exact_functions_emulated`) under the upper, lower and
+/// seeded policies, it returns the host's result, compared as values (WGSL lets an
+/// implementation ignore the sign of a zero). Domain: the lattices' whole-number codes — every
+/// 8-bit code; at 12 and 16 bits every code with a coordinate at an end of the range or beside
+/// the middle (where the fold and the zero components are) and the other over every value, and
+/// 2^16 seeded codes. The argument for exactness (every value an integer below 2^24) does not
+/// depend on the code, so these codes check it where the values are largest and zero.
+#[test]
+fn exact_functions_are_exact_on_their_domain() {
+    use prepass::conforming::EXACT_FUNCTIONS;
+    use prepass::wgsl::{NORMAL_HEMIOCT, NORMAL_OCT};
+    let codes = |bits: u32| -> Vec<[f32; 2]> {
+        let m = (1u32 << bits) - 1;
+        let mut v: Vec<[u32; 2]> = Vec::new();
+        if bits == 8 {
+            v.extend((0..=m).flat_map(|u| (0..=m).map(move |w| [u, w])));
+        } else {
+            for e in [0, 1, m / 2 - 1, m / 2, m / 2 + 1, m / 2 + 2, m - 1, m] {
+                v.extend((0..=m).flat_map(|o| [[e, o], [o, e]]));
+            }
+            let mut x = 0x21u32 + bits;
+            for _ in 0..1 << 16 {
+                x ^= x << 13;
+                x ^= x >> 17;
+                x ^= x << 5;
+                v.push([(x & 0xffff) % (m + 1), (x >> 16) % (m + 1)]);
+            }
+        }
+        v.into_iter().map(|c| c.map(|k| k as f32)).collect()
+    };
+    let mut checked = Vec::new();
+    for (source, function, bits) in [
+        (NORMAL_OCT, "oct_lattice", 8u32),
+        (NORMAL_OCT, "oct_lattice", 12),
+        (NORMAL_OCT, "oct_lattice", 16),
+        (NORMAL_HEMIOCT, "hemioct_lattice", 12),
+    ] {
+        let c = codes(bits);
+        let m = vec![((1u32 << bits) - 1) as f32; c.len()];
+        let args = if function == "oct_lattice" {
+            vec![Arg::column(&c), Arg::column(&m)]
+        } else {
+            vec![Arg::column(&c)]
+        };
+        let host = run_kernel(source, function, &args, c.len() as u64);
+        for policy in [Policy::Upper, Policy::Lower, Policy::Seeded(1)] {
+            let emulation = Emulation::new(policy).with_exact_functions_emulated();
+            let k = EmulatedKernel::new(gpu(), source, function, &emulation).unwrap();
+            let (out, _) = k.run(&args, c.len() as u64).unwrap();
+            let differ: Vec<usize> = (0..c.len())
+                .filter(|&i| out.as_vec3()[i] != host.as_vec3()[i])
+                .collect();
+            assert!(
+                differ.is_empty(),
+                "{function} at {bits} bits, {policy}: {} of {} codes differ from the host under \
+                 emulation, first {:?}: {:?} against {:?}; it is listed in EXACT_FUNCTIONS as \
+                 exact on its domain",
+                differ.len(),
+                c.len(),
+                differ.first().map(|&i| c[i]),
+                differ.first().map(|&i| out.as_vec3()[i]),
+                differ.first().map(|&i| host.as_vec3()[i]),
+            );
+        }
+        eprintln!(
+            "{function} at {bits} bits: {} codes exact under upper, lower and seeded",
+            c.len()
+        );
+        checked.push(function);
+    }
+    for (f, _) in EXACT_FUNCTIONS {
+        assert!(
+            checked.contains(f),
+            "EXACT_FUNCTIONS lists {f}, which this test does not check"
+        );
+    }
+}
+
 /// `encode_normal_oct32_fast` (`oct_encode_round(n, 16u)`) with every operation at the end
 /// `up` says, from exact arithmetic: sums and products of f32 values are exact in f64 here
 /// (inputs of one magnitude range), each then rounded to the neighbouring f32 in the policy's

@@ -11,7 +11,7 @@ use prepass::harness::Arg;
 use prepass::normal::hemioct;
 use prepass::sweep::normal::{
     adversarial_directions, bad_inputs, codec, decode_range, fibonacci_directions,
-    optimality_tolerance_deg, precise_optimality, reference_error, round_trip,
+    near_tie_directions, optimality_tolerance_deg, precise_optimality, reference_error, round_trip,
 };
 
 #[test]
@@ -130,4 +130,133 @@ fn render_target_form_matches_the_code_path() {
         hemioct::encode_normal_hemioct24,
         hemioct::decode_normal_hemioct24,
     );
+}
+
+/// 2^19 cells of near-tie directions (`sweep::normal::near_tie_directions`), 9 inputs each.
+fn near_ties() -> Vec<[f32; 3]> {
+    near_tie_directions(12, hemioct::M, hemioct::exact::decode, 1 << 19, 0x2112)
+}
+
+/// The precise encoder's WGSL equals the twin bit for bit where two candidates' scores nearly
+/// tie (see `tests/normal_oct.rs`, `precise_encoders_equal_the_twin_at_near_ties`).
+#[test]
+fn precise_encoder_equals_the_twin_at_near_ties() {
+    let inputs = near_ties();
+    let rt = round_trip(gpu(), codec("hemioct24"), &inputs).unwrap();
+    eprintln!("hemioct24: {} near-tie inputs", inputs.len());
+    common::assert_round_trip_matches_twins("hemioct24 near ties", &rt);
+}
+
+/// The encoders before issue 21 (continuous coordinates clamped to `[0, M]` and `floor`
+/// clamped to `M − 1`; the lattice by halving `a ± b`), kept verbatim as the reference the
+/// twins must equal bit for bit; the WGSL equals the twins (the tests above).
+mod replaced {
+    use glam::{IVec3, UVec2, Vec2, Vec3};
+    use prepass::normal::hemioct::{M, sanitize};
+
+    fn continuous(s: Vec3) -> Vec2 {
+        let l1 = (s.x.abs() + s.y.abs()) + s.z;
+        let p = Vec2::new(s.x / l1, s.y / l1);
+        let q = Vec2::new(p.x + p.y, p.x - p.y);
+        (q * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::ONE) * M as f32
+    }
+
+    pub fn lattice(uv: UVec2) -> IVec3 {
+        let m = M as i32;
+        let a = 2 * uv.x as i32 - m;
+        let b = 2 * uv.y as i32 - m;
+        IVec3::new((a + b) / 2, (a - b) / 2, m - a.abs().max(b.abs()))
+    }
+
+    fn sin2(s: Vec3, uv: UVec2) -> f32 {
+        let d = lattice(uv);
+        let ad = d.abs().as_uvec3();
+        let len2 = (ad.x * ad.x + ad.y * ad.y + ad.z * ad.z) as f32;
+        let d = d.as_vec3();
+        let x = Vec3::new(
+            s.y * d.z - s.z * d.y,
+            s.z * d.x - s.x * d.z,
+            s.x * d.y - s.y * d.x,
+        );
+        ((x.x * x.x + x.y * x.y) + x.z * x.z) / len2
+    }
+
+    pub fn encode_precise(n: Vec3) -> u32 {
+        let s = sanitize(n);
+        let c = continuous(s);
+        let base = UVec2::new(
+            (c.x.floor() as u32).min(M - 1),
+            (c.y.floor() as u32).min(M - 1),
+        );
+        let mut best = base;
+        let mut best_s2 = sin2(s, base);
+        for k in 1..4u32 {
+            let cand = base + UVec2::new(k & 1, k >> 1);
+            let s2 = sin2(s, cand);
+            if s2 < best_s2 {
+                best = cand;
+                best_s2 = s2;
+            }
+        }
+        best.x | (best.y << 12)
+    }
+
+    pub fn encode_round(n: Vec3) -> u32 {
+        let c = continuous(sanitize(n));
+        (c.x.round_ties_even() as u32) | ((c.y.round_ties_even() as u32) << 12)
+    }
+}
+
+/// Issue 21's encoders (continuous coordinates stopping below M, no clamp of `floor`, the
+/// lattice as `(u + v − M, u − v, M − |x| − |y|)`) return the codes of the ones they replaced
+/// for every input tried: the 2^24 Fibonacci directions (both hemispheres: z < 0 is clamped),
+/// the adversarial set, the bad inputs, 2^22 random vectors in [−1, 1]^3, 2^22 random f32 bit
+/// patterns and the near-tie directions; and the lattice equals the old one on all 2^24 codes.
+/// CPU only (no adapter): the twins.
+#[test]
+fn encoders_equal_the_ones_they_replaced() {
+    let mut rng = 0x21_u64;
+    let mut next = || {
+        rng = rng.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = rng;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    };
+    let unit = |x: u64| (x >> 40) as f32 / (1u64 << 23) as f32 - 1.0;
+    let (mut cube, mut raw) = (Vec::new(), Vec::new());
+    for _ in 0..1 << 22 {
+        let w = [next(), next()];
+        cube.push([unit(w[0]), unit(w[0] << 24), unit(w[1])]);
+        raw.push([w[0] as u32, (w[0] >> 32) as u32, w[1] as u32].map(f32::from_bits));
+    }
+    let bad: Vec<[f32; 3]> = bad_inputs().iter().map(|c| c.0).collect();
+    let sets: [(&str, Vec<[f32; 3]>); 6] = [
+        ("fibonacci 2^24", fibonacci_directions(1 << 24)),
+        ("adversarial", adversarial_directions()),
+        ("bad inputs", bad),
+        ("random cube 2^22", cube),
+        ("random bits 2^22", raw),
+        ("near ties", near_ties()),
+    ];
+    for (set, inputs) in &sets {
+        let differ: Vec<usize> = (0..inputs.len())
+            .filter(|&i| {
+                let v = glam::Vec3::from(inputs[i]);
+                hemioct::encode_normal_hemioct24(v) != replaced::encode_precise(v)
+                    || hemioct::encode_normal_hemioct24_fast(v) != replaced::encode_round(v)
+            })
+            .collect();
+        assert!(
+            differ.is_empty(),
+            "{set}: {} inputs encode differently, first {:?} ({:?})",
+            differ.len(),
+            differ.first(),
+            differ.first().map(|&i| inputs[i])
+        );
+    }
+    for p in 0u32..1 << 24 {
+        let uv = glam::UVec2::new(p & 0xfff, p >> 12);
+        assert_eq!(hemioct::lattice(uv), replaced::lattice(uv), "code {p:#x}");
+    }
 }

@@ -40,53 +40,45 @@ fn hemioct_sanitize(n: vec3<f32>) -> vec3<f32> {
     return select(s, bitcast<vec3<f32>>(sb & vec3<u32>(0x80000000u)), s_sub);
 }
 
-// Continuous code coordinates in [0, M]^2: p = s.xy / (|x| + |y| + z), rotated (p.x + p.y,
-// p.x - p.y); x * 0.5 is exact, so fusing the add cannot change the sum.
+// Continuous code coordinates in [0, M)^2: p = s.xy / (|x| + |y| + z), rotated (p.x + p.y,
+// p.x - p.y); x * 0.5 is exact, so fusing the add cannot change the sum. The clamp stops at
+// 1 - 2^-23, as oct_continuous's does: floor() stays below M whichever way the scaling rounds.
 fn hemioct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
     let l1 = (abs(s.x) + abs(s.y)) + s.z;
     let p = s.xy / l1;
     let q = vec2<f32>(p.x + p.y, p.x - p.y);
-    return clamp(q * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(1.0)) * f32(m);
+    return clamp(q * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(0.99999988079071044921875)) * f32(m);
 }
-
-// The exact integer direction D that code (u, v) stands for (see the header). a and b are odd,
-// so a + b and a - b are even and the arithmetic shift halves them exactly.
-fn hemioct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
-    let mi = i32(m);
-    let ab = bitcast<vec2<i32>>(uv + uv) - vec2<i32>(mi);
-    let h = (ab * vec2<i32>(1, -1) + ab.yx) >> vec2<u32>(1u);
-    let aab = abs(ab);
-    return vec3<i32>(h, mi - max(aab.x, aab.y));
+// The integer direction D that code c (whole numbers, in f32) stands for (see the header):
+// ((a + b)/2, (a - b)/2) = (u + v - M, u - v), and M - max(|a|, |b|) = M - |D.x| - |D.y|.
+// Every value is an integer below 2^14, so every operation is exact on any conforming adapter.
+fn hemioct_lattice(c: vec2<f32>) -> vec3<f32> {
+    let h = mat2x2<f32>(1.0, 1.0, 1.0, -1.0) * c - vec2<f32>(4095.0, 0.0);
+    return vec3<f32>(h, 4095.0 - dot(abs(h), vec2<f32>(1.0)));
 }
-
 // One step of the precise encoder's choice, as normal_oct.wgsl's oct_try: the code c00 + off
-// replaces the best so far (code in xy, score bits in z) only if its score, sin^2 of the angle
-// to s times |s|^2, is strictly smaller (compared as floats, as there).
-fn hemioct_try(s: vec3<f32>, m: u32, c00: vec2<u32>, off: vec2<u32>, best: vec3<u32>) -> vec3<u32> {
+// replaces the best so far (code in xy, score in z) only if its score, sin^2 of the angle to s
+// times |s|^2, is strictly smaller. |D|^2 <= M^2 < 2^24, so its float dot is exact.
+fn hemioct_try(s: vec3<f32>, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -> vec3<f32> {
     let c = c00 + off;
-    let d = hemioct_lattice(c, m);
-    // |D|^2 <= M^2: exact in u32 (squares of the two's-complement bits, mod 2^32), one rounding.
-    let du = bitcast<vec3<u32>>(d);
-    let sq = du * du;
-    let x = cross(s, vec3<f32>(d));
-    let score = dot(x, x) / f32(sq.x + sq.y + sq.z);
-    return select(best, vec3<u32>(c, bitcast<u32>(score)), score < bitcast<f32>(best.z));
+    let d = hemioct_lattice(c);
+    let x = cross(s, d);
+    let score = dot(x, x) / dot(d, d);
+    return select(best, vec3<f32>(c, score), score < best.z);
 }
-
 // Precise: the best of the four codes around the continuous coordinates, tried in the order
 // (0,0), (1,0), (0,1), (1,1), a later one winning only if strictly closer ((0,0) always
-// replaces the +inf start). Straight-line (no loop, no variables).
+// replaces the start: every score is below 48). Straight-line (no loop, no variables).
 fn encode_normal_hemioct24(n: vec3<f32>) -> u32 {
-    let m = 4095u;
     let s = hemioct_sanitize(n);
-    let c00 = min(vec2<u32>(floor(hemioct_continuous(s, m))), vec2<u32>(m - 1u));
-    let b0 = hemioct_try(s, m, c00, vec2<u32>(0u, 0u), vec3<u32>(0u, 0u, 0x7f800000u));
-    let b1 = hemioct_try(s, m, c00, vec2<u32>(1u, 0u), b0);
-    let b2 = hemioct_try(s, m, c00, vec2<u32>(0u, 1u), b1);
-    let best = hemioct_try(s, m, c00, vec2<u32>(1u, 1u), b2);
-    return best.x | (best.y << 12u);
+    let c00 = floor(hemioct_continuous(s, 4095u));
+    let b0 = hemioct_try(s, c00, vec2<f32>(0.0, 0.0), vec3<f32>(0.0, 0.0, 3.0e38));
+    let b1 = hemioct_try(s, c00, vec2<f32>(1.0, 0.0), b0);
+    let b2 = hemioct_try(s, c00, vec2<f32>(0.0, 1.0), b1);
+    let best = hemioct_try(s, c00, vec2<f32>(1.0, 1.0), b2);
+    let uv = vec2<u32>(best.xy);
+    return uv.x | (uv.y << 12u);
 }
-
 // Rounding encoder: nearest code per axis (round half to even).
 fn encode_normal_hemioct24_fast(n: vec3<f32>) -> u32 {
     let uv = vec2<u32>(round(hemioct_continuous(hemioct_sanitize(n), 4095u)));
@@ -96,7 +88,7 @@ fn encode_normal_hemioct24_fast(n: vec3<f32>) -> u32 {
 // The unit vector (z >= 0) of a 2x12-bit hemi-oct code; bits 24-31 are ignored.
 fn decode_normal_hemioct24(p: u32) -> vec3<f32> {
     let uv = vec2<u32>(p & 0xfffu, (p >> 12u) & 0xfffu);
-    return normalize(vec3<f32>(hemioct_lattice(uv, 4095u)));
+    return normalize(hemioct_lattice(vec2<f32>(uv)));
 }
 
 // Render-target form: rgba8unorm channels (alpha 0, free for the material); the decode rounds

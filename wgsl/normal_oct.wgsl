@@ -47,8 +47,11 @@ fn oct_sanitize(n: vec3<f32>) -> vec4<f32> {
     return vec4<f32>(select(s, bitcast<vec3<f32>>(sb & vec3<u32>(0x80000000u)), s_sub), 1.0);
 }
 
-// The continuous code coordinates in [0, M]^2 of a sanitized vector (before rounding).
-fn oct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
+// The continuous code coordinates in [0, M)^2 of a sanitized vector (before rounding), M as an
+// f32. The clamp stops two ULPs below 1, so t * M stays below M whichever way a conforming
+// multiply rounds (for M < 2^24): floor() is then at most M - 1, and the precise encoder's
+// candidates floor + 1 stay codes without a clamp of their own. Rounding still gives M there.
+fn oct_continuous(s: vec3<f32>, m: f32) -> vec2<f32> {
     let a = abs(s);
     let l1 = (a.x + a.y) + a.z;
     var p = s.xy / l1;
@@ -57,61 +60,82 @@ fn oct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
         let sgn = select(vec2<f32>(-1.0), vec2<f32>(1.0), p >= vec2<f32>(0.0));
         p = (vec2<f32>(1.0) - abs(p.yx)) * sgn;
     }
-    // p * 0.5 is exact, so fusing the add cannot change the sum.
-    let t = clamp(p * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(1.0));
-    return t * f32(m);
+    // p * 0.5 is exact, so fusing the add cannot change the sum. 0.99999988... = 1 - 2^-23.
+    let t = clamp(p * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(0.99999988079071044921875));
+    return t * m;
 }
 
-// The exact integer direction code (u, v) stands for (see the header); its L1 norm is M.
-// Branch-free: the fold is a select between exact integer vectors. w = (M - |b|, M - |a|) are
-// the folded magnitudes, and w - |(a, b)| holds z = M - |a| - |b| in both lanes, so the fold
-// test needs no splat.
-fn oct_lattice(uv: vec2<u32>, m: u32) -> vec3<i32> {
-    let mv = vec2<i32>(i32(m));
-    let ab = bitcast<vec2<i32>>(uv + uv) - mv;
-    let aab = abs(ab);
-    let w = mv - aab.yx;
-    let z = w - aab;
-    // Folded when z < 0: then a and b are odd (M is odd), never zero, so sign() is +-1.
-    return vec3<i32>(select(ab, w * sign(ab), z < vec2<i32>(0)), z.x);
+// The integer direction D that code c (whole numbers, in f32) stands for (see the header), in
+// f32: every value is an integer below 2^17, so every operation is exact on any conforming
+// adapter, fused or not. z = M - |a| - |b|; when z < 0 the code is folded, and then
+// |D.xy| = (M - |b|, M - |a|) = |(a, b)| + z. a and b are odd (M is odd), so sign() is +-1.
+fn oct_lattice(c: vec2<f32>, m: f32) -> vec3<f32> {
+    let ab = (c + c) - vec2<f32>(m);
+    let z = m - dot(abs(ab), vec2<f32>(1.0));
+    return vec3<f32>(ab + sign(ab) * min(z, 0.0), z);
 }
 
 // One step of the precise encoder's choice: the code c00 + off, scored by sin^2 of the angle
 // between s and its direction D (|s x D|^2 / |D|^2, up to the common factor |s|^2), replaces
-// the best so far (code in xy, score bits in z) only if its score is strictly smaller. Sine,
-// not cosine: at oct32's 2e-5 rad a cosine is 1.0 in f32. Compared as floats: a conforming
-// division may return a tiny negative for an exact 0. One function for the score and the
-// step: the four candidates share its code.
-fn oct_try(s: vec3<f32>, m: u32, c00: vec2<u32>, off: vec2<u32>, best: vec3<u32>) -> vec3<u32> {
+// the best so far (code in xy, score in z) only if its score is strictly smaller. Sine, not
+// cosine: at oct32's 2e-5 rad a cosine is 1.0 in f32. One function for the score and the step:
+// the four candidates share its code. |D|^2 as a float dot is exact while M^2 < 2^24 (8 and
+// 12 bits per axis: integer squares and sums below 2^24), so it is the once-rounded |D|^2.
+fn oct_try(s: vec3<f32>, m: f32, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -> vec3<f32> {
     let c = c00 + off;
     let d = oct_lattice(c, m);
-    // |D|^2 <= M^2 < 2^32: exact in u32 (the squares of the two's-complement bits, mod 2^32,
-    // are those of |D|), one rounding to f32.
-    let du = bitcast<vec3<u32>>(d);
-    let sq = du * du;
-    let x = cross(s, vec3<f32>(d));
-    let score = dot(x, x) / f32(sq.x + sq.y + sq.z);
-    return select(best, vec3<u32>(c, bitcast<u32>(score)), score < bitcast<f32>(best.z));
+    let x = cross(s, d);
+    let score = dot(x, x) / dot(d, d);
+    return select(best, vec3<f32>(c, score), score < best.z);
 }
 
-// The survey's precise encoder: of the four codes around the continuous coordinates (floor and
-// floor + 1 per axis), the one whose decoded direction is closest to s. Candidates are tried in
-// the order (0,0), (1,0), (0,1), (1,1); a later one wins only if strictly closer, and (0,0)
-// always replaces the +inf start. Straight-line (no loop, no variables).
+// oct_try for 16 bits per axis, where |D|^2 (up to M^2 < 2^32) needs 32 bits: summed exactly in
+// u32 and rounded once, as the narrower codes' dot is. A float dot would round each square and
+// could flip a near-tie.
+fn oct_try_wide(s: vec3<f32>, m: f32, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -> vec3<f32> {
+    let c = c00 + off;
+    let d = oct_lattice(c, m);
+    let x = cross(s, d);
+    let q = vec3<u32>(abs(d));
+    let sq = q * q;
+    let score = dot(x, x) / f32(sq.x + sq.y + sq.z);
+    return select(best, vec3<f32>(c, score), score < best.z);
+}
+
+// The survey's precise encoder, 8 or 12 bits per axis: of the four codes around the continuous
+// coordinates (floor and floor + 1 per axis), the one whose decoded direction is closest to s.
+// Candidates are tried in the order (0,0), (1,0), (0,1), (1,1); a later one wins only if
+// strictly closer, and (0,0) always replaces the start (every score is below 48, |s|^2's
+// bound). Straight-line (no loop, no variables); codes are whole f32 until the last line.
 fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
-    let m = (1u << bits) - 1u;
+    let m = f32((1u << bits) - 1u);
     let s = oct_sanitize(n).xyz;
-    let c00 = min(vec2<u32>(floor(oct_continuous(s, m))), vec2<u32>(m - 1u));
-    let b0 = oct_try(s, m, c00, vec2<u32>(0u, 0u), vec3<u32>(0u, 0u, 0x7f800000u));
-    let b1 = oct_try(s, m, c00, vec2<u32>(1u, 0u), b0);
-    let b2 = oct_try(s, m, c00, vec2<u32>(0u, 1u), b1);
-    let best = oct_try(s, m, c00, vec2<u32>(1u, 1u), b2);
-    return best.x | (best.y << bits);
+    let c00 = floor(oct_continuous(s, m));
+    let b0 = oct_try(s, m, c00, vec2<f32>(0.0, 0.0), vec3<f32>(0.0, 0.0, 3.0e38));
+    let b1 = oct_try(s, m, c00, vec2<f32>(1.0, 0.0), b0);
+    let b2 = oct_try(s, m, c00, vec2<f32>(0.0, 1.0), b1);
+    let best = oct_try(s, m, c00, vec2<f32>(1.0, 1.0), b2);
+    let uv = vec2<u32>(best.xy);
+    return uv.x | (uv.y << bits);
+}
+
+// oct_encode_precise at 16 bits per axis, with oct_try_wide's exact |D|^2 (WGSL has no
+// generics, so the four calls are written again).
+fn oct_encode_precise_wide(n: vec3<f32>) -> u32 {
+    let m = 65535.0;
+    let s = oct_sanitize(n).xyz;
+    let c00 = floor(oct_continuous(s, m));
+    let b0 = oct_try_wide(s, m, c00, vec2<f32>(0.0, 0.0), vec3<f32>(0.0, 0.0, 3.0e38));
+    let b1 = oct_try_wide(s, m, c00, vec2<f32>(1.0, 0.0), b0);
+    let b2 = oct_try_wide(s, m, c00, vec2<f32>(0.0, 1.0), b1);
+    let best = oct_try_wide(s, m, c00, vec2<f32>(1.0, 1.0), b2);
+    let uv = vec2<u32>(best.xy);
+    return uv.x | (uv.y << 16u);
 }
 
 // The plain rounding encoder: nearest code per axis (round half to even).
 fn oct_encode_round(n: vec3<f32>, bits: u32) -> u32 {
-    let m = (1u << bits) - 1u;
+    let m = f32((1u << bits) - 1u);
     let uv = vec2<u32>(round(oct_continuous(oct_sanitize(n).xyz, m)));
     return uv.x | (uv.y << bits);
 }
@@ -120,7 +144,7 @@ fn oct_encode_round(n: vec3<f32>, bits: u32) -> u32 {
 fn oct_decode(p: u32, bits: u32) -> vec3<f32> {
     let m = (1u << bits) - 1u;
     let uv = vec2<u32>(p & m, (p >> bits) & m);
-    return normalize(vec3<f32>(oct_lattice(uv, m)));
+    return normalize(oct_lattice(vec2<f32>(uv), f32(m)));
 }
 
 // Byte k of the u32 from a unorm8 channel: round(255 c) after clamping; NaN counts as 0.
@@ -178,7 +202,7 @@ fn decode_normal_oct24_unorm(c: vec4<f32>) -> vec3<f32> {
 // ---- 2 x 16 bits (a whole RGBA8 texel, or RG16) ----
 // The 2x16-bit code whose direction is closest to n: u in bits 0-15, v in bits 16-31.
 fn encode_normal_oct32(n: vec3<f32>) -> u32 {
-    return oct_encode_precise(n, 16u);
+    return oct_encode_precise_wide(n);
 }
 // The 2x16-bit code by rounding each axis: cheaper, not always the closest direction.
 fn encode_normal_oct32_fast(n: vec3<f32>) -> u32 {

@@ -119,7 +119,7 @@ fn oct_continuous(s: Vec3, m: f32) -> Vec2 {
         if neg { folded.x } else { p.x },
         if neg { folded.y } else { p.y },
     );
-    let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::ONE);
+    let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(oct::CONTINUOUS_TOP));
     t * m
 }
 
@@ -180,11 +180,12 @@ fn sin2(s: Vec3, d: [i32; 3]) -> f32 {
 }
 
 /// The four-candidate selection of the precise encoders: of `base + {0,1}²` in the order
-/// `(0,0), (1,0), (0,1), (1,1)`, the first with the strictly smallest score.
+/// `(0,0), (1,0), (0,1), (1,1)`, the first with the strictly smallest score. `base = floor(c)`
+/// is below M (the continuous coordinates stop below M), so every candidate is a code.
 #[inline(always)]
-fn best_of_four(s: Vec3, c: Vec2, m: u32, lattice: impl Fn(u32, u32) -> [i32; 3]) -> (u32, u32) {
-    let bx = floor_small(c.x).min(m.wrapping_sub(1));
-    let by = floor_small(c.y).min(m.wrapping_sub(1));
+fn best_of_four(s: Vec3, c: Vec2, lattice: impl Fn(u32, u32) -> [i32; 3]) -> (u32, u32) {
+    let bx = floor_small(c.x);
+    let by = floor_small(c.y);
     let (mut best_x, mut best_y) = (bx, by);
     let mut best_s2 = sin2(s, lattice(bx, by));
     for k in 1..4u32 {
@@ -211,7 +212,7 @@ pub(crate) fn floor_small(c: f32) -> u32 {
 fn oct_precise_lane(n: Vec3, bits: u32, m: u32) -> u32 {
     let s = sanitize_or_z(n);
     let c = oct_continuous(s, m as f32);
-    let (u, v) = best_of_four(s, c, m, |u, v| oct_lattice(u, v, m as i32));
+    let (u, v) = best_of_four(s, c, |u, v| oct_lattice(u, v, m as i32));
     u | (v << bits)
 }
 
@@ -251,14 +252,14 @@ fn hemioct_continuous(s: Vec3) -> Vec2 {
     let l1 = (s.x.abs() + s.y.abs()) + s.z;
     let p = Vec2::new(s.x / l1, s.y / l1);
     let q = Vec2::new(p.x + p.y, p.x - p.y);
-    (q * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::ONE) * hemioct::M as f32
+    (q * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(oct::CONTINUOUS_TOP)) * hemioct::M as f32
 }
 
 #[inline(always)]
 fn hemioct_precise_lane(n: Vec3) -> u32 {
     let s = hemioct_sanitize(n);
     let c = hemioct_continuous(s);
-    let (u, v) = best_of_four(s, c, hemioct::M, hemioct_lattice);
+    let (u, v) = best_of_four(s, c, hemioct_lattice);
     u | (v << 12)
 }
 

@@ -100,6 +100,19 @@
 //! `m * v` and `v * m` are rewritten as one inherited `dot` per result lane (a row of `m`, or
 //! a column, with `v`), so every product and sum of them has the freedoms of `dot`.
 //!
+//! # Exact functions
+//! The functions in [`EXACT_FUNCTIONS`] (the octahedral codes' lattices) are left as they are:
+//! on the arguments the shipped code passes them every f32 value they compute is an integer of
+//! magnitude below 2^24, so every operation (`+ − ×` correctly rounded, `dot` and `m * v`
+//! inherited from them, `abs`, `sign`, `min`) is exact on every conforming adapter, up to the
+//! sign of a zero, which WGSL lets implementations ignore and no caller of theirs depends on.
+//! Emulating them only costs compile time: the emulated normal modules took lavapipe 177 s
+//! rather than 85 s to compile and run in `tests/conforming.rs`'s
+//! `every_normal_encoding_under_emulation`. `tests/conforming.rs`
+//! (`exact_functions_are_exact_on_their_domain`) emulates them anyway
+//! ([`Emulation::with_exact_functions_emulated`]) under the upper, lower and seeded policies on
+//! their domain and fails unless every result equals the host's.
+//!
 //! # Not emulated
 //! Left at the host's accuracy, and listed in [`Emulated::uncovered`] when a module uses them:
 //! trigonometric and hyperbolic functions, `smoothstep`, `refract`, `faceForward`, `%` on f32,
@@ -275,6 +288,22 @@ pub mod allowance {
     }
 }
 
+/// Functions every conforming adapter evaluates exactly on the arguments the shipped code
+/// passes them, which the emulation therefore leaves as they are (see the module docs, "Exact
+/// functions"), each with its reason.
+pub const EXACT_FUNCTIONS: &[(&str, &str)] = &[
+    (
+        "oct_lattice",
+        "wgsl/normal_oct.wgsl: called with whole-number codes c <= M and M = 2^N - 1 <= 65535, \
+         every value it computes is an integer of magnitude below 2^17",
+    ),
+    (
+        "hemioct_lattice",
+        "wgsl/normal_hemioct.wgsl: called with whole-number codes c <= 4095, every value it \
+         computes is an integer of magnitude below 2^14",
+    ),
+];
+
 /// What to emulate.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Emulation {
@@ -284,15 +313,33 @@ pub struct Emulation {
     pub freedoms: Freedoms,
     /// The host adapter's own error.
     pub host: HostAccuracy,
+    /// Whether [`EXACT_FUNCTIONS`] are emulated too (only to check that they are exact).
+    pub emulate_exact: bool,
 }
 
 impl Emulation {
-    /// Every freedom, lavapipe's host accuracy.
+    /// Every freedom, lavapipe's host accuracy, [`EXACT_FUNCTIONS`] left as they are.
     pub fn new(policy: Policy) -> Self {
         Emulation {
             policy,
             freedoms: Freedoms::ALL,
             host: HostAccuracy::default(),
+            emulate_exact: false,
+        }
+    }
+
+    /// [`EXACT_FUNCTIONS`] emulated like every other function: what the check that they are
+    /// exact compares with the host.
+    pub fn with_exact_functions_emulated(mut self) -> Self {
+        self.emulate_exact = true;
+        self
+    }
+
+    fn exact_functions(&self) -> Vec<&'static str> {
+        if self.emulate_exact {
+            Vec::new()
+        } else {
+            EXACT_FUNCTIONS.iter().map(|(f, _)| *f).collect()
         }
     }
 
@@ -413,7 +460,8 @@ fn parse(
 pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateError> {
     // Pass 1: which vector wrappers the module needs, and the parameter lists of its functions.
     let (m1, i1) = parse(source, "the source")?;
-    let plan1 = rewrite::plan(&m1, &i1);
+    let exact = emulation.exact_functions();
+    let plan1 = rewrite::plan(&m1, &i1, &exact);
     let mut text = String::with_capacity(source.len() + CORE_WGSL.len() + 4096);
     // Helpers first: a call may only reach a function earlier in naga's arena, and the front
     // end keeps source order where no dependency decides it.
@@ -503,7 +551,7 @@ pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateE
     }
     // Pass 2: the same plan on the combined module (its own handles), applied.
     let (mut m2, i2) = parse(&text, "the module with the helper library")?;
-    let plan2 = rewrite::plan(&m2, &i2);
+    let plan2 = rewrite::plan(&m2, &i2, &exact);
     let sites = rewrite::apply(&mut m2, &plan2).map_err(EmulateError)?;
     let info = naga::valid::Validator::new(
         naga::valid::ValidationFlags::all(),

@@ -616,11 +616,14 @@ fn function_key(module: &Module, f: &Function, entry: Option<usize>) -> String {
 }
 
 /// Find every site in the module's functions and entry points (the emulation's own helpers
-/// excepted).
-pub fn plan(module: &Module, info: &naga::valid::ModuleInfo) -> Plan {
+/// excepted, and the functions named in `exact`, left as they are).
+pub fn plan(module: &Module, info: &naga::valid::ModuleInfo, exact: &[&str]) -> Plan {
     let mut plan = Plan::default();
     let visit = |f: &Function, fi: &naga::valid::FunctionInfo, key: String, plan: &mut Plan| {
-        if f.name.as_deref().is_some_and(|n| n.starts_with(PREFIX)) {
+        if f.name
+            .as_deref()
+            .is_some_and(|n| n.starts_with(PREFIX) || exact.contains(&n))
+        {
             return;
         }
         let mut live = HashSet::new();

@@ -12,7 +12,7 @@
 //! point of the hemisphere, on the equator), so `(0, 0, −1)` becomes the zero vector and encodes `+z`.
 
 use super::normalize;
-use glam::{IVec3, UVec2, Vec2, Vec3};
+use glam::{IVec2, IVec3, UVec2, Vec2, Vec3};
 
 /// Largest code per axis, `2^12 − 1`.
 pub const M: u32 = 4095;
@@ -20,7 +20,7 @@ pub const M: u32 = 4095;
 /// The input made safe, step for step as the WGSL's `hemioct_sanitize`: NaN → `+z`; subnormal
 /// components → signed zero; infinities → their signs; `z` clamped to `[0, ∞)`; zero → `+z`;
 /// then an exact power-of-two scale putting the largest component in `[1, 4)`.
-fn sanitize(n: Vec3) -> Vec3 {
+pub fn sanitize(n: Vec3) -> Vec3 {
     let c = n.to_array();
     if c.iter().any(|x| x.is_nan()) {
         return Vec3::Z;
@@ -30,20 +30,23 @@ fn sanitize(n: Vec3) -> Vec3 {
     super::scale_to_unit_range(c).unwrap_or(Vec3::Z)
 }
 
-/// Continuous code coordinates in `[0, M]²` (as the WGSL computes them).
+/// Continuous code coordinates in `[0, M)²` (as the WGSL computes them); the clamp stops at
+/// [`oct::CONTINUOUS_TOP`](super::oct::CONTINUOUS_TOP), so `floor` stays below `M` (see
+/// [`oct::continuous`](super::oct::continuous)).
 pub fn continuous(s: Vec3) -> Vec2 {
     let l1 = (s.x.abs() + s.y.abs()) + s.z;
     let p = Vec2::new(s.x / l1, s.y / l1);
     let q = Vec2::new(p.x + p.y, p.x - p.y);
-    (q * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::ONE) * M as f32
+    (q * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(super::oct::CONTINUOUS_TOP)) * M as f32
 }
 
-/// The exact integer vector code `(u, v)` stands for.
+/// The exact integer vector code `(u, v)` stands for, by the WGSL's formula (there in f32,
+/// exact): `((a + b)/2, (a − b)/2) = (u + v − M, u − v)`, and
+/// `M − max(|a|, |b|) = M − |D.x| − |D.y|`.
 pub fn lattice(uv: UVec2) -> IVec3 {
-    let m = M as i32;
-    let a = 2 * uv.x as i32 - m;
-    let b = 2 * uv.y as i32 - m;
-    IVec3::new((a + b) / 2, (a - b) / 2, m - a.abs().max(b.abs()))
+    let (u, v, m) = (uv.x as i32, uv.y as i32, M as i32);
+    let h = IVec2::new(u + v - m, u - v);
+    h.extend(m - h.abs().element_sum())
 }
 
 fn sin2(s: Vec3, uv: UVec2) -> f32 {
@@ -56,10 +59,8 @@ fn sin2(s: Vec3, uv: UVec2) -> f32 {
 pub fn encode_normal_hemioct24(n: Vec3) -> u32 {
     let s = sanitize(n);
     let c = continuous(s);
-    let base = UVec2::new(
-        (c.x.floor() as u32).min(M - 1),
-        (c.y.floor() as u32).min(M - 1),
-    );
+    // c < M (see `continuous`), so base + 1 ≤ M.
+    let base = UVec2::new(c.x.floor() as u32, c.y.floor() as u32);
     let mut best = base;
     let mut best_s2 = sin2(s, base);
     for k in 1..4u32 {

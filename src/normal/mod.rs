@@ -126,8 +126,9 @@ pub(crate) fn normalize(v: Vec3) -> Vec3 {
 
 /// The precise encoders' score of a candidate code with exact integer direction `d`:
 /// `|s × D|² / |D|²` (sin² of the angle between `s` and `D`, times `|s|²`), as the WGSL
-/// computes it: `|D|²` exact in integers, then one conversion; the cross product and `dot`
-/// rounded per operation.
+/// computes it: `|D|²` exact, then one rounding (the WGSL's float `dot(d, d)` is exact while
+/// `M² < 2^24`, i.e. at 8 and 12 bits; `oct_try_wide` sums 16-bit codes' squares in `u32`); the
+/// cross product and `dot` rounded per operation.
 pub(crate) fn sin2_to(s: Vec3, d: glam::IVec3) -> f32 {
     let ad = d.abs().as_uvec3();
     let sq = ad * ad;

@@ -39,9 +39,17 @@ pub const fn max_code(bits: u32) -> u32 {
     (1 << bits) - 1
 }
 
-/// The continuous code coordinates in `[0, M]²` of a sanitized vector: its octahedral projection
+/// The continuous code coordinates in `[0, M)²` of a sanitized vector: its octahedral projection
 /// `s.xy / (|x| + |y| + |z|)`, folded when `s.z < 0` (the sign of ±0 counts as +), mapped by
-/// `(p/2 + 1/2)·M`. As the WGSL computes it, operation for operation.
+/// `(p/2 + 1/2)·M` with `p/2 + 1/2` clamped to `[0, 1 − 2^-23]`. As the WGSL computes it,
+/// operation for operation.
+///
+/// The clamp's top, two ULPs below 1, keeps `t·M` below `M` whichever neighbour a conforming
+/// multiply rounds to: for `M = 2^N − 1` (N ≥ 2) the exact `(1 − 2^-23)·M = M − 2·ulp(M) + 2^-23`
+/// lies strictly between `M − 2·ulp(M)` and `M − ulp(M)`, so `floor` is at most `M − 1` and the
+/// precise encoder's candidates `floor + 1` stay codes with no clamp of their own, while
+/// rounding still gives `M` there (`2·ulp(M) ≤ 2^-7` up to 16 bits). With the old top, 1, the
+/// encoders clamped `floor` to `M − 1` instead: every code is the same.
 pub fn continuous(s: Vec3, bits: u32) -> Vec2 {
     let a = s.abs();
     let l1 = (a.x + a.y) + a.z;
@@ -53,26 +61,28 @@ pub fn continuous(s: Vec3, bits: u32) -> Vec2 {
         );
         p = (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
     }
-    let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::ONE);
+    let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(CONTINUOUS_TOP));
     t * max_code(bits) as f32
 }
 
-/// The exact integer vector code `(u, v)` stands for (L1 norm `M`; see the module docs).
-/// Branch-free like the WGSL: `w = (M − |b|, M − |a|)` are the folded magnitudes, `w − |(a, b)|`
-/// holds `z` in both lanes, and the fold is a select between exact integer vectors.
+/// The top of the clamped `p/2 + 1/2` in [`continuous`] (and the hemi-octahedral twin's):
+/// `1 − 2^-23`, the second float below 1.
+pub const CONTINUOUS_TOP: f32 = 1.0 - f32::EPSILON;
+
+/// The exact integer vector code `(u, v)` stands for (L1 norm `M`; see the module docs), by the
+/// WGSL's branch-free formula (there in f32, exact): `z = M − |a| − |b|`, and when `z < 0` the
+/// folded `|D.xy| = (M − |b|, M − |a|) = |(a, b)| + z`, so `D.xy = (a, b) + sign(a, b)·min(z, 0)`.
 pub fn lattice(uv: UVec2, bits: u32) -> IVec3 {
-    let m = IVec2::splat(max_code(bits) as i32);
-    let ab = (uv + uv).as_ivec2() - m;
-    let aab = ab.abs();
-    let w = m - IVec2::new(aab.y, aab.x);
-    let z = w - aab;
-    // Folded when z < 0: then a and b are odd (M is odd), never zero, so signum is ±1.
-    let xy = if z.x < 0 { w * ab.signum() } else { ab };
-    xy.extend(z.x)
+    let m = max_code(bits) as i32;
+    let ab = (uv + uv).as_ivec2() - IVec2::splat(m);
+    let z = m - ab.abs().element_sum();
+    // a and b are odd (M is odd), never zero, so signum is ±1.
+    (ab + ab.signum() * z.min(0)).extend(z)
 }
 
-/// `|s × D|² / |D|²` as the WGSL's `oct_try` computes it: the precise encoder's score
-/// (sin² of the angle to the code's direction, times `|s|²`).
+/// `|s × D|² / |D|²` as the WGSL's `oct_try` (8 and 12 bits) and `oct_try_wide` (16 bits)
+/// compute it: the precise encoder's score (sin² of the angle to the code's direction, times
+/// `|s|²`).
 fn sin2(s: Vec3, uv: UVec2, bits: u32) -> f32 {
     super::sin2_to(s, lattice(uv, bits))
 }
@@ -98,10 +108,9 @@ pub fn encode_precise(n: Vec3, bits: u32) -> u32 {
     let m = max_code(bits);
     let s = sanitize(n).unwrap_or(Vec3::Z);
     let c = continuous(s, bits);
-    let c00 = UVec2::new(
-        (c.x.floor() as u32).min(m - 1),
-        (c.y.floor() as u32).min(m - 1),
-    );
+    // c < M (see `continuous`), so c00 + 1 ≤ M.
+    let c00 = UVec2::new(c.x.floor() as u32, c.y.floor() as u32);
+    debug_assert!(c00.max_element() < m);
     // As the WGSL's select chain: each later candidate replaces the best only if strictly
     // smaller, in the order (0,0), (1,0), (0,1), (1,1).
     let mut best = (c00, sin2(s, c00, bits));

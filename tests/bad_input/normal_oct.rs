@@ -84,8 +84,16 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
         "private to normal_oct.wgsl: the precise encoders' score and choice step, behind their rows",
     ),
     (
+        "oct_try_wide",
+        "private to normal_oct.wgsl: oct_try with a 32-bit |D|^2, behind encode_normal_oct32's rows",
+    ),
+    (
         "oct_encode_precise",
-        "private to normal_oct.wgsl: body of encode_normal_oct16/24/32, each with rows",
+        "private to normal_oct.wgsl: body of encode_normal_oct16/24, each with rows",
+    ),
+    (
+        "oct_encode_precise_wide",
+        "private to normal_oct.wgsl: body of encode_normal_oct32, with rows",
     ),
     (
         "oct_encode_round",

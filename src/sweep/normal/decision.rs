@@ -4,11 +4,11 @@
 //! Searched on the angle ([`super::searched_round_trip`]), the climb is flat wherever a slot's
 //! flip leaves the chosen code as it is, which is almost everywhere: a flip of the choice needs
 //! many roundings moved together. Here the function searched returns the four candidates'
-//! scores themselves (each computed by the file's own `oct_try` / `hemioct_try`, from the same
-//! sanitised input and the same `c00` as the encoder), so the climb sees the margin between the
-//! best candidate and the runner-up move with every slot and pushes it across zero. The inputs
-//! are built near the runner-up's tie, at graded distances, so the search also finds how large
-//! an exact lead a conforming evaluation can overturn.
+//! scores themselves (each computed by the file's own `oct_try`, `oct_try_wide` at 16 bits or
+//! `hemioct_try`, from the same sanitised input and the same `c00` as the encoder), so the
+//! climb sees the margin between the best candidate and the runner-up move with every slot and
+//! pushes it across zero. The inputs are built near the runner-up's tie, at graded distances, so
+//! the search also finds how large an exact lead a conforming evaluation can overturn.
 //!
 //! Every table is a conforming evaluation of the scores the shipped encoder compares (its
 //! `oct_try` calls differ only in the `best` operand of the final `select`, which no rounding
@@ -25,26 +25,42 @@ use crate::wgsl::{NORMAL_HEMIOCT, NORMAL_OCT};
 /// The function a decision search runs, appended to the codec's file by [`scores_source`]:
 /// `fn(n: vec3<f32>, bits: u32) -> vec4<f32>`, the four candidates' scores in the encoder's
 /// order (0,0), (1,0), (0,1), (1,1) with `bits` per axis (the hemi-octahedral file's is 12
-/// whatever `bits` says), so the three octahedral codes share one module.
+/// whatever `bits` says), so the three octahedral codes share one module: `oct_try` at 8 and
+/// 12 bits, `oct_try_wide` at 16, as the encoders call them.
 pub const SCORES_FN: &str = "prepass_candidate_scores";
 
 /// `codec`'s file with [`SCORES_FN`] appended, or `None` where `codec` is not a precise
 /// (hemi-)octahedral encoder.
 pub fn scores_source(codec: &Codec) -> Option<String> {
-    let precise = !codec.name.ends_with("fast");
-    let (prefix, sanitize, m) = match codec.source {
-        s if s == NORMAL_OCT && precise => ("oct", "oct_sanitize(n).xyz", "(1u << bits) - 1u"),
-        s if s == NORMAL_HEMIOCT && precise => ("hemioct", "hemioct_sanitize(n)", "4095u"),
+    if codec.name.ends_with("fast") {
+        return None;
+    }
+    let scores = |call: &str| {
+        let each: Vec<String> = ["0.0, 0.0", "1.0, 0.0", "0.0, 1.0", "1.0, 1.0"]
+            .iter()
+            .map(|off| call.replace("OFF", off))
+            .collect();
+        format!("vec4<f32>({})", each.join(", "))
+    };
+    let body = match codec.source {
+        s if s == NORMAL_OCT => format!(
+            "    let m = f32((1u << bits) - 1u);\n    let s = oct_sanitize(n).xyz;\n    \
+             let c00 = floor(oct_continuous(s, m));\n    if (bits == 16u) {{\n        \
+             return {};\n    }}\n    return {};\n",
+            scores("oct_try_wide(s, m, c00, vec2<f32>(OFF), none).z"),
+            scores("oct_try(s, m, c00, vec2<f32>(OFF), none).z"),
+        ),
+        s if s == NORMAL_HEMIOCT => format!(
+            "    let s = hemioct_sanitize(n);\n    \
+             let c00 = floor(hemioct_continuous(s, 4095u));\n    return {};\n",
+            scores("hemioct_try(s, c00, vec2<f32>(OFF), none).z"),
+        ),
         _ => return None,
     };
-    let tries: Vec<String> = ["0u, 0u", "1u, 0u", "0u, 1u", "1u, 1u"]
-        .iter()
-        .map(|off| format!("{prefix}_try(s, m, c00, vec2<u32>({off}), none).z"))
-        .collect();
     Some(format!(
-        "{}\nfn {SCORES_FN}(n: vec3<f32>, bits: u32) -> vec4<f32> {{\n    let m = {m};\n    let s = {sanitize};\n    let c00 = min(vec2<u32>(floor({prefix}_continuous(s, m))), vec2<u32>(m - 1u));\n    let none = vec3<u32>(0u, 0u, 0x7f800000u);\n    return bitcast<vec4<f32>>(vec4<u32>({}));\n}}\n",
-        codec.source,
-        tries.join(", ")
+        "{}\nfn {SCORES_FN}(n: vec3<f32>, bits: u32) -> vec4<f32> {{\n    \
+         let none = vec3<f32>(0.0, 0.0, 3.0e38);\n{body}}}\n",
+        codec.source
     ))
 }
 
@@ -67,7 +83,8 @@ fn continuous(codec: &Codec, n: [f64; 3]) -> [f64; 2] {
 }
 
 /// The candidate the encoder picks from four scores: the first strictly smaller than every
-/// earlier one, compared as floats (as `oct_try`'s `select` does), from +∞.
+/// earlier one, compared as floats (as `oct_try`'s `select` does), from +∞ (the WGSL starts
+/// from 3·10^38; every score is below 48, so the first always replaces either).
 pub fn chain_choice(scores: [f32; 4]) -> usize {
     let mut best = (usize::MAX, f32::INFINITY);
     for (k, &s) in scores.iter().enumerate() {

@@ -103,6 +103,76 @@ pub fn adversarial_directions() -> Vec<[f32; 3]> {
     v
 }
 
+/// Directions near a tie of two candidate codes of the precise encoders, where the score
+/// comparison is decided by the last bits of the scores: `cells` seeded cells `(u, v)` of a
+/// code with `per_axis_bits` bits per axis and largest code `m` (whose codes' exact directions
+/// `decode` gives), for each a pair of the cell's four corners, a point of the great circle
+/// equidistant from the pair's two directions (at a seeded offset along it, within a code
+/// spacing of the pair's midpoint), rounded to f32, and that point moved by −1, 0, +1 ULP in
+/// x and in y (9 inputs per cell). A score computed with one rounding more or less than the
+/// shipped one flips some of these choices (a float `|D|²` at 16 bits: tens per 2^22), so
+/// they test that the WGSL and its twin compute the same scores, not just similar ones.
+pub fn near_tie_directions(
+    per_axis_bits: u32,
+    m: u32,
+    decode: fn(u32) -> [f64; 3],
+    cells: u32,
+    seed: u64,
+) -> Vec<[f32; 3]> {
+    use crate::normal::exact::unit;
+    let mut state = seed;
+    let mut next = || {
+        // SplitMix64.
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    };
+    let cross = |a: [f64; 3], b: [f64; 3]| {
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    };
+    let mut out = Vec::with_capacity(cells as usize * 9);
+    for _ in 0..cells {
+        let r = next();
+        let (u, v) = ((r % u64::from(m)) as u32, ((r >> 32) % u64::from(m)) as u32);
+        let k = (next() % 4) as u32;
+        let j = (k + 1 + (next() % 3) as u32) % 4;
+        let corner = |i: u32| decode((u + (i & 1)) | ((v + (i >> 1)) << per_axis_bits));
+        let (a, b) = (corner(k), corner(j));
+        let (Some(mid), Some(along)) = (
+            unit(std::array::from_fn(|i| a[i] + b[i])),
+            unit(cross(a, b)),
+        ) else {
+            continue;
+        };
+        // Within ±1.5 code spacings (2/m on the square) of the midpoint.
+        let t = ((next() >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 3.0 / f64::from(m);
+        let Some(p) = unit(std::array::from_fn(|i| mid[i] + t * along[i])) else {
+            continue;
+        };
+        let f = p.map(|x| x as f32);
+        // A neighbouring float (toward zero for −1 on either sign); zero stays (its −1 is NaN).
+        let step = |x: f32, d: i32| {
+            if x == 0.0 {
+                x
+            } else {
+                f32::from_bits(x.to_bits().wrapping_add_signed(d))
+            }
+        };
+        for dx in -1..=1 {
+            for dy in -1..=1 {
+                out.push([step(f[0], dx), step(f[1], dy), f[2]]);
+            }
+        }
+    }
+    out
+}
+
 /// The documented stratified sample of a 32-bit code space: one code from each of the 2^26
 /// blocks of 64 consecutive codes (offset in the block from a hash of the block number), plus
 /// every code with a coordinate (either 16-bit half) at 0, 1, 2^15 − 1, 2^15, 2^16 − 2 or

@@ -23,7 +23,10 @@ pub use decision::{
     searched_decisions,
 };
 pub use decoder::{DecoderCheck, decode_all_32, decode_codes, decode_codes_with, decode_range};
-pub use inputs::{adversarial_directions, bad_inputs, fibonacci_directions, stratified_codes32};
+pub use inputs::{
+    adversarial_directions, bad_inputs, fibonacci_directions, near_tie_directions,
+    stratified_codes32,
+};
 pub use myth::{Myth, killzone_myth};
 pub use optimality::{Optimality, optimality_tolerance_deg, precise_optimality};
 pub use round_trip::{
