@@ -132,9 +132,9 @@ fn render_target_form_matches_the_code_path() {
     );
 }
 
-/// 2^19 cells of near-tie directions (`sweep::normal::near_tie_directions`), 9 inputs each.
+/// 2^18 cells of near-tie directions (`sweep::normal::near_tie_directions`), 9 inputs each.
 fn near_ties() -> Vec<[f32; 3]> {
-    near_tie_directions(12, hemioct::M, hemioct::exact::decode, 1 << 19, 0x2112)
+    near_tie_directions(12, hemioct::M, hemioct::exact::decode, 1 << 18, 0x2112)
 }
 
 /// The precise encoder's WGSL equals the twin bit for bit where two candidates' scores nearly

@@ -99,7 +99,7 @@ fn oct32_precise_and_fast_round_trip() {
     check(codec("oct32 fast"));
 }
 
-/// Near-tie directions of `bits` per axis (`sweep::normal::near_tie_directions`): 2^19 cells,
+/// Near-tie directions of `bits` per axis (`sweep::normal::near_tie_directions`): 2^18 cells,
 /// 9 inputs each.
 fn near_ties(bits: u32) -> Vec<[f32; 3]> {
     let decode = match bits {
@@ -111,7 +111,7 @@ fn near_ties(bits: u32) -> Vec<[f32; 3]> {
         bits,
         oct::max_code(bits),
         decode,
-        1 << 19,
+        1 << 18,
         0x21 + u64::from(bits),
     )
 }
@@ -378,7 +378,7 @@ fn splitmix(state: &mut u64) -> u64 {
 /// lattice, continuous coordinates stopping below M instead of a clamp of `floor`) returns the
 /// old loop's code for every input tried: the 2^24 Fibonacci directions, the adversarial set,
 /// the bad inputs, 2^22 random vectors in the cube [−1, 1]^3, 2^22 vectors of random f32 bit
-/// patterns (every exponent, NaN and infinities included) and the 2^22 near-tie directions, at
+/// patterns (every exponent, NaN and infinities included) and 2.4 M near-tie directions, at
 /// 8, 12 and 16 bits (the rounding encoder, whose coordinates stop below M too, equals its old
 /// self on the same inputs); and its lattice equals the old one on every code of 8 and 12 bits
 /// and the stratified 32-bit codes. CPU only (no adapter): the twins.

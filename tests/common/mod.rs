@@ -120,8 +120,8 @@ pub fn assert_twin_unorm_form(
 pub fn assert_round_trip_matches_twins(what: &str, rt: &prepass::sweep::normal::RoundTrip) {
     assert_eq!(
         rt.twin_encode.count, 0,
-        "{what}: Rust encoder differs: {:?}",
-        rt.twin_encode.first
+        "{what}: Rust encoder differs on {} inputs, first (index, WGSL, Rust): {:?}",
+        rt.twin_encode.count, rt.twin_encode.first
     );
     assert_eq!(
         rt.twin_decode.count, 0,

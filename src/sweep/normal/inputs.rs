@@ -107,11 +107,12 @@ pub fn adversarial_directions() -> Vec<[f32; 3]> {
 /// comparison is decided by the last bits of the scores: `cells` seeded cells `(u, v)` of a
 /// code with `per_axis_bits` bits per axis and largest code `m` (whose codes' exact directions
 /// `decode` gives), for each a pair of the cell's four corners, a point of the great circle
-/// equidistant from the pair's two directions (at a seeded offset along it, within a code
-/// spacing of the pair's midpoint), rounded to f32, and that point moved by −1, 0, +1 ULP in
-/// x and in y (9 inputs per cell). A score computed with one rounding more or less than the
-/// shipped one flips some of these choices (a float `|D|²` at 16 bits: tens per 2^22), so
-/// they test that the WGSL and its twin compute the same scores, not just similar ones.
+/// equidistant from the pair's two directions (at a seeded offset along it of up to 1.5/m, about
+/// a code spacing, from the pair's midpoint), rounded to f32, and that point moved by −1, 0, +1
+/// ULP in x and in y (9 inputs per cell). A score computed with one rounding more or less than
+/// the shipped one flips some of these choices (a float `|D|²` at 16 bits: 20 of 2.4 M in
+/// `tests/normal_oct.rs`), so they test that the WGSL and its twin compute the same scores,
+/// not just similar ones.
 pub fn near_tie_directions(
     per_axis_bits: u32,
     m: u32,
