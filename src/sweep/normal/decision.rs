@@ -25,8 +25,9 @@ use crate::wgsl::{NORMAL_HEMIOCT, NORMAL_OCT};
 /// The function a decision search runs, appended to the codec's file by [`scores_source`]:
 /// `fn(n: vec3<f32>, bits: u32) -> vec4<f32>`, the four candidates' scores in the encoder's
 /// order (0,0), (1,0), (0,1), (1,1) with `bits` per axis (the hemi-octahedral file's is 12
-/// whatever `bits` says), so the three octahedral codes share one module: `oct_try` at 8 and
-/// 12 bits, `oct_try_wide` at 16, as the encoders call them.
+/// whatever `bits` says), so oct16 and oct24 share one module; each calls the `try` function
+/// its encoder calls (`oct_try`, `oct_try_wide` for oct32, `hemioct_try`), and only that one,
+/// so the emulated module is no larger than the encoder's.
 pub const SCORES_FN: &str = "prepass_candidate_scores";
 
 /// `codec`'s file with [`SCORES_FN`] appended, or `None` where `codec` is not a precise
@@ -45,10 +46,12 @@ pub fn scores_source(codec: &Codec) -> Option<String> {
     let body = match codec.source {
         s if s == NORMAL_OCT => format!(
             "    let m = f32((1u << bits) - 1u);\n    let s = oct_sanitize(n).xyz;\n    \
-             let c00 = floor(oct_continuous(s, m));\n    if (bits == 16u) {{\n        \
-             return {};\n    }}\n    return {};\n",
-            scores("oct_try_wide(s, m, c00, vec2<f32>(OFF), none).z"),
-            scores("oct_try(s, m, c00, vec2<f32>(OFF), none).z"),
+             let c00 = floor(oct_continuous(s, m));\n    return {};\n",
+            scores(if codec.bits == 32 {
+                "oct_try_wide(s, m, c00, vec2<f32>(OFF), none).z"
+            } else {
+                "oct_try(s, m, c00, vec2<f32>(OFF), none).z"
+            }),
         ),
         s if s == NORMAL_HEMIOCT => format!(
             "    let s = hemioct_sanitize(n);\n    \
@@ -229,8 +232,8 @@ pub struct SearchedDecision {
 /// The decision search for each `(codec, inputs)` job (precise encoders, see
 /// [`scores_source`]): per input, the climb maximises the runner-up's score lead over the best
 /// candidate's, relative to the best's (positive: the runner-up wins), then the choice at the
-/// table found is read back and its exact excess measured. Jobs on one file share one module
-/// and one climb (the octahedral codes differ only in `bits`, an argument).
+/// table found is read back and its exact excess measured. Jobs with one scores module share it
+/// and one climb (oct16 and oct24 differ only in `bits`, an argument).
 pub fn searched_decisions(
     gpu: &Gpu,
     jobs: &[(&Codec, Vec<DecisionInput>)],
@@ -241,10 +244,11 @@ pub fn searched_decisions(
         if results[j].is_some() {
             continue;
         }
+        let source = scores_source(first);
         let group: Vec<usize> = (j..jobs.len())
-            .filter(|&k| jobs[k].0.source == first.source)
+            .filter(|&k| scores_source(jobs[k].0) == source)
             .collect();
-        let source = scores_source(first).ok_or_else(|| {
+        let source = source.ok_or_else(|| {
             HarnessError::Shader(format!(
                 "{}: not a precise (hemi-)octahedral encoder",
                 first.name
