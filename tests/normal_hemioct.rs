@@ -148,8 +148,9 @@ fn precise_encoder_equals_the_twin_at_near_ties() {
 }
 
 /// The encoders before issue 21 (continuous coordinates clamped to `[0, M]` and `floor`
-/// clamped to `M − 1`; the lattice by halving `a ± b`), kept verbatim as the reference the
-/// twins must equal bit for bit; the WGSL equals the twins (the tests above).
+/// clamped to `M − 1`; the lattice by halving `a ± b`; the score `common::old_sin2_to`), kept
+/// verbatim as the reference the twins must equal bit for bit; the WGSL equals the twins (the
+/// tests above).
 mod replaced {
     use glam::{IVec3, UVec2, Vec2, Vec3};
     use prepass::normal::hemioct::{M, sanitize};
@@ -169,16 +170,7 @@ mod replaced {
     }
 
     fn sin2(s: Vec3, uv: UVec2) -> f32 {
-        let d = lattice(uv);
-        let ad = d.abs().as_uvec3();
-        let len2 = (ad.x * ad.x + ad.y * ad.y + ad.z * ad.z) as f32;
-        let d = d.as_vec3();
-        let x = Vec3::new(
-            s.y * d.z - s.z * d.y,
-            s.z * d.x - s.x * d.z,
-            s.x * d.y - s.y * d.x,
-        );
-        ((x.x * x.x + x.y * x.y) + x.z * x.z) / len2
+        crate::common::old_sin2_to(s, lattice(uv))
     }
 
     pub fn encode_precise(n: Vec3) -> u32 {
@@ -215,21 +207,7 @@ mod replaced {
 /// CPU only (no adapter): the twins.
 #[test]
 fn encoders_equal_the_ones_they_replaced() {
-    let mut rng = 0x21_u64;
-    let mut next = || {
-        rng = rng.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = rng;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    };
-    let unit = |x: u64| (x >> 40) as f32 / (1u64 << 23) as f32 - 1.0;
-    let (mut cube, mut raw) = (Vec::new(), Vec::new());
-    for _ in 0..1 << 22 {
-        let w = [next(), next()];
-        cube.push([unit(w[0]), unit(w[0] << 24), unit(w[1])]);
-        raw.push([w[0] as u32, (w[0] >> 32) as u32, w[1] as u32].map(f32::from_bits));
-    }
+    let (cube, raw) = common::random_cube_and_bits(0x21, 1 << 22);
     let bad: Vec<[f32; 3]> = bad_inputs().iter().map(|c| c.0).collect();
     let sets: [(&str, Vec<[f32; 3]>); 6] = [
         ("fibonacci 2^24", fibonacci_directions(1 << 24)),

@@ -289,7 +289,8 @@ fn render_target_forms_match_the_code_path() {
 /// The precise encoder before issue 13 made it straight-line (a loop over the four candidates
 /// with a running best, and a branching lattice), kept verbatim as the reference the shipped
 /// twin must equal bit for bit, with the continuous coordinates of that time (clamped to
-/// `[0, M]`, before issue 21 stopped them below M). The WGSL equals the twin (the round-trip
+/// `[0, M]`, before issue 21 stopped them below M) and that time's score
+/// (`common::old_sin2_to`). The WGSL equals the twin (the round-trip
 /// and near-tie tests above, and `tests/conforming.rs` under emulation), so the WGSL's output
 /// is unchanged too.
 mod loop_reference {
@@ -324,17 +325,7 @@ mod loop_reference {
     }
 
     fn sin2(s: Vec3, uv: UVec2, bits: u32) -> f32 {
-        let d = lattice(uv, bits);
-        let ad = d.abs().as_uvec3();
-        let len2 = (ad.x * ad.x + ad.y * ad.y + ad.z * ad.z) as f32;
-        let d = d.as_vec3();
-        let x = Vec3::new(
-            s.y * d.z - s.z * d.y,
-            s.z * d.x - s.x * d.z,
-            s.x * d.y - s.y * d.x,
-        );
-        // The crate's dot: (x·x + y·y) + z·z, each operation rounded, no fusion.
-        ((x.x * x.x + x.y * x.y) + x.z * x.z) / len2
+        crate::common::old_sin2_to(s, lattice(uv, bits))
     }
 
     pub fn encode_precise(n: Vec3, bits: u32) -> u32 {
@@ -365,15 +356,6 @@ mod loop_reference {
     }
 }
 
-/// SplitMix64 (Steele, Lea, Flood 2014): a fixed, seeded stream of 64-bit words.
-fn splitmix(state: &mut u64) -> u64 {
-    *state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
-    let mut z = *state;
-    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-    z ^ (z >> 31)
-}
-
 /// The precise encoder as issues 13 and 21 reshaped it (straight-line selection, branch-free
 /// lattice, continuous coordinates stopping below M instead of a clamp of `floor`) returns the
 /// old loop's code for every input tried: the 2^24 Fibonacci directions, the adversarial set,
@@ -384,15 +366,7 @@ fn splitmix(state: &mut u64) -> u64 {
 /// and the stratified 32-bit codes. CPU only (no adapter): the twins.
 #[test]
 fn straight_line_precise_encoder_equals_the_loop_it_replaced() {
-    let mut rng = 0x13_u64;
-    let mut cube = Vec::with_capacity(1 << 22);
-    let mut raw = Vec::with_capacity(1 << 22);
-    for _ in 0..1 << 22 {
-        let w = [splitmix(&mut rng), splitmix(&mut rng)];
-        let unit = |x: u64| (x >> 40) as f32 / (1u64 << 23) as f32 - 1.0;
-        cube.push([unit(w[0]), unit(w[0] << 24), unit(w[1])]);
-        raw.push([w[0] as u32, (w[0] >> 32) as u32, w[1] as u32].map(f32::from_bits));
-    }
+    let (cube, raw) = common::random_cube_and_bits(0x13, 1 << 22);
     let bad: Vec<[f32; 3]> = bad_inputs().iter().map(|c| c.0).collect();
     let sets: [(&str, &[[f32; 3]]); 5] = [
         ("fibonacci 2^24", fibonacci()),

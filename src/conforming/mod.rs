@@ -335,14 +335,6 @@ impl Emulation {
         self
     }
 
-    fn exact_functions(&self) -> Vec<&'static str> {
-        if self.emulate_exact {
-            Vec::new()
-        } else {
-            EXACT_FUNCTIONS.iter().map(|(f, _)| *f).collect()
-        }
-    }
-
     /// Only these freedoms.
     pub fn with_freedoms(mut self, freedoms: Freedoms) -> Self {
         self.freedoms = freedoms;
@@ -460,8 +452,7 @@ fn parse(
 pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateError> {
     // Pass 1: which vector wrappers the module needs, and the parameter lists of its functions.
     let (m1, i1) = parse(source, "the source")?;
-    let exact = emulation.exact_functions();
-    let plan1 = rewrite::plan(&m1, &i1, &exact);
+    let plan1 = rewrite::plan(&m1, &i1, emulation.emulate_exact);
     let mut text = String::with_capacity(source.len() + CORE_WGSL.len() + 4096);
     // Helpers first: a call may only reach a function earlier in naga's arena, and the front
     // end keeps source order where no dependency decides it.
@@ -551,7 +542,7 @@ pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateE
     }
     // Pass 2: the same plan on the combined module (its own handles), applied.
     let (mut m2, i2) = parse(&text, "the module with the helper library")?;
-    let plan2 = rewrite::plan(&m2, &i2, &exact);
+    let plan2 = rewrite::plan(&m2, &i2, emulation.emulate_exact);
     let sites = rewrite::apply(&mut m2, &plan2).map_err(EmulateError)?;
     let info = naga::valid::Validator::new(
         naga::valid::ValidationFlags::all(),

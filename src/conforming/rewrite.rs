@@ -616,14 +616,15 @@ fn function_key(module: &Module, f: &Function, entry: Option<usize>) -> String {
 }
 
 /// Find every site in the module's functions and entry points (the emulation's own helpers
-/// excepted, and the functions named in `exact`, left as they are).
-pub fn plan(module: &Module, info: &naga::valid::ModuleInfo, exact: &[&str]) -> Plan {
+/// excepted, and [`super::EXACT_FUNCTIONS`] unless `emulate_exact`, left as they are).
+pub fn plan(module: &Module, info: &naga::valid::ModuleInfo, emulate_exact: bool) -> Plan {
     let mut plan = Plan::default();
+    let skipped = |n: &str| {
+        n.starts_with(PREFIX)
+            || (!emulate_exact && super::EXACT_FUNCTIONS.iter().any(|&(f, _)| f == n))
+    };
     let visit = |f: &Function, fi: &naga::valid::FunctionInfo, key: String, plan: &mut Plan| {
-        if f.name
-            .as_deref()
-            .is_some_and(|n| n.starts_with(PREFIX) || exact.contains(&n))
-        {
+        if f.name.as_deref().is_some_and(skipped) {
             return;
         }
         let mut live = HashSet::new();

@@ -344,3 +344,36 @@ pub fn deferred_minimal_scene() -> prepass::scene::Scene {
         ..Scene::default()
     }
 }
+
+/// `n` random vectors in the cube [−1, 1]^3 and `n` vectors of random f32 bit patterns (every
+/// exponent, NaN and infinities included), from one seeded `sweep::SplitMix` stream: the
+/// random sets the old-encoder comparisons run over.
+#[allow(dead_code)]
+pub fn random_cube_and_bits(seed: u64, n: usize) -> (Vec<[f32; 3]>, Vec<[f32; 3]>) {
+    let mut rng = prepass::sweep::SplitMix(seed);
+    let unit = |x: u64| (x >> 40) as f32 / (1u64 << 23) as f32 - 1.0;
+    let (mut cube, mut raw) = (Vec::with_capacity(n), Vec::with_capacity(n));
+    for _ in 0..n {
+        let w = [rng.next_u64(), rng.next_u64()];
+        cube.push([unit(w[0]), unit(w[0] << 24), unit(w[1])]);
+        raw.push([w[0] as u32, (w[0] >> 32) as u32, w[1] as u32].map(f32::from_bits));
+    }
+    (cube, raw)
+}
+
+/// The precise encoders' score before issue 21, verbatim (`normal::sin2_to` of that time):
+/// `|s × D|² / |D|²` with `|D|²` summed exactly in u32 and converted once, the cross product
+/// and the dot `(x·x + y·y) + z·z` rounded per operation, no fusion. The old-encoder
+/// references of `tests/normal_oct.rs` and `tests/normal_hemioct.rs` score with it.
+#[allow(dead_code)]
+pub fn old_sin2_to(s: glam::Vec3, d: glam::IVec3) -> f32 {
+    let ad = d.abs().as_uvec3();
+    let len2 = (ad.x * ad.x + ad.y * ad.y + ad.z * ad.z) as f32;
+    let d = d.as_vec3();
+    let x = glam::Vec3::new(
+        s.y * d.z - s.z * d.y,
+        s.z * d.x - s.x * d.z,
+        s.x * d.y - s.y * d.x,
+    );
+    ((x.x * x.x + x.y * x.y) + x.z * x.z) / len2
+}

@@ -240,22 +240,22 @@ pub fn searched_decisions(
     config: &SearchConfig,
 ) -> Result<Vec<SearchedDecision>, HarnessError> {
     let mut results = vec![None; jobs.len()];
+    let sources: Vec<Option<String>> = jobs.iter().map(|(c, _)| scores_source(c)).collect();
     for (j, (first, _)) in jobs.iter().enumerate() {
         if results[j].is_some() {
             continue;
         }
-        let source = scores_source(first);
         let group: Vec<usize> = (j..jobs.len())
-            .filter(|&k| scores_source(jobs[k].0) == source)
+            .filter(|&k| sources[k] == sources[j])
             .collect();
-        let source = source.ok_or_else(|| {
+        let source = sources[j].as_deref().ok_or_else(|| {
             HarnessError::Shader(format!(
                 "{}: not a precise (hemi-)octahedral encoder",
                 first.name
             ))
         })?;
         let kernel =
-            EmulatedKernel::new(gpu, &source, SCORES_FN, &Emulation::new(Policy::Searched))?;
+            EmulatedKernel::new(gpu, source, SCORES_FN, &Emulation::new(Policy::Searched))?;
         let inputs: Vec<&DecisionInput> = group.iter().flat_map(|&k| &jobs[k].1).collect();
         let ns: Vec<[f32; 3]> = inputs.iter().map(|d| d.n).collect();
         let bits: Vec<u32> = group
