@@ -119,15 +119,14 @@ fn near_ties(bits: u32) -> Vec<[f32; 3]> {
 /// The precise encoders' WGSL equals the twin bit for bit where the candidates' scores nearly
 /// tie, so the comparison is decided by their last bits: the round-trip tests' directions
 /// almost never get there (a float |D|² in `oct_try_wide` differs from the twin on none of
-/// 2^24 Fibonacci directions, but on tens of these). Bit identity, not a tolerance: the WGSL
-/// computes each score with the twin's operations, and lavapipe rounds each correctly.
+/// 2^24 Fibonacci directions, but on 20 of these). Bit identity, not a tolerance, on an adapter
+/// that evaluates the score's operations as the twin does (lavapipe; probed by
+/// `common::scores_evaluated_like_the_twins`); on another conforming adapter the codes are held
+/// to the conforming optimality bound instead (`common::assert_near_ties`).
 #[test]
 fn precise_encoders_equal_the_twin_at_near_ties() {
     for (name, bits) in [("oct16", 8), ("oct24", 12), ("oct32", 16)] {
-        let inputs = near_ties(bits);
-        let rt = round_trip(gpu(), codec(name), &inputs).unwrap();
-        eprintln!("{name}: {} near-tie inputs", inputs.len());
-        common::assert_round_trip_matches_twins(&format!("{name} near ties"), &rt);
+        common::assert_near_ties(codec(name), &near_ties(bits));
     }
 }
 
