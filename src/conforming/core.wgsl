@@ -89,8 +89,13 @@ fn prepass_cf_table_dir(site: u32) -> i32 {
     return select(-1, 1, bit == 1u);
 }
 
+// The identity test stands apart so that under the identity every call of this function is
+// the constant false (src/conforming/fold.rs then drops the branches it guards).
 fn prepass_cf_on(freedom: u32) -> bool {
-    return PREPASS_CF_POLICY != 0u && (PREPASS_CF_FREEDOMS & freedom) != 0u;
+    if (PREPASS_CF_POLICY == 0u) {
+        return false;
+    }
+    return (PREPASS_CF_FREEDOMS & freedom) != 0u;
 }
 
 // Direction of a push inside an interval: +1 (upper end), -1 (lower end), seeded -1/0/+1, or
@@ -419,8 +424,11 @@ fn prepass_cf_div(site: u32, a0: f32, b0: f32) -> f32 {
     let q = a / b;
     prepass_cf_undefined_if(!prepass_cf_finite(q));
     let dir = prepass_cf_dir(PREPASS_CF_DIVISION, site, a, b);
+    if (dir == 0) {
+        return prepass_cf_ftz(site + 3u, q);
+    }
     let p = prepass_cf_opaque(q) * b;
-    if (dir != 0 && abs(q) >= bitcast<f32>(0x0d800000u) && prepass_cf_mul_err_ok(q, b, p)) {
+    if (abs(q) >= bitcast<f32>(0x0d800000u) && prepass_cf_mul_err_ok(q, b, p)) {
         let r = (prepass_cf_opaque(a) - p) - prepass_cf_mul_err(q, b, p);
         let e = prepass_cf_two_sum(q, r / b);
         return prepass_cf_ftz(site + 3u, prepass_cf_place_ulp(e, 2.5, dir, true));
@@ -477,9 +485,9 @@ fn prepass_cf_sqrt(site: u32, x: f32) -> f32 {
 
 // Budget of exp and exp2, 3 + 2|x| ULP, less the host's own error, in half ULPs (the push of
 // the host's result, where no reference is formed).
-fn prepass_cf_exp_halves(site: u32, x: f32) -> i32 {
+fn prepass_cf_exp_halves(dir: i32, x: f32) -> i32 {
     let budget = 2.0 * (3.0 + 2.0 * min(abs(x), 1000.0)) - f32(PREPASS_CF_EXP_HOST_HALVES);
-    return prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x) * i32(floor(max(budget, 0.0)));
+    return dir * i32(floor(max(budget, 0.0)));
 }
 
 // 2^(f + n) as hi + lo for |f| <= 0.5 (double-f32) and an integer n with a normal result:
@@ -501,14 +509,10 @@ fn prepass_cf_exp2_exact(f: vec2<f32>, n: f32) -> vec2<f32> {
 }
 
 // An exponential within 3 + 2|x| ULP of its exact value e (hi + lo), or the host's result r
-// pushed where there is no reference.
-fn prepass_cf_exp_end(site: u32, x: f32, r: f32, e: vec2<f32>, exact: bool) -> f32 {
+// pushed where there is no reference; dir is not 0 (the callers return r there).
+fn prepass_cf_exp_end(dir: i32, x: f32, r: f32, e: vec2<f32>, exact: bool) -> f32 {
     if (!exact) {
-        return prepass_cf_push(r, prepass_cf_exp_halves(site, x));
-    }
-    let dir = prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x);
-    if (dir == 0) {
-        return r;
+        return prepass_cf_push(r, prepass_cf_exp_halves(dir, x));
     }
     return prepass_cf_place_ulp(e, 3.0 + 2.0 * abs(x), dir, false);
 }
@@ -517,23 +521,31 @@ fn prepass_cf_exp2(site: u32, x0: f32) -> f32 {
     let x = prepass_cf_ftz(site + 1u, x0);
     let r = exp2(x);
     prepass_cf_undefined_if(!(x < 128.0) || !prepass_cf_finite(r));
+    let dir = prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x);
+    if (dir == 0) {
+        return prepass_cf_ftz(site + 3u, r);
+    }
     // A reference where the result is at least 2^-100 (its lo part stays normal).
     let exact = x >= -100.0 && x < 128.0;
     let n = round(x);
     let e = prepass_cf_exp2_exact(vec2<f32>(prepass_cf_opaque(x) - n, 0.0), n);
-    return prepass_cf_ftz(site + 3u, prepass_cf_exp_end(site, x, r, e, exact));
+    return prepass_cf_ftz(site + 3u, prepass_cf_exp_end(dir, x, r, e, exact));
 }
 
 fn prepass_cf_exp(site: u32, x0: f32) -> f32 {
     let x = prepass_cf_ftz(site + 1u, x0);
     let r = exp(x);
     prepass_cf_undefined_if(!(x < 88.0) || !prepass_cf_finite(r));
+    let dir = prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x);
+    if (dir == 0) {
+        return prepass_cf_ftz(site + 3u, r);
+    }
     let exact = x >= -69.0 && x < 88.0;
     // x*log2(e) as hi + lo, split into n + f with |f| <= 0.5 (the subtraction of n is exact).
     let t = prepass_cf_df_mul(vec2<f32>(x, 0.0), vec2<f32>(bitcast<f32>(0x3fb8aa3bu), bitcast<f32>(0x32a57060u)));
     let n = round(t.x);
     let e = prepass_cf_exp2_exact(prepass_cf_two_sum(prepass_cf_opaque(t.x) - n, t.y), n);
-    return prepass_cf_ftz(site + 3u, prepass_cf_exp_end(site, x, r, e, exact));
+    return prepass_cf_ftz(site + 3u, prepass_cf_exp_end(dir, x, r, e, exact));
 }
 
 // ln(x) (base2 false) or log2(x) of a normal positive finite x as hi + lo: x = m*2^k with m in
@@ -573,7 +585,10 @@ fn prepass_cf_log_exact(x: f32, base2: bool) -> vec2<f32> {
 // indeterminate).
 fn prepass_cf_log_end(site: u32, x: f32, r: f32, base2: bool) -> f32 {
     let dir = prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x);
-    if (dir == 0 || !(x >= bitcast<f32>(0x00800000u) && x <= bitcast<f32>(0x7f7fffffu))) {
+    if (dir == 0) {
+        return r;
+    }
+    if (!(x >= bitcast<f32>(0x00800000u) && x <= bitcast<f32>(0x7f7fffffu))) {
         return r;
     }
     let e = prepass_cf_log_exact(x, base2);

@@ -662,7 +662,7 @@ pub fn plan(module: &Module, info: &naga::valid::ModuleInfo, emulate_exact: bool
 
 /// `stmt` with each block nested in it (a block, both arms of an `if`, every case of a
 /// `switch`, a loop's body and continuing) passed through `map`; other statements as they are.
-fn map_nested(stmt: Statement, map: &mut dyn FnMut(Block) -> Block) -> Statement {
+pub(super) fn map_nested(stmt: Statement, map: &mut dyn FnMut(Block) -> Block) -> Statement {
     match stmt {
         Statement::Block(b) => Statement::Block(map(b)),
         Statement::If {
