@@ -585,6 +585,7 @@ fn prepass_cf_log_exact(x: f32, base2: bool) -> vec2<f32> {
 // indeterminate).
 fn prepass_cf_log_end(site: u32, x: f32, r: f32, base2: bool) -> f32 {
     let dir = prepass_cf_dir(PREPASS_CF_EXP_LOG, site, x, x);
+    // Two ifs, not `||`: naga lowers `||` through a local, which fold.rs does not follow.
     if (dir == 0) {
         return r;
     }

@@ -89,31 +89,15 @@ fn is_emitted_kind(e: &Expression) -> bool {
 
 /// Every expression `block` (and what it nests) emits or computes by a call.
 fn evaluated_in(block: &Block, out: &mut HashSet<Handle<Expression>>) {
-    for s in block.iter() {
-        match s {
-            Statement::Emit(range) => out.extend(range.clone()),
-            Statement::Call {
-                result: Some(r), ..
-            } => {
-                out.insert(*r);
-            }
-            Statement::Block(b) => evaluated_in(b, out),
-            Statement::If { accept, reject, .. } => {
-                evaluated_in(accept, out);
-                evaluated_in(reject, out);
-            }
-            Statement::Switch { cases, .. } => {
-                cases.iter().for_each(|c| evaluated_in(&c.body, out))
-            }
-            Statement::Loop {
-                body, continuing, ..
-            } => {
-                evaluated_in(body, out);
-                evaluated_in(continuing, out);
-            }
-            _ => {}
+    super::rewrite::visit(block, &mut |s| match s {
+        Statement::Emit(range) => out.extend(range.clone()),
+        Statement::Call {
+            result: Some(r), ..
+        } => {
+            out.insert(*r);
         }
-    }
+        _ => {}
+    });
 }
 
 /// `block` folded: taken branches spliced in, constant calls replaced, unreachable statements dropped.
@@ -248,28 +232,6 @@ mod tests {
 
     /// Names of the functions `root` calls, directly or through others, in `source`.
     fn reachable(source: &str, root: &str) -> BTreeSet<String> {
-        fn calls(b: &naga::Block, out: &mut Vec<naga::Handle<naga::Function>>) {
-            for s in b.iter() {
-                match s {
-                    naga::Statement::Call { function, .. } => out.push(*function),
-                    naga::Statement::Block(b) => calls(b, out),
-                    naga::Statement::If { accept, reject, .. } => {
-                        calls(accept, out);
-                        calls(reject, out);
-                    }
-                    naga::Statement::Loop {
-                        body, continuing, ..
-                    } => {
-                        calls(body, out);
-                        calls(continuing, out);
-                    }
-                    naga::Statement::Switch { cases, .. } => {
-                        cases.iter().for_each(|c| calls(&c.body, out))
-                    }
-                    _ => {}
-                }
-            }
-        }
         let module = naga::front::wgsl::parse_str(source).unwrap();
         let mut todo: Vec<_> = module
             .functions
@@ -280,7 +242,11 @@ mod tests {
         let mut seen = BTreeSet::new();
         while let Some(h) = todo.pop() {
             if seen.insert(module.functions[h].name.clone().unwrap_or_default()) {
-                calls(&module.functions[h].body, &mut todo);
+                crate::conforming::rewrite::visit(&module.functions[h].body, &mut |s| {
+                    if let naga::Statement::Call { function, .. } = s {
+                        todo.push(*function);
+                    }
+                });
             }
         }
         seen

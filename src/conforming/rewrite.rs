@@ -587,25 +587,34 @@ fn site_for(
     }
 }
 
-fn emitted(block: &Block, out: &mut HashSet<Handle<Expression>>) {
+/// Every statement of `block` and of the blocks nested in it, in order.
+pub(super) fn visit(block: &Block, f: &mut dyn FnMut(&Statement)) {
     for stmt in block.iter() {
+        f(stmt);
         match stmt {
-            Statement::Emit(range) => out.extend(range.clone()),
-            Statement::Block(b) => emitted(b, out),
+            Statement::Block(b) => visit(b, f),
             Statement::If { accept, reject, .. } => {
-                emitted(accept, out);
-                emitted(reject, out);
+                visit(accept, f);
+                visit(reject, f);
             }
-            Statement::Switch { cases, .. } => cases.iter().for_each(|c| emitted(&c.body, out)),
+            Statement::Switch { cases, .. } => cases.iter().for_each(|c| visit(&c.body, f)),
             Statement::Loop {
                 body, continuing, ..
             } => {
-                emitted(body, out);
-                emitted(continuing, out);
+                visit(body, f);
+                visit(continuing, f);
             }
             _ => {}
         }
     }
+}
+
+fn emitted(block: &Block, out: &mut HashSet<Handle<Expression>>) {
+    visit(block, &mut |s| {
+        if let Statement::Emit(range) = s {
+            out.extend(range.clone());
+        }
+    });
 }
 
 fn function_key(module: &Module, f: &Function, entry: Option<usize>) -> String {
