@@ -27,23 +27,31 @@ pub const FIXED_TABLE_AS_COLUMNS: u64 = 1 << 20;
 /// A function of an emulated module, ready to run, with its "not defined by the spec" flag.
 ///
 /// One pipeline per function for every policy but the identity: the flag is a tail word of the
-/// values' own pipeline ([`Gpu::kernel_with_tail`]; the search's slot mask, of a second one
-/// built only when asked for). [`Policy::Upper`], [`Policy::Lower`] and [`Policy::Seeded`] run
-/// the [`Policy::Searched`] module with the table [`DirectionTable::UPPER`] or
-/// [`DirectionTable::LOWER`] (per-element columns, as the search's tables, up to
-/// [`FIXED_TABLE_AS_COLUMNS`] elements; uniforms beyond), or the seeded mode
-/// ([`super::search::seeded_mode`]): the policies' own results (`tests/conforming.rs` checks
-/// it), from the pipeline the search of the same function runs.
+/// values' own pipeline ([`Gpu::kernel_with_tail`]), and under the table wrappers so are the
+/// direction-table slots the evaluation read, which the search asks for once per climb.
+/// [`Policy::Upper`], [`Policy::Lower`] and [`Policy::Seeded`] run the [`Policy::Searched`]
+/// module with the table [`DirectionTable::UPPER`] or [`DirectionTable::LOWER`] (per-element
+/// columns, as the search's tables, up to [`FIXED_TABLE_AS_COLUMNS`] elements; uniforms
+/// beyond), or the seeded mode ([`super::search::seeded_mode`]): the policies' own results
+/// (`tests/conforming.rs` checks it), from the pipeline the search of the same function runs.
+///
+/// Why the slot words ride on every run rather than on a second pipeline built for the search:
+/// the two compile alike (measured on lavapipe, cold, LLVM passes off, 2026-12-05: the
+/// oct16 round trip 6.15 s with the slot words, 6.17 s without; `lpp_spot_light` 8.62 and
+/// 8.65 s), so a search paid for a whole second compile, while keeping the bookkeeping alive
+/// costs each run little (2^18 oct16 round trips 0.62 s against 0.59 s; xyz8 0.23 against
+/// 0.21 s). Runs beyond [`FIXED_TABLE_AS_COLUMNS`] take their table as uniforms, a pipeline
+/// of their own in any case, and read back the flag alone.
 pub struct EmulatedKernel<'g> {
     /// The emulated module (under [`Policy::Upper`], [`Policy::Lower`] and [`Policy::Seeded`],
     /// the searched one).
     pub emulated: Emulated,
     policy: Policy,
+    /// Values, then the flag, then under the table wrappers the eight slot-mask words.
     kernel: Kernel<'g>,
-    /// Under Searched: the same wrapper with the slot mask in its tail too, compiled only if
-    /// [`EmulatedKernel::touched`] runs (reading the mask keeps its bookkeeping alive, which
-    /// costs the compiler more; the values' pipeline lets it fall away).
-    masks: Option<Kernel<'g>>,
+    /// Under Upper, Lower and Seeded: values and flag alone, for the runs that take their
+    /// table as uniforms (beyond [`FIXED_TABLE_AS_COLUMNS`] elements).
+    uniform_table: Option<Kernel<'g>>,
     /// The signature callers pass arguments for (a fixed table's two parameters removed).
     signature: Signature,
     /// Under Upper, Lower and Seeded: the table and the mode appended to every run.
@@ -65,7 +73,7 @@ impl<'g> EmulatedKernel<'g> {
             Policy::Seeded(seed) => Some((DirectionTable::UPPER, super::search::seeded_mode(seed))),
             _ => None,
         };
-        let mut tail = vec![UNDEFINED_FLAG.to_string()];
+        let flag = vec![UNDEFINED_FLAG.to_string()];
         if fixed.is_some() || emulation.policy == Policy::Searched {
             let searched = Emulation {
                 policy: Policy::Searched,
@@ -75,18 +83,20 @@ impl<'g> EmulatedKernel<'g> {
             if let Some((wrapper, _)) = emulated.table_functions(function) {
                 // A searched kernel given one table (`DirectionTable::args`) is the very
                 // pipeline Upper and Lower use.
-                let kernel = gpu.kernel_with_tail(&emulated.source, wrapper, &tail)?;
+                let mut tail = flag.clone();
                 tail.extend(touched_words());
-                let masks = Some(gpu.kernel_with_tail(&emulated.source, wrapper, &tail)?);
+                let kernel = gpu.kernel_with_tail(&emulated.source, wrapper, &tail)?;
                 let mut signature = kernel.signature().clone();
+                let mut uniform_table = None;
                 if fixed.is_some() {
                     signature.params.truncate(signature.params.len() - 3);
+                    uniform_table = Some(gpu.kernel_with_tail(&emulated.source, wrapper, &flag)?);
                 }
                 return Ok(EmulatedKernel {
                     emulated,
                     policy: emulation.policy,
                     kernel,
-                    masks,
+                    uniform_table,
                     signature,
                     fixed,
                 });
@@ -102,13 +112,13 @@ impl<'g> EmulatedKernel<'g> {
         let name = emulated.function_name(function).ok_or_else(|| {
             HarnessError::Shader(format!("the module has no function `{function}`"))
         })?;
-        let kernel = gpu.kernel_with_tail(&emulated.source, name, &tail)?;
+        let kernel = gpu.kernel_with_tail(&emulated.source, name, &flag)?;
         Ok(EmulatedKernel {
             signature: kernel.signature().clone(),
             emulated,
             policy: emulation.policy,
             kernel,
-            masks: None,
+            uniform_table: None,
             fixed: None,
         })
     }
@@ -124,46 +134,61 @@ impl<'g> EmulatedKernel<'g> {
         &self.signature
     }
 
-    /// Values, tail words (flag first), for `args` with a fixed table appended: as columns up
-    /// to [`FIXED_TABLE_AS_COLUMNS`] elements, the feed the search gives its tables, so that
+    /// Values and tail words (flag first, then the slot mask where the pipeline has one:
+    /// `keep` words per element at most), for `args` with a fixed table appended: as columns
+    /// up to [`FIXED_TABLE_AS_COLUMNS`] elements, the feed the search gives its tables, so that
     /// the policies' runs and a search of the same function share one compiled pipeline.
-    fn run_tail(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<u32>), HarnessError> {
+    fn run_tail(
+        &self,
+        args: &[Arg<'_>],
+        n: u64,
+        keep: usize,
+    ) -> Result<(Output, Vec<u32>, usize), HarnessError> {
         let Some((table, mode)) = self.fixed else {
-            return self.kernel.run_with_tail(args, n);
+            let (out, tail) = self.kernel.run_with_tail_prefix(args, n, keep)?;
+            return Ok((out, tail, keep.min(self.kernel.tail_words())));
         };
         let [h0, h1] = table.halves();
-        let columns = n <= FIXED_TABLE_AS_COLUMNS;
-        let (c0, c1) = if columns {
-            (vec![h0; n as usize], vec![h1; n as usize])
-        } else {
-            (Vec::new(), Vec::new())
-        };
         let mut all = args.to_vec();
-        if columns {
-            all.extend([Arg::column(&c0), Arg::column(&c1)]);
-        } else {
-            all.extend([Arg::Splat(h0), Arg::Splat(h1)]);
+        if n > FIXED_TABLE_AS_COLUMNS {
+            let kernel = self
+                .uniform_table
+                .as_ref()
+                .expect("built with a fixed table");
+            all.extend([Arg::Splat(h0), Arg::Splat(h1), Arg::Splat(mode)]);
+            let (out, tail) = kernel.run_with_tail_prefix(&all, n, keep)?;
+            return Ok((out, tail, keep.min(kernel.tail_words())));
         }
-        all.push(Arg::Splat(mode));
-        self.kernel.run_with_tail(&all, n)
+        let (c0, c1) = (vec![h0; n as usize], vec![h1; n as usize]);
+        all.extend([Arg::column(&c0), Arg::column(&c1), Arg::Splat(mode)]);
+        let (out, tail) = self.kernel.run_with_tail_prefix(&all, n, keep)?;
+        Ok((out, tail, keep.min(self.kernel.tail_words())))
     }
 
     /// Under [`Policy::Searched`]: per element, the mask of the direction-table slots
     /// its evaluation read (arguments as for [`EmulatedKernel::run`]).
     pub fn touched(&self, args: &[Arg<'_>], n: u64) -> Result<Vec<DirectionTable>, HarnessError> {
-        let masks = match (&self.masks, self.policy) {
-            (Some(m), Policy::Searched) => m,
-            _ => {
-                return Err(HarnessError::Shader(
-                    "slot masks exist under Policy::Searched only".into(),
-                ));
-            }
-        };
-        let (_, tail) = masks.run_with_tail(args, n)?;
-        Ok(tail
-            .chunks_exact(9)
-            .map(|e| DirectionTable(std::array::from_fn(|k| e[1 + k])))
-            .collect())
+        Ok(self.run_touched(args, n)?.2)
+    }
+
+    /// Under [`Policy::Searched`]: [`EmulatedKernel::run`] and [`EmulatedKernel::touched`] of
+    /// one evaluation.
+    pub fn run_touched(
+        &self,
+        args: &[Arg<'_>],
+        n: u64,
+    ) -> Result<(Output, Vec<bool>, Vec<DirectionTable>), HarnessError> {
+        if self.policy != Policy::Searched {
+            return Err(HarnessError::Shader(
+                "slot masks exist under Policy::Searched only".into(),
+            ));
+        }
+        let (out, tail, stride) = self.run_tail(args, n, 9)?;
+        let (flags, masks) = tail
+            .chunks_exact(stride)
+            .map(|e| (e[0] != 0, DirectionTable(std::array::from_fn(|k| e[1 + k]))))
+            .unzip();
+        Ok((out, flags, masks))
     }
 
     /// Run `n` elements: the results, and per element whether an operation of its evaluation
@@ -171,9 +196,7 @@ impl<'g> EmulatedKernel<'g> {
     /// [`Policy::Searched`] the last three arguments are the direction table's halves and the
     /// mode ([`DirectionTable::args`], or columns of tables and [`super::search::TABLE_MODE`]).
     pub fn run(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<bool>), HarnessError> {
-        let (out, tail) = self.run_tail(args, n)?;
-        let stride = self.kernel.tail_words();
-        let flags = tail.chunks_exact(stride).map(|e| e[0] != 0).collect();
-        Ok((out, flags))
+        let (out, tail, _) = self.run_tail(args, n, 1)?;
+        Ok((out, tail.into_iter().map(|w| w != 0).collect()))
     }
 }

@@ -147,26 +147,19 @@ pub fn run_at(
     count: usize,
     plan: &[(usize, DirectionTable)],
 ) -> Result<(Output, Vec<bool>), HarnessError> {
-    match run_plan(kernel, inputs, count, plan, false)? {
-        Ran::Results(out, flags) => Ok((out, flags)),
-        Ran::Masks(_) => unreachable!("asked for results"),
-    }
+    let (out, flags, _) = run_plan(kernel, inputs, count, plan, false)?;
+    Ok((out, flags))
 }
 
-/// What [`run_plan`] returns: the results and domain flags, or the slots each element read.
-enum Ran {
-    Results(Output, Vec<bool>),
-    Masks(Vec<DirectionTable>),
-}
-
-/// [`run_at`], or with `masks` the slots each element reads (the touched kernel) instead.
+/// [`run_at`], and with `masks` the slots each element read (from the same pipeline and
+/// dispatch: [`EmulatedKernel::run_touched`]); the masks are empty otherwise.
 fn run_plan(
     kernel: &EmulatedKernel<'_>,
     inputs: &[Arg<'_>],
     count: usize,
     plan: &[(usize, DirectionTable)],
     masks: bool,
-) -> Result<Ran, HarnessError> {
+) -> Result<(Output, Vec<bool>, Vec<DirectionTable>), HarnessError> {
     let n = plan.len();
     let mut columns: Vec<Vec<u8>> = Vec::new();
     for arg in inputs {
@@ -202,14 +195,14 @@ fn run_plan(
     args.push(Arg::column(&halves[1]));
     args.push(Arg::Splat(TABLE_MODE));
     if masks {
-        return Ok(Ran::Masks(kernel.touched(&args, n as u64)?));
+        return kernel.run_touched(&args, n as u64);
     }
     let (out, flags) = kernel.run(&args, n as u64)?;
-    Ok(Ran::Results(out, flags))
+    Ok((out, flags, Vec::new()))
 }
 
 /// Each element of `plan` evaluated: its error, or −∞ where an operation left the spec's
-/// domain; with `masks`, the slots each element reads instead.
+/// domain; with `masks`, also the slots each element read (empty otherwise).
 fn evaluate(
     kernel: &EmulatedKernel<'_>,
     inputs: &[Arg<'_>],
@@ -218,10 +211,7 @@ fn evaluate(
     error: &dyn Fn(usize, &Output, usize) -> f64,
     masks: bool,
 ) -> Result<(Vec<f64>, Vec<DirectionTable>), HarnessError> {
-    let (out, flags) = match run_plan(kernel, inputs, count, plan, masks)? {
-        Ran::Results(out, flags) => (out, flags),
-        Ran::Masks(masks) => return Ok((Vec::new(), masks)),
-    };
+    let (out, flags, masks) = run_plan(kernel, inputs, count, plan, masks)?;
     let errors = plan
         .iter()
         .enumerate()
@@ -233,7 +223,7 @@ fn evaluate(
             }
         })
         .collect();
-    Ok((errors, Vec::new()))
+    Ok((errors, masks))
 }
 
 fn slots_of(mask: DirectionTable) -> Vec<usize> {
@@ -263,8 +253,7 @@ pub fn climb(
     let plan: Vec<(usize, DirectionTable)> = (0..count)
         .flat_map(|i| config.starts.iter().map(move |&(_, t)| (i, t)))
         .collect();
-    let (start_errors, _) = evaluate(kernel, inputs, count, &plan, error, false)?;
-    let (_, masks) = evaluate(kernel, inputs, count, &plan, error, true)?;
+    let (start_errors, masks) = evaluate(kernel, inputs, count, &plan, error, true)?;
     let mut found: Vec<Found> = (0..count)
         .map(|i| {
             let mut mask = DirectionTable::LOWER;

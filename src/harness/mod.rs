@@ -508,15 +508,34 @@ impl Kernel<'_> {
         args: &[Arg<'_>],
         n: u64,
     ) -> Result<(Output, Vec<u32>), HarnessError> {
+        self.run_with_tail_prefix(args, n, self.tail.len())
+    }
+
+    /// [`Kernel::run_with_tail`] keeping only the first `keep` tail words of each element
+    /// (`n × keep` of them): a caller that reads the rest only sometimes keeps one pipeline
+    /// without holding every element's words.
+    pub fn run_with_tail_prefix(
+        &self,
+        args: &[Arg<'_>],
+        n: u64,
+        keep: usize,
+    ) -> Result<(Output, Vec<u32>), HarnessError> {
         let total = usize::try_from(n)
             .ok()
             .and_then(|n| n.checked_mul(self.signature.result.words()))
             .ok_or_else(|| HarnessError::Arguments(format!("{n} results do not fit in memory")))?;
+        let (t, keep) = (self.tail.len(), keep.min(self.tail.len()));
         let mut words = Vec::with_capacity(total);
-        let mut tail = Vec::with_capacity(n as usize * self.tail.len());
+        let mut tail = Vec::with_capacity(n as usize * keep);
         self.run_chunks_raw(args, n, |_, chunk, chunk_tail| {
             words.extend_from_slice(chunk.words());
-            tail.extend_from_slice(chunk_tail);
+            if keep == t {
+                tail.extend_from_slice(chunk_tail);
+            } else {
+                for e in chunk_tail.chunks_exact(t) {
+                    tail.extend_from_slice(&e[..keep]);
+                }
+            }
             Ok(())
         })?;
         let out = Output {
