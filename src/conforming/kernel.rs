@@ -16,12 +16,13 @@ fn touched_words() -> Vec<String> {
         .collect()
 }
 
-/// Up to this many elements (32 bytes each: 32 MiB), [`Policy::Upper`], [`Policy::Lower`] and
-/// [`Policy::Seeded`] pass their fixed table as per-element columns, as the search
-/// ([`super::search::climb`]) passes its tables, rather than as uniforms: the pipeline is
-/// specialised to its arguments' feeds, and a suite that runs the policies and then searches the
-/// same function compiles it once, not twice (on lavapipe an emulated lighting function takes
-/// about 20 s to compile cold). Larger runs take the uniforms.
+/// [`Policy::Upper`], [`Policy::Lower`] and [`Policy::Seeded`] pass their fixed table as
+/// per-element columns, as the search ([`super::search::climb`]) passes its tables, rather than
+/// as uniforms: the pipeline is specialised to its arguments' feeds, and a suite that runs the
+/// policies and then searches the same function compiles it once, not twice (on lavapipe an
+/// emulated lighting function takes about 20 s to compile cold). Runs of more elements go in
+/// slices of this many (the table columns: 32 bytes per element, 32 MiB), through the same
+/// pipeline.
 pub const FIXED_TABLE_AS_COLUMNS: u64 = 1 << 20;
 
 /// A function of an emulated module, ready to run, with its "not defined by the spec" flag.
@@ -31,8 +32,8 @@ pub const FIXED_TABLE_AS_COLUMNS: u64 = 1 << 20;
 /// direction-table slots the evaluation read, which the search asks for once per climb.
 /// [`Policy::Upper`], [`Policy::Lower`] and [`Policy::Seeded`] run the [`Policy::Searched`]
 /// module with the table [`DirectionTable::UPPER`] or [`DirectionTable::LOWER`] (per-element
-/// columns, as the search's tables, up to [`FIXED_TABLE_AS_COLUMNS`] elements; uniforms
-/// beyond), or the seeded mode ([`super::search::seeded_mode`]): the policies' own results
+/// columns, as the search's tables, in slices of [`FIXED_TABLE_AS_COLUMNS`] elements), or the
+/// seeded mode ([`super::search::seeded_mode`]): the policies' own results
 /// (`tests/conforming.rs` checks it), from the pipeline the search of the same function runs.
 ///
 /// Why the slot words ride on every run rather than on a second pipeline built for the search:
@@ -40,8 +41,7 @@ pub const FIXED_TABLE_AS_COLUMNS: u64 = 1 << 20;
 /// oct16 round trip 6.15 s with the slot words, 6.17 s without; `lpp_spot_light` 8.62 and
 /// 8.65 s), so a search paid for a whole second compile, while keeping the bookkeeping alive
 /// costs each run little (2^18 oct16 round trips 0.62 s against 0.59 s; xyz8 0.23 against
-/// 0.21 s). Runs beyond [`FIXED_TABLE_AS_COLUMNS`] take their table as uniforms, a pipeline
-/// of their own in any case, and read back the flag alone.
+/// 0.21 s).
 pub struct EmulatedKernel<'g> {
     /// The emulated module (under [`Policy::Upper`], [`Policy::Lower`] and [`Policy::Seeded`],
     /// the searched one).
@@ -49,9 +49,6 @@ pub struct EmulatedKernel<'g> {
     policy: Policy,
     /// Values, then the flag, then under the table wrappers the eight slot-mask words.
     kernel: Kernel<'g>,
-    /// Under Upper, Lower and Seeded: values and flag alone, for the runs that take their
-    /// table as uniforms (beyond [`FIXED_TABLE_AS_COLUMNS`] elements).
-    uniform_table: Option<Kernel<'g>>,
     /// The signature callers pass arguments for (a fixed table's two parameters removed).
     signature: Signature,
     /// Under Upper, Lower and Seeded: the table and the mode appended to every run.
@@ -87,16 +84,13 @@ impl<'g> EmulatedKernel<'g> {
                 tail.extend(touched_words());
                 let kernel = gpu.kernel_with_tail(&emulated.source, wrapper, &tail)?;
                 let mut signature = kernel.signature().clone();
-                let mut uniform_table = None;
                 if fixed.is_some() {
                     signature.params.truncate(signature.params.len() - 3);
-                    uniform_table = Some(gpu.kernel_with_tail(&emulated.source, wrapper, &flag)?);
                 }
                 return Ok(EmulatedKernel {
                     emulated,
                     policy: emulation.policy,
                     kernel,
-                    uniform_table,
                     signature,
                     fixed,
                 });
@@ -118,7 +112,6 @@ impl<'g> EmulatedKernel<'g> {
             emulated,
             policy: emulation.policy,
             kernel,
-            uniform_table: None,
             fixed: None,
         })
     }
@@ -135,34 +128,54 @@ impl<'g> EmulatedKernel<'g> {
     }
 
     /// Values and tail words (flag first, then the slot mask where the pipeline has one:
-    /// `keep` words per element at most), for `args` with a fixed table appended: as columns
-    /// up to [`FIXED_TABLE_AS_COLUMNS`] elements, the feed the search gives its tables, so that
-    /// the policies' runs and a search of the same function share one compiled pipeline.
+    /// `keep` words per element at most, and how many that is), for `args` with a fixed
+    /// table appended as columns, the feed the search gives its tables, so that the policies'
+    /// runs and a search of the same function share one compiled pipeline; in slices of
+    /// [`FIXED_TABLE_AS_COLUMNS`] elements.
     fn run_tail(
         &self,
         args: &[Arg<'_>],
         n: u64,
         keep: usize,
     ) -> Result<(Output, Vec<u32>, usize), HarnessError> {
+        let stride = keep.min(self.kernel.tail_words());
         let Some((table, mode)) = self.fixed else {
             let (out, tail) = self.kernel.run_with_tail_prefix(args, n, keep)?;
-            return Ok((out, tail, keep.min(self.kernel.tail_words())));
+            return Ok((out, tail, stride));
         };
         let [h0, h1] = table.halves();
-        let mut all = args.to_vec();
-        if n > FIXED_TABLE_AS_COLUMNS {
-            let kernel = self
-                .uniform_table
-                .as_ref()
-                .expect("built with a fixed table");
-            all.extend([Arg::Splat(h0), Arg::Splat(h1), Arg::Splat(mode)]);
-            let (out, tail) = kernel.run_with_tail_prefix(&all, n, keep)?;
-            return Ok((out, tail, keep.min(kernel.tail_words())));
+        let slice = n.min(FIXED_TABLE_AS_COLUMNS);
+        let (c0, c1) = (vec![h0; slice as usize], vec![h1; slice as usize]);
+        let (mut words, mut tail) = (Vec::new(), Vec::new());
+        let mut first = 0;
+        while first < n {
+            let count = slice.min(n - first);
+            let mut all: Vec<Arg<'_>> = args
+                .iter()
+                .map(|a| match *a {
+                    Arg::Column(bytes) => {
+                        let w = bytes.len() / n as usize;
+                        Arg::Column(&bytes[first as usize * w..(first + count) as usize * w])
+                    }
+                    Arg::Index { start } => Arg::Index {
+                        start: start.wrapping_add(first as u32),
+                    },
+                    splat => splat,
+                })
+                .collect();
+            let c = count as usize;
+            all.extend([
+                Arg::column(&c0[..c]),
+                Arg::column(&c1[..c]),
+                Arg::Splat(mode),
+            ]);
+            let (out, t) = self.kernel.run_with_tail_prefix(&all, count, keep)?;
+            words.extend_from_slice(out.words());
+            tail.extend(t);
+            first += count;
         }
-        let (c0, c1) = (vec![h0; n as usize], vec![h1; n as usize]);
-        all.extend([Arg::column(&c0), Arg::column(&c1), Arg::Splat(mode)]);
-        let (out, tail) = self.kernel.run_with_tail_prefix(&all, n, keep)?;
-        Ok((out, tail, keep.min(self.kernel.tail_words())))
+        let ty = self.kernel.signature().result;
+        Ok((Output::from_words(ty, words), tail, stride))
     }
 
     /// Under [`Policy::Searched`]: per element, the mask of the direction-table slots

@@ -401,6 +401,11 @@ pub struct Output {
 }
 
 impl Output {
+    /// Results of type `ty`, their words in order (runs put together from parts).
+    pub(crate) fn from_words(ty: ValueType, words: Vec<u32>) -> Self {
+        Output { ty, words }
+    }
+
     /// Number of values.
     pub fn len(&self) -> usize {
         self.words.len() / self.ty.words()
@@ -735,7 +740,9 @@ impl Kernel<'_> {
             read_back_with(gpu, &staging, bytes, |words| each(first, words))??;
             first += count;
         }
-        let inputs = columns.into_iter().flat_map(|(_, buf, upload, _)| [buf, upload]);
+        let inputs = columns
+            .into_iter()
+            .flat_map(|(_, buf, upload, _)| [buf, upload]);
         gpu.give_back(inputs.chain([out, staging]));
         Ok(())
     }
