@@ -578,7 +578,12 @@ fn roughness_decode_every_code() {
 /// largest; the error depends only on the significand), every 3rd `f32` in `[1, 8192]` at
 /// the tests' range 8192, every 61st `f32` in `[1, 2^127]` at range 2^127; and for every range every
 /// 64th pattern of the stratified 32-bit sample read as `f32` (NaNs, negatives, subnormals and
-/// huge powers among them).
+/// huge powers among them). Why every 61st is enough at 2^127: the candidate's error in codes is
+/// the polynomial's (a function of the significand, swept whole at range 2) scaled by `1/L`, so
+/// the wide range is there to cross every exponent, and an odd stride puts about 137,000
+/// inputs in each of its 127 binades, at shifting significands. (Until 2026-12-05 the code took
+/// every 5th, 213 million inputs, against this comment's 61st: the test took 8.6 s, now 3.0 s
+/// on a 2-core Xeon.)
 #[test]
 fn roughness_encode() {
     let span = |lo: f32, hi: f32, step: usize| -> Vec<f32> {
@@ -592,7 +597,7 @@ fn roughness_encode() {
         (8192.0, span(1.0, 8192.0, 3)),
         (
             f32::from_bits(0x7f00_0000),
-            span(1.0, f32::from_bits(0x7f00_0000), 5),
+            span(1.0, f32::from_bits(0x7f00_0000), 61),
         ),
     ] {
         check(
