@@ -239,11 +239,17 @@ impl Kernel<'_> {
                 super::bind_group(device, &pipeline, &params, columns.iter(), &out, &label);
             kernels.push((pipeline, bind_group));
         }
-        // Round 0 is an untimed warm-up (first-use costs: shader JIT, page faults). The two
-        // kernels alternate within each round, so a change in machine load between rounds
-        // touches both alike.
+        // Round 0 is an untimed warm-up (first-use costs: shader JIT, page faults) of a
+        // sixteenth of the dispatch: every invocation reads and writes the same tile-sized
+        // buffers (`i & (tile − 1)`), so that many touch all of them, and a full-size warm-up
+        // was a third of a quick report's timing (repeats = 1). The two kernels alternate
+        // within each round, so a change in machine load between rounds touches both alike.
+        let warm_groups = (n / 16).max(tile).div_ceil(wg);
+        let warm_x = warm_groups.min(gx);
+        let warm = (warm_x, warm_groups.div_ceil(warm_x));
         let mut best = [f64::INFINITY; 2];
         for round in 0..=repeats {
+            let (dx, dy) = if round == 0 { warm } else { (gx, gy) };
             for (slot, (pipeline, bind_group)) in kernels.iter().enumerate() {
                 let mut encoder =
                     device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
@@ -262,7 +268,7 @@ impl Kernel<'_> {
                     });
                     pass.set_pipeline(pipeline);
                     pass.set_bind_group(0, bind_group, &[]);
-                    pass.dispatch_workgroups(gx as u32, gy as u32, 1);
+                    pass.dispatch_workgroups(dx as u32, dy as u32, 1);
                 }
                 if let Some((set, resolve, staging)) = &queries {
                     encoder.resolve_query_set(set, 0..2, resolve, 0);
