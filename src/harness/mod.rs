@@ -940,12 +940,10 @@ fn read_back(gpu: &Gpu, staging: &wgpu::Buffer, bytes: u64) -> Result<Vec<u32>, 
     read_back_with(gpu, staging, bytes, <[u32]>::to_vec)
 }
 
-/// `bytes` written at the start of `upload` (a `MAP_WRITE` buffer no submission in flight
-/// uses), unmapped again after.
-fn write_mapped(gpu: &Gpu, upload: &wgpu::Buffer, bytes: &[u8]) -> Result<(), HarnessError> {
-    let slice = upload.slice(..bytes.len() as u64);
+/// Map `slice` for `mode` and wait until it is mapped.
+fn map(gpu: &Gpu, slice: &wgpu::BufferSlice<'_>, mode: wgpu::MapMode) -> Result<(), HarnessError> {
     let (tx, rx) = std::sync::mpsc::channel();
-    slice.map_async(wgpu::MapMode::Write, move |r| {
+    slice.map_async(mode, move |r| {
         let _ = tx.send(r);
     });
     gpu.device
@@ -953,7 +951,14 @@ fn write_mapped(gpu: &Gpu, upload: &wgpu::Buffer, bytes: &[u8]) -> Result<(), Ha
         .map_err(|e| HarnessError::Readback(e.to_string()))?;
     rx.recv()
         .map_err(|e| HarnessError::Readback(e.to_string()))?
-        .map_err(|e| HarnessError::Readback(e.to_string()))?;
+        .map_err(|e| HarnessError::Readback(e.to_string()))
+}
+
+/// `bytes` written at the start of `upload` (a `MAP_WRITE` buffer no submission in flight
+/// uses), unmapped again after.
+fn write_mapped(gpu: &Gpu, upload: &wgpu::Buffer, bytes: &[u8]) -> Result<(), HarnessError> {
+    let slice = upload.slice(..bytes.len() as u64);
+    map(gpu, &slice, wgpu::MapMode::Write)?;
     slice
         .get_mapped_range_mut()
         .map_err(|e| HarnessError::Readback(format!("{e:?}")))?
@@ -971,16 +976,7 @@ fn read_back_with<R>(
     read: impl FnOnce(&[u32]) -> R,
 ) -> Result<R, HarnessError> {
     let slice = staging.slice(..bytes);
-    let (tx, rx) = std::sync::mpsc::channel();
-    slice.map_async(wgpu::MapMode::Read, move |r| {
-        let _ = tx.send(r);
-    });
-    gpu.device
-        .poll(wgpu::PollType::wait_indefinitely())
-        .map_err(|e| HarnessError::Readback(e.to_string()))?;
-    rx.recv()
-        .map_err(|e| HarnessError::Readback(e.to_string()))?
-        .map_err(|e| HarnessError::Readback(e.to_string()))?;
+    map(gpu, &slice, wgpu::MapMode::Read)?;
     let words = {
         let view = slice
             .get_mapped_range()
