@@ -658,8 +658,6 @@ impl Kernel<'_> {
             * wg;
         let chunk = chunk.max(wg.min(n));
 
-        let storage =
-            |size: u64, usage: wgpu::BufferUsages, label: &str| gpu.take_buffer(size, usage, label);
         // Each column: the storage buffer the shader reads, and the mappable buffer its chunks
         // are written into and copied from (the queue's own write would stage each chunk in
         // a new allocation).
@@ -673,20 +671,20 @@ impl Kernel<'_> {
                 let upload = wgpu::BufferUsages::MAP_WRITE | wgpu::BufferUsages::COPY_SRC;
                 (
                     k,
-                    storage(chunk * stride, usage, "prepass column"),
-                    storage(chunk * stride, upload, "prepass upload"),
+                    gpu.take_buffer(chunk * stride, usage, "prepass column"),
+                    gpu.take_buffer(chunk * stride, upload, "prepass upload"),
                     stride,
                 )
             })
             .collect();
         let (w, t) = (sig.result.words(), self.tail.len());
         let out_stride = (w + t) as u64 * 4;
-        let out = storage(
+        let out = gpu.take_buffer(
             chunk * out_stride,
             wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
             "prepass output",
         );
-        let staging = storage(
+        let staging = gpu.take_buffer(
             chunk * out_stride,
             wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
             "prepass readback",
