@@ -65,41 +65,42 @@ fn oct_continuous(s: vec3<f32>, m: f32) -> vec2<f32> {
     return t * m;
 }
 
-// The integer direction D that code c (whole numbers, in f32) stands for (see the header), in
-// f32: every value is an integer below 2^17, so every operation is exact on any conforming
-// adapter, fused or not. z = M - |a| - |b|; when z < 0 the code is folded, and then
+// The integer direction D of the odd lattice coordinates ab = 2c - M of code c (see the
+// header), in f32: every value is an integer below 2^17, so every operation is exact on any
+// conforming adapter, fused or not. z = M - |a| - |b|; when z < 0 the code is folded, and then
 // |D.xy| = (M - |b|, M - |a|) = |(a, b)| + z. a and b are odd (M is odd), so sign() is +-1.
-fn oct_lattice(c: vec2<f32>, m: f32) -> vec3<f32> {
-    let ab = (c + c) - vec2<f32>(m);
+// Callers form ab themselves, so a caller with a constant M pays no splat of M.
+fn oct_lattice(ab: vec2<f32>, m: f32) -> vec3<f32> {
     let z = m - dot(abs(ab), vec2<f32>(1.0));
     return vec3<f32>(ab + sign(ab) * min(z, 0.0), z);
 }
 
 // One step of the precise encoder's choice: the code c00 + off, scored by sin^2 of the angle
 // between s and its direction D (|s x D|^2 / |D|^2, up to the common factor |s|^2), replaces
-// the best so far (code in xy, score in z) only if its score is strictly smaller. Sine, not
-// cosine: at oct32's 2e-5 rad a cosine is 1.0 in f32. One function for the score and the step:
-// the four candidates share its code. |D|^2 as a float dot is exact while M^2 < 2^24 (8 and
-// 12 bits per axis: integer squares and sums below 2^24), so it is the once-rounded |D|^2.
+// the best so far (code in xy, score in z) only if its score is strictly smaller (the z lane
+// of a component-wise comparison: one vector compare, no scalar splat). Sine, not cosine: at
+// oct32's 2e-5 rad a cosine is 1.0 in f32. One function for the score and the step: the four
+// candidates share its code. |D|^2 as a float dot is exact while M^2 < 2^24 (8 and 12 bits
+// per axis: integer squares and sums below 2^24), so it is the once-rounded |D|^2.
 fn oct_try(s: vec3<f32>, m: f32, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -> vec3<f32> {
     let c = c00 + off;
-    let d = oct_lattice(c, m);
+    let d = oct_lattice((c + c) - vec2<f32>(m), m);
     let x = cross(s, d);
-    let score = dot(x, x) / dot(d, d);
-    return select(best, vec3<f32>(c, score), score < best.z);
+    let cand = vec3<f32>(c, dot(x, x) / dot(d, d));
+    return select(best, cand, (cand < best).zzz);
 }
 
-// oct_try for 16 bits per axis, where |D|^2 (up to M^2 < 2^32) needs 32 bits: summed exactly in
-// u32 and rounded once, as the narrower codes' dot is. A float dot would round each square and
-// could flip a near-tie.
-fn oct_try_wide(s: vec3<f32>, m: f32, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -> vec3<f32> {
+// oct_try for 16 bits per axis (M = 65535 written in), where |D|^2 (up to M^2 < 2^32) needs
+// 32 bits: summed exactly in u32 and rounded once, as the narrower codes' dot is. A float dot
+// would round each square and could flip a near-tie.
+fn oct_try_wide(s: vec3<f32>, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -> vec3<f32> {
     let c = c00 + off;
-    let d = oct_lattice(c, m);
+    let d = oct_lattice((c + c) - vec2<f32>(65535.0), 65535.0);
     let x = cross(s, d);
     let q = vec3<u32>(abs(d));
     let sq = q * q;
-    let score = dot(x, x) / f32(sq.x + sq.y + sq.z);
-    return select(best, vec3<f32>(c, score), score < best.z);
+    let cand = vec3<f32>(c, dot(x, x) / f32(sq.x + sq.y + sq.z));
+    return select(best, cand, (cand < best).zzz);
 }
 
 // The survey's precise encoder, 8 or 12 bits per axis: of the four codes around the continuous
@@ -120,17 +121,19 @@ fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
 }
 
 // oct_encode_precise at 16 bits per axis, with oct_try_wide's exact |D|^2 (WGSL has no
-// generics, so the four calls are written again).
+// generics, so the four calls are written again). The code is packed by pack2x16unorm, which
+// is exact here: u / 65535 is formed by one correctly rounded multiply (relative error at most
+// 2^-23 with the rounded reciprocal), so 65535 times it lies within 0.008 of the whole number
+// u, far from the .5 where implementations may differ, and floor(0.5 + that) is u.
 fn oct_encode_precise_wide(n: vec3<f32>) -> u32 {
     let m = 65535.0;
     let s = oct_sanitize(n).xyz;
     let c00 = floor(oct_continuous(s, m));
-    let b0 = oct_try_wide(s, m, c00, vec2<f32>(0.0, 0.0), vec3<f32>(0.0, 0.0, 3.0e38));
-    let b1 = oct_try_wide(s, m, c00, vec2<f32>(1.0, 0.0), b0);
-    let b2 = oct_try_wide(s, m, c00, vec2<f32>(0.0, 1.0), b1);
-    let best = oct_try_wide(s, m, c00, vec2<f32>(1.0, 1.0), b2);
-    let uv = vec2<u32>(best.xy);
-    return uv.x | (uv.y << 16u);
+    let b0 = oct_try_wide(s, c00, vec2<f32>(0.0, 0.0), vec3<f32>(0.0, 0.0, 3.0e38));
+    let b1 = oct_try_wide(s, c00, vec2<f32>(1.0, 0.0), b0);
+    let b2 = oct_try_wide(s, c00, vec2<f32>(0.0, 1.0), b1);
+    let best = oct_try_wide(s, c00, vec2<f32>(1.0, 1.0), b2);
+    return pack2x16unorm(best.xy * (1.0 / 65535.0));
 }
 
 // The plain rounding encoder: nearest code per axis (round half to even).
@@ -143,8 +146,9 @@ fn oct_encode_round(n: vec3<f32>, bits: u32) -> u32 {
 // The unit vector of code p with `bits` bits per axis: its integer direction D, normalised.
 fn oct_decode(p: u32, bits: u32) -> vec3<f32> {
     let m = (1u << bits) - 1u;
-    let uv = vec2<u32>(p & m, (p >> bits) & m);
-    return normalize(oct_lattice(vec2<f32>(uv), f32(m)));
+    let c = vec2<f32>(vec2<u32>(p & m, (p >> bits) & m));
+    let mf = f32(m);
+    return normalize(oct_lattice((c + c) - vec2<f32>(mf), mf));
 }
 
 // Byte k of the u32 from a unorm8 channel: round(255 c) after clamping; NaN counts as 0.

@@ -48,7 +48,7 @@ pub fn scores_source(codec: &Codec) -> Option<String> {
             "    let m = f32((1u << bits) - 1u);\n    let s = oct_sanitize(n).xyz;\n    \
              let c00 = floor(oct_continuous(s, m));\n    return {};\n",
             scores(if codec.bits == 32 {
-                "oct_try_wide(s, m, c00, vec2<f32>(OFF), none).z"
+                "oct_try_wide(s, c00, vec2<f32>(OFF), none).z"
             } else {
                 "oct_try(s, m, c00, vec2<f32>(OFF), none).z"
             }),
