@@ -18,6 +18,14 @@ use crate::precision::metrics::{angle_degrees, widen3};
 /// (On a correctly rounded adapter the budget is [`super::normal::UNIT_TOLERANCE`].)
 pub const UNIT_TOLERANCE_CONFORMING: f64 = 18.0 / 16_777_216.0;
 
+/// [`super::normal::decode_angle_deg`] on any conforming adapter: `normalize(D)` inherits the
+/// accuracy of `D / length(D)`, whose length only scales the result, while each component's
+/// quotient may err 2.5 ULP (`5u` relative, against the correctly rounded `u`), so the turn is
+/// at most `√2·5u` rad; plus the same `1e-12°` for the f64 angle.
+pub fn decode_angle_conforming_deg() -> f64 {
+    (2f64.sqrt() * 5.0 * 2f64.powi(-24)).to_degrees() + 1e-12
+}
+
 /// The slack the precise encoder's choice may have over the best neighbour on any conforming
 /// adapter: [`super::normal::optimality_tolerance_deg`] times 5. That tolerance is a sum of
 /// roundings of `+ − ×` (each `u` relative where correctly rounded, `2u` on any conforming
@@ -116,6 +124,27 @@ fn code_step(codec: &Codec, a: u32, b: u32) -> u32 {
         .unwrap_or(0)
 }
 
+/// How many code steps `codes` (an adapter's, `codes[i]` encoded from `inputs[i]`) lie from the
+/// Rust twin's codes of the same inputs at most, counted per lane as
+/// [`EmulatedCodec::max_code_step`] says (two codes of one exact direction, such as the four
+/// corners of the octahedral square, are no step apart). The twins promise at most 1 on every
+/// conforming adapter.
+pub fn max_code_step(codec: &Codec, inputs: &[[f32; 3]], codes: &[u32]) -> u32 {
+    codes
+        .iter()
+        .zip(inputs)
+        .map(|(&got, &n)| {
+            let twin = (codec.twin_encode)(glam::Vec3::from(n));
+            if got == twin || (codec.reference_decode)(got) == (codec.reference_decode)(twin) {
+                0
+            } else {
+                code_step(codec, got, twin)
+            }
+        })
+        .max()
+        .unwrap_or(0)
+}
+
 impl EmulatedCodec {
     /// Decoder lengths against the conforming budget: the largest `|len − 1|`, and whether it is
     /// within [`UNIT_TOLERANCE_CONFORMING`] (non-finite results count as beyond).
@@ -167,26 +196,7 @@ fn codec_sweep(
     };
     let round_trip_length = length_check(&rt.decoded, UNIT_TOLERANCE_CONFORMING);
     let decoder = decode_codes_with(codec, codes, &decode)?;
-    let max_code_step = rt
-        .codes
-        .iter()
-        .zip(inputs)
-        .map(|(&got, &n)| {
-            let twin = (codec.twin_encode)(glam::Vec3::from(n));
-            // Codes of one direction (the four corners of the octahedral square are all −z)
-            // are no step apart.
-            let (a, b) = (
-                (codec.reference_decode)(got),
-                (codec.reference_decode)(twin),
-            );
-            if a == b {
-                0
-            } else {
-                code_step(codec, got, twin)
-            }
-        })
-        .max()
-        .unwrap_or(0);
+    let max_code_step = max_code_step(codec, inputs, &rt.codes);
     Ok(EmulatedCodec {
         round_trip: rt,
         decoder,

@@ -7,6 +7,14 @@ use super::round_trip::is_unit;
 use crate::harness::{Arg, Gpu, HarnessError};
 use crate::precision::metrics::{Mismatches, angle_degrees, widen3};
 
+/// How far a decoded vector may turn from its code's exact direction on a correctly rounded
+/// adapter, in degrees: every decoder here normalises an exact integer vector `D`, so only
+/// the final per-component quotient's rounding (`u = 2^-24` relative each) turns it, by at most
+/// `√2·u` rad; plus `1e-12°` for the f64 angle's own rounding (about `1e-15°`).
+pub fn decode_angle_deg() -> f64 {
+    (2f64.sqrt() * 2f64.powi(-24)).to_degrees() + 1e-12
+}
+
 /// A decoder run over a set of codes.
 #[derive(Clone, Debug, Default)]
 pub struct DecoderCheck {

@@ -22,7 +22,9 @@ pub use decision::{
     DecisionInput, SCORES_FN, SearchedDecision, chain_choice, decision_inputs, scores_source,
     searched_decisions,
 };
-pub use decoder::{DecoderCheck, decode_all_32, decode_codes, decode_codes_with, decode_range};
+pub use decoder::{
+    DecoderCheck, decode_all_32, decode_angle_deg, decode_codes, decode_codes_with, decode_range,
+};
 pub use inputs::{
     adversarial_directions, bad_inputs, fibonacci_directions, near_tie_directions,
     stratified_codes32,
