@@ -512,6 +512,22 @@ pub fn evaluates_like_the_twins() -> bool {
     })
 }
 
+/// Of a promise's two bounds, the one that applies to this adapter, with its name: the
+/// correctly rounded one where the adapter evaluates like the twins
+/// ([`evaluates_like_the_twins`]: round to nearest, correctly rounded quotients), the bound on
+/// every conforming adapter elsewhere.
+#[allow(dead_code)]
+pub fn bound_here(correctly_rounded: f64, conforming: f64) -> (f64, &'static str) {
+    if evaluates_like_the_twins() {
+        (correctly_rounded, "correctly rounded")
+    } else {
+        (
+            conforming,
+            "every conforming adapter (this one does not evaluate like the twins)",
+        )
+    }
+}
+
 /// The precise encoder `c` over near-tie `inputs`: the WGSL's codes equal the Rust twin's bit
 /// for bit where the adapter evaluates like the twins ([`evaluates_like_the_twins`], lavapipe); elsewhere each code is within the conforming
 /// slack `sweep::conforming::optimality_tolerance_conforming_deg` of the closest candidate.
