@@ -550,6 +550,18 @@ fn rasteriser_interpolates_corner_rays_to_each_pixels_ray() {
         source: wgpu::ShaderSource::Wgsl(shader.into()),
     });
     let format = wgpu::TextureFormat::Rgba32Float;
+    // Each pixel's interpolated ray is read back in full f32: the adapter must render to it.
+    assert!(
+        g.adapter()
+            .get_texture_format_features(format)
+            .allowed_usages
+            .contains(wgpu::TextureUsages::RENDER_ATTACHMENT),
+        "{} ({:?}) cannot render to Rgba32Float (wgpu's GL backend cannot), which this test \
+         reads each pixel's interpolated ray from: run it on a Vulkan, Metal or Direct3D 12 \
+         adapter (unset WGPU_BACKEND; lavapipe is one: bash .ci/setup-adapter)",
+        g.adapter_info().name,
+        g.adapter_info().backend
+    );
     let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: None,
         layout: None,

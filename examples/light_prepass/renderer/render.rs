@@ -19,9 +19,20 @@ pub struct Device {
 }
 
 impl Device {
-    /// Open the best adapter (a GPU before a software one). Fails with the fix when none exists.
+    /// Open the best adapter (a GPU before a software one). Fails with the fix when none exists,
+    /// or when the adapter is wgpu's GL backend: the lighting passes read the depth target with
+    /// `textureLoad`, which naga's GLSL backend cannot write for depth textures.
     pub fn new() -> Result<Self, String> {
         let gpu = prepass::harness::Gpu::new().map_err(|e| e.to_string())?;
+        if gpu.adapter_info().backend == wgpu::Backend::Gl {
+            return Err(format!(
+                "the light pre-pass renderer reads its depth target with textureLoad, which naga \
+                 cannot translate to GLSL for depth textures, so it does not run on wgpu's GL \
+                 backend ({}): run it on a Vulkan, Metal or Direct3D 12 adapter (unset \
+                 WGPU_BACKEND, or set it to vulkan; lavapipe is one: bash .ci/setup-adapter)",
+                gpu.adapter_info().name
+            ));
+        }
         let timestamps = gpu
             .device()
             .features()
