@@ -885,10 +885,10 @@ fn identity_reproduces_every_shipped_module_bit_for_bit() {
 /// Every [`prepass::conforming::EXACT_FUNCTIONS`] entry is exact on its domain: emulated like
 /// any other function (`Emulation::with_exact_functions_emulated`) under the upper, lower and
 /// seeded policies, it returns the host's result, compared as values (WGSL lets an
-/// implementation ignore the sign of a zero). Domain: the lattices' whole-number codes (passed
-/// to `oct_lattice` as its odd coordinates `2c − M`) — every 8-bit code; at 12 and 16 bits
-/// every code with a coordinate at an end of the range or beside the middle (where the fold and
-/// the zero components are) and the other over every value, and 2^16 seeded codes. The argument for exactness (every value an integer below 2^24) does not
+/// implementation ignore the sign of a zero). Domain: the lattices' whole-number codes — every
+/// 8-bit code; at 12 and 16 bits every code with a coordinate at an end of the range or beside
+/// the middle (where the fold and the zero components are) and the other over every value, and
+/// 2^16 seeded codes. The argument for exactness (every value an integer below 2^24) does not
 /// depend on the code, so these codes check it where the values are largest and zero.
 #[test]
 fn exact_functions_are_exact_on_their_domain() {
@@ -920,13 +920,11 @@ fn exact_functions_are_exact_on_their_domain() {
         (NORMAL_OCT, "oct_lattice", 16),
         (NORMAL_HEMIOCT, "hemioct_lattice", 12),
     ] {
-        let mut c = codes(bits);
+        let c = codes(bits);
         let mf = ((1u32 << bits) - 1) as f32;
-        let m = vec![mf; c.len()];
+        let (m, mm) = (vec![mf; c.len()], vec![[mf; 2]; c.len()]);
         let args = if function == "oct_lattice" {
-            // oct_lattice takes the odd coordinates ab = 2c - M of the code, as its callers do.
-            c.iter_mut().for_each(|k| *k = k.map(|x| 2.0 * x - mf));
-            vec![Arg::column(&c), Arg::column(&m)]
+            vec![Arg::column(&c), Arg::column(&m), Arg::column(&mm)]
         } else {
             vec![Arg::column(&c)]
         };

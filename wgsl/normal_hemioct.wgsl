@@ -58,14 +58,13 @@ fn hemioct_lattice(c: vec2<f32>) -> vec3<f32> {
 }
 // One step of the precise encoder's choice, as normal_oct.wgsl's oct_try: the code c00 + off
 // replaces the best so far (code in xy, score in z) only if its score, sin^2 of the angle to s
-// times |s|^2, is strictly smaller (the z lane of one vector compare). |D|^2 <= M^2 < 2^24,
-// so its float dot is exact.
+// times |s|^2, is strictly smaller. |D|^2 <= M^2 < 2^24, so its float dot is exact.
 fn hemioct_try(s: vec3<f32>, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -> vec3<f32> {
     let c = c00 + off;
     let d = hemioct_lattice(c);
     let x = cross(s, d);
-    let cand = vec3<f32>(c, dot(x, x) / dot(d, d));
-    return select(best, cand, (cand < best).zzz);
+    let score = dot(x, x) / dot(d, d);
+    return select(best, vec3<f32>(c, score), score < best.z);
 }
 // Precise: the best of the four codes around the continuous coordinates, tried in the order
 // (0,0), (1,0), (0,1), (1,1), a later one winning only if strictly closer ((0,0) always

@@ -65,37 +65,38 @@ fn oct_continuous(s: vec3<f32>, m: f32) -> vec2<f32> {
     return t * m;
 }
 
-// The integer direction D of the odd lattice coordinates ab = 2c - M of code c (see the
-// header), in f32: every value is an integer below 2^17, so every operation is exact on any
-// conforming adapter, fused or not. z = M - |a| - |b|; when z < 0 the code is folded, and then
+// The integer direction D that code c (whole numbers, in f32) stands for (see the header), in
+// f32: every value is an integer below 2^17, so every operation is exact on any conforming
+// adapter, fused or not. z = M - |a| - |b|; when z < 0 the code is folded, and then
 // |D.xy| = (M - |b|, M - |a|) = |(a, b)| + z. a and b are odd (M is odd), so sign() is +-1.
-// Callers form ab themselves, so a caller with a constant M pays no splat of M.
-fn oct_lattice(ab: vec2<f32>, m: f32) -> vec3<f32> {
+// mm is vec2(M), passed in so that a caller with a constant M pays for no splat.
+fn oct_lattice(c: vec2<f32>, m: f32, mm: vec2<f32>) -> vec3<f32> {
+    let ab = (c + c) - mm;
     let z = m - dot(abs(ab), vec2<f32>(1.0));
     return vec3<f32>(ab + sign(ab) * min(z, 0.0), z);
 }
 
 // One step of the precise encoder's choice: the code c00 + off, scored by sin^2 of the angle
 // between s and its direction D (|s x D|^2 / |D|^2, up to the common factor |s|^2), replaces
-// the best so far (code in xy, score in z) only if its score is strictly smaller (the z lane
-// of a component-wise comparison: one vector compare, no scalar splat). Sine, not cosine: at
-// oct32's 2e-5 rad a cosine is 1.0 in f32. One function for the score and the step: the four
-// candidates share its code. |D|^2 as a float dot is exact while M^2 < 2^24 (8 and 12 bits
-// per axis: integer squares and sums below 2^24), so it is the once-rounded |D|^2.
+// the best so far (code in xy, score in z) only if its score is strictly smaller. Sine, not
+// cosine: at oct32's 2e-5 rad a cosine is 1.0 in f32. One function for the score and the step:
+// the four candidates share its code. |D|^2 as a float dot is exact while M^2 < 2^24 (8 and
+// 12 bits per axis: integer squares and sums below 2^24), so it is the once-rounded |D|^2.
 fn oct_try(s: vec3<f32>, m: f32, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -> vec3<f32> {
     let c = c00 + off;
-    let d = oct_lattice((c + c) - vec2<f32>(m), m);
+    let d = oct_lattice(c, m, vec2<f32>(m));
     let x = cross(s, d);
-    let cand = vec3<f32>(c, dot(x, x) / dot(d, d));
-    return select(best, cand, (cand < best).zzz);
+    let score = dot(x, x) / dot(d, d);
+    return select(best, vec3<f32>(c, score), score < best.z);
 }
 
 // oct_try for 16 bits per axis (M = 65535 written in), where |D|^2 (up to M^2 < 2^32) needs
 // 32 bits: summed exactly in u32 and rounded once, as the narrower codes' dot is. A float dot
-// would round each square and could flip a near-tie.
+// would round each square and could flip a near-tie. The choice reads the z lane of one
+// vector compare (an instruction fewer than a scalar compare splatted to the select).
 fn oct_try_wide(s: vec3<f32>, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -> vec3<f32> {
     let c = c00 + off;
-    let d = oct_lattice((c + c) - vec2<f32>(65535.0), 65535.0);
+    let d = oct_lattice(c, 65535.0, vec2<f32>(65535.0));
     let x = cross(s, d);
     let q = vec3<u32>(abs(d));
     let sq = q * q;
@@ -146,9 +147,9 @@ fn oct_encode_round(n: vec3<f32>, bits: u32) -> u32 {
 // The unit vector of code p with `bits` bits per axis: its integer direction D, normalised.
 fn oct_decode(p: u32, bits: u32) -> vec3<f32> {
     let m = (1u << bits) - 1u;
-    let c = vec2<f32>(vec2<u32>(p & m, (p >> bits) & m));
+    let uv = vec2<u32>(p & m, (p >> bits) & m);
     let mf = f32(m);
-    return normalize(oct_lattice((c + c) - vec2<f32>(mf), mf));
+    return normalize(oct_lattice(vec2<f32>(uv), mf, vec2<f32>(mf)));
 }
 
 // Byte k of the u32 from a unorm8 channel: round(255 c) after clamping; NaN counts as 0.

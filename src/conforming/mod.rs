@@ -299,9 +299,8 @@ pub mod allowance {
 pub const EXACT_FUNCTIONS: &[(&str, &str)] = &[
     (
         "oct_lattice",
-        "wgsl/normal_oct.wgsl: called with ab = 2c - M of whole-number codes c <= M (odd \
-         integers, |ab| <= M) and M = 2^N - 1 <= 65535, every value it computes is an integer \
-         of magnitude below 2^17",
+        "wgsl/normal_oct.wgsl: called with whole-number codes c <= M, M = 2^N - 1 <= 65535 \
+         and mm = vec2(M), every value it computes is an integer of magnitude below 2^17",
     ),
     (
         "hemioct_lattice",
