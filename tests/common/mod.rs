@@ -117,7 +117,7 @@ pub fn assert_twin_unorm_form(
 /// A round trip on the adapter keeps the twins' promise for `codec` over `inputs`: bit for bit
 /// the Rust encoder's codes and decoder's vectors, each decoded vector unit within
 /// `UNIT_TOLERANCE`, where the adapter evaluates like the twins ([`evaluates_like_the_twins`]:
-/// lavapipe, Mesa 25, Dawn's Vulkan path); on any other conforming adapter (naga's GLSL on
+/// lavapipe); on any other conforming adapter (naga's GLSL on
 /// Mesa's GL, a GPU with a 2.5-ULP division or fused products) every code within one code step
 /// of the twin's and every decode unit within `UNIT_TOLERANCE_CONFORMING`, the differences from
 /// the twins printed. `what` names the codec and set.
@@ -529,8 +529,9 @@ pub fn bound_here(correctly_rounded: f64, conforming: f64) -> (f64, &'static str
 }
 
 /// The precise encoder `c` over near-tie `inputs`: the WGSL's codes equal the Rust twin's bit
-/// for bit where the adapter evaluates like the twins ([`evaluates_like_the_twins`], lavapipe); elsewhere each code is within the conforming
-/// slack `sweep::conforming::optimality_tolerance_conforming_deg` of the closest candidate.
+/// for bit where the adapter evaluates like the twins ([`evaluates_like_the_twins`], lavapipe);
+/// elsewhere each code is within the conforming slack
+/// `sweep::conforming::optimality_tolerance_conforming_deg` of the closest candidate.
 #[allow(dead_code)]
 pub fn assert_near_ties(c: &prepass::sweep::normal::Codec, inputs: &[[f32; 3]]) {
     use prepass::sweep::conforming::optimality_tolerance_conforming_deg;
