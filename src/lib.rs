@@ -44,6 +44,9 @@ pub mod depth24;
 #[cfg(feature = "harness")]
 #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub mod harness;
+#[cfg(feature = "isa")]
+#[cfg_attr(docsrs, doc(cfg(feature = "isa")))]
+pub mod isa;
 pub mod lighting;
 pub mod linear_depth;
 pub mod normal;

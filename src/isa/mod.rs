@@ -1,0 +1,387 @@
+//! What a WGSL function costs on real GPU instruction sets: AMD's ACO and Intel's brw compile it
+//! without the hardware, and their own statistics are read back.
+//!
+//! Mesa's RADV (ACO) and ANV (brw) Vulkan drivers run on a machine with no GPU behind Mesa's
+//! noop kernel-driver shims: they create pipelines, and report per pipeline what shader-db and
+//! Fossilize read through `VK_KHR_pipeline_executable_properties` — instruction counts,
+//! registers, occupancy, ACO's latency and inverse-throughput model, brw's cycle estimate. They
+//! cannot run anything (submissions do nothing), so every compile happens in a **child
+//! process** with its own driver environment, never in the caller's process: the child is the
+//! caller's own executable, entered before `main` (see `child.rs`), so a test binary, errplot
+//! and a user's program all work without a helper to install. Mesa's shader cache is off in the
+//! child, so every figure is a fresh compile.
+//!
+//! **A figure is a static compiler estimate**, for the Mesa version it names: what the
+//! compiler emitted and its own scheduling model, not a timing. Compare within one target:
+//! AMD's figures are per wave64, Intel's per SIMD thread.
+//!
+//! # How a function is wrapped
+//! As the harness wraps it ([`Signature::read`], the same [`Feed`]s): a compute kernel loads
+//! every argument (columns from storage buffers, splats from a uniform, as a renderer's uniform),
+//! calls the function and stores its result's bits. The kernel evaluates
+//! [`Costing::independent`] (`k`, default 8) independent inputs per invocation, so a small
+//! function does not hide under the memory floor of ACO's throughput model. The same wrap
+//! without the call — the same loads, and the XOR of the arguments' first lanes stored in every
+//! result lane — is the **baseline**; every per-evaluation figure is net of it:
+//!
+//! - instructions, ALU instructions, ACO inverse throughput, brw cycles: `(f_k − b_k) / k`, the
+//!   k-way kernel minus the k-way baseline, per evaluation;
+//! - ACO latency: `f_1 − b_1`, one evaluation's critical path (its own kernel, `k = 1`);
+//! - registers, spills and occupancy: the `k = 1` kernel as it is (not net: what a renderer's
+//!   shader pays holding one evaluation), beside the baseline's.
+//!
+//! # Setup
+//! `bash .ci/setup-gpu-compilers` unpacks Mesa 25's drivers and shims from Debian
+//! bookworm-backports and builds Intel's shim from Mesa's source package (a minute or two,
+//! once); [`Costing::new`] finds them through [`ROOT_VAR`]. A target whose pieces are missing
+//! is reported as not measured, with the reason, never as a number.
+//!
+//! ```no_run
+//! use prepass::isa::{Costing, Function, Target};
+//! let report = Costing::new()
+//!     .targets(&[Target::Rdna2, Target::XeHpg])
+//!     .cost(&[Function::new(prepass::wgsl::NORMAL_OCT, "encode_normal_oct24")])?;
+//! for t in &report.targets {
+//!     match &t.outcome {
+//!         Ok(costs) => {
+//!             let c = costs.functions[0].as_ref()?;
+//!             println!("{}: {:.1} instructions ({})", t.target, c.net.instructions, costs.driver_info);
+//!         }
+//!         Err(why) => println!("{}: not measured: {why}", t.target),
+//!     }
+//! }
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+mod child;
+mod kernel;
+mod stats;
+mod target;
+
+pub use child::CHILD_VAR;
+pub use kernel::ENTRY;
+pub use stats::{Cost, Net, Stats};
+pub use target::{ROOT_VAR, Target, Vendor, default_root};
+
+use crate::harness::{Feed, Signature};
+use std::collections::HashMap;
+use std::path::PathBuf;
+use std::process::Command;
+
+/// A WGSL function to cost: a source valid on its own, the function's name, and how each
+/// argument is fed (by default every argument a column, one value per evaluation).
+#[derive(Clone, Debug)]
+pub struct Function {
+    /// The WGSL source holding the function and whatever it calls.
+    pub source: String,
+    /// The function's name.
+    pub function: String,
+    /// One feed per parameter, or empty for "every argument a column".
+    pub feeds: Vec<Feed>,
+}
+
+impl Function {
+    /// `function` from `source`, every argument a column.
+    pub fn new(source: &str, function: &str) -> Self {
+        Function {
+            source: source.to_string(),
+            function: function.to_string(),
+            feeds: Vec::new(),
+        }
+    }
+
+    /// The same, with the feeds given (a [`Feed::Splat`] is read from a uniform, as a
+    /// renderer's per-frame constants are; [`Feed::Index`] is costed as a column).
+    pub fn with_feeds(mut self, feeds: &[Feed]) -> Self {
+        self.feeds = feeds.to_vec();
+        self
+    }
+}
+
+/// Why nothing could be costed at all (per-target and per-function failures are reported in
+/// the [`Report`] instead).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct IsaError(pub String);
+
+impl std::fmt::Display for IsaError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for IsaError {}
+
+/// Every function's cost on one target, with the driver that compiled them.
+#[derive(Clone, Debug)]
+pub struct TargetCosts {
+    /// The device and driver as the driver names them, e.g. `AMD Radeon RX 6800 (RADV NAVI21)
+    /// (radv)`.
+    pub driver: String,
+    /// The driver's version string, e.g. `Mesa 25.0.7-2~bpo12+1`.
+    pub driver_info: String,
+    /// One entry per function, in order; `Err` holds the compiler's or naga's message.
+    pub functions: Vec<Result<Cost, String>>,
+}
+
+/// One target's outcome.
+#[derive(Clone, Debug)]
+pub struct TargetReport {
+    /// The target.
+    pub target: Target,
+    /// Its costs, or why it was not measured (a missing piece, a driver that did not start).
+    pub outcome: Result<TargetCosts, String>,
+}
+
+/// What [`Costing::cost`] found, one entry per target asked for.
+#[derive(Clone, Debug)]
+pub struct Report {
+    /// In the order the targets were given.
+    pub targets: Vec<TargetReport>,
+}
+
+impl Report {
+    /// The cost of function `index` on `target`, if it was measured.
+    pub fn get(&self, target: Target, index: usize) -> Option<&Cost> {
+        let t = self.targets.iter().find(|t| t.target == target)?;
+        t.outcome.as_ref().ok()?.functions.get(index)?.as_ref().ok()
+    }
+
+    /// The driver version that compiled for `target`, if it was measured.
+    pub fn driver_info(&self, target: Target) -> Option<&str> {
+        let t = self.targets.iter().find(|t| t.target == target)?;
+        Some(t.outcome.as_ref().ok()?.driver_info.as_str())
+    }
+}
+
+/// A costing run: which targets, how many independent evaluations per invocation, where the
+/// compilers are.
+#[derive(Clone, Debug)]
+pub struct Costing {
+    root: Option<PathBuf>,
+    targets: Vec<Target>,
+    independent: u32,
+    disassembly: bool,
+}
+
+impl Default for Costing {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Costing {
+    /// Every target of [`Target::ALL`], 8 evaluations per invocation, the compilers from
+    /// [`default_root`].
+    pub fn new() -> Self {
+        Costing {
+            root: default_root(),
+            targets: Target::ALL.to_vec(),
+            independent: 8,
+            disassembly: false,
+        }
+    }
+
+    /// Cost on these targets only.
+    pub fn targets(mut self, targets: &[Target]) -> Self {
+        self.targets = targets.to_vec();
+        self
+    }
+
+    /// Independent evaluations per invocation (at least 1).
+    pub fn independent(mut self, k: u32) -> Self {
+        self.independent = k.max(1);
+        self
+    }
+
+    /// Where `.ci/setup-gpu-compilers` put the compilers.
+    pub fn root(mut self, root: impl Into<PathBuf>) -> Self {
+        self.root = Some(root.into());
+        self
+    }
+
+    /// Also keep each function's disassembly (the `k = 1` kernel) in [`Cost::disassembly`].
+    pub fn disassembly(mut self, keep: bool) -> Self {
+        self.disassembly = keep;
+        self
+    }
+
+    /// Compile every function for every target, one child process per target (run side by
+    /// side), and return the net per-evaluation figures. A function naga rejects fails the call;
+    /// a target that cannot be compiled for is reported in its [`TargetReport`].
+    pub fn cost(&self, functions: &[Function]) -> Result<Report, IsaError> {
+        let dir = scratch_dir()?;
+        let result = self.cost_in(&dir, functions);
+        let _ = std::fs::remove_dir_all(&dir);
+        result
+    }
+
+    fn cost_in(&self, dir: &std::path::Path, functions: &[Function]) -> Result<Report, IsaError> {
+        // Four kernels per function (k-way and one-way, function and baseline); baselines are
+        // shared between functions with the same signature and feeds.
+        let mut modules: Vec<(PathBuf, String)> = Vec::new();
+        let mut by_source: HashMap<String, usize> = HashMap::new();
+        let mut plan = Vec::new();
+        let k = self.independent;
+        for f in functions {
+            let sig = Signature::read(&f.source, &f.function)
+                .map_err(|e| IsaError(format!("{}: {e}", f.function)))?;
+            let feeds = if f.feeds.is_empty() {
+                vec![Feed::Column; sig.params.len()]
+            } else if f.feeds.len() == sig.params.len() {
+                f.feeds.clone()
+            } else {
+                return Err(IsaError(format!(
+                    "{}: {} feeds for {} parameters",
+                    f.function,
+                    f.feeds.len(),
+                    sig.params.len()
+                )));
+            };
+            let mut ids = [0usize; 4];
+            for (slot, (kk, evaluate)) in [(k, true), (k, false), (1, true), (1, false)]
+                .into_iter()
+                .enumerate()
+            {
+                let w = kernel::wrap(&f.source, &sig, &feeds, kk, evaluate);
+                let id = match by_source.get(&w.source) {
+                    Some(&id) => id,
+                    None => {
+                        let checked = crate::wgsl::parse_and_validate(&w.source)
+                            .map_err(|e| IsaError(format!("{}: {e}", f.function)))?;
+                        let words = naga::back::spv::write_vec(
+                            &checked.module,
+                            &checked.info,
+                            &naga::back::spv::Options::default(),
+                            Some(&naga::back::spv::PipelineOptions {
+                                shader_stage: naga::ShaderStage::Compute,
+                                entry_point: ENTRY.to_string(),
+                            }),
+                        )
+                        .map_err(|e| IsaError(format!("{}: SPIR-V: {e}", f.function)))?;
+                        let path = dir.join(format!("m{}.spv", modules.len()));
+                        let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+                        std::fs::write(&path, bytes)
+                            .map_err(|e| IsaError(format!("{}: {e}", path.display())))?;
+                        by_source.insert(w.source.clone(), modules.len());
+                        modules.push((path, w.bindings));
+                        modules.len() - 1
+                    }
+                };
+                ids[slot] = id;
+            }
+            plan.push(ids);
+        }
+        let root = self.root.clone();
+        let targets = std::thread::scope(|scope| {
+            let handles: Vec<_> = self
+                .targets
+                .iter()
+                .map(|&target| {
+                    let (modules, plan, root) = (&modules, &plan, &root);
+                    let disassembly = self.disassembly;
+                    scope.spawn(move || TargetReport {
+                        target,
+                        outcome: compile_for(
+                            target,
+                            root.as_deref(),
+                            dir,
+                            modules,
+                            plan,
+                            k,
+                            disassembly,
+                        ),
+                    })
+                })
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| h.join().expect("a costing thread panicked"))
+                .collect()
+        });
+        Ok(Report { targets })
+    }
+}
+
+fn scratch_dir() -> Result<PathBuf, IsaError> {
+    use std::sync::atomic::{AtomicU32, Ordering};
+    static NEXT: AtomicU32 = AtomicU32::new(0);
+    let dir = std::env::temp_dir().join(format!(
+        "prepass-isa-{}-{}",
+        std::process::id(),
+        NEXT.fetch_add(1, Ordering::Relaxed)
+    ));
+    std::fs::create_dir_all(&dir).map_err(|e| IsaError(format!("{}: {e}", dir.display())))?;
+    Ok(dir)
+}
+
+/// One child process for `target`: write the job, run, read and net the answer.
+fn compile_for(
+    target: Target,
+    root: Option<&std::path::Path>,
+    dir: &std::path::Path,
+    modules: &[(PathBuf, String)],
+    plan: &[[usize; 4]],
+    k: u32,
+    disassembly: bool,
+) -> Result<TargetCosts, String> {
+    let root = root.ok_or_else(|| {
+        format!("no compilers: set {ROOT_VAR} (bash .ci/setup-gpu-compilers fills it)")
+    })?;
+    let env = target::environment(root, target)?;
+    // The one-way function kernels (slot 2) carry the disassembly when asked.
+    let wants_asm: Vec<bool> = (0..modules.len())
+        .map(|m| disassembly && plan.iter().any(|ids| ids[2] == m))
+        .collect();
+    let mut job = String::new();
+    for ((path, bindings), asm) in modules.iter().zip(&wants_asm) {
+        job.push_str(&format!(
+            "module\t{}\t{ENTRY}\t{bindings}\t{}\n",
+            path.display(),
+            u8::from(*asm)
+        ));
+    }
+    let job_path = dir.join(format!("job-{}", target.chip()));
+    std::fs::write(&job_path, job).map_err(|e| format!("{}: {e}", job_path.display()))?;
+    let exe = std::env::current_exe().map_err(|e| format!("current_exe: {e}"))?;
+    let mut cmd = Command::new(&exe);
+    cmd.env(CHILD_VAR, &job_path)
+        .envs(env)
+        .stdin(std::process::Stdio::null())
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::piped());
+    let out = cmd
+        .output()
+        .map_err(|e| format!("cannot start {}: {e}", exe.display()))?;
+    let answer_path = {
+        let mut p = job_path.into_os_string();
+        p.push(".out");
+        PathBuf::from(p)
+    };
+    let answer = std::fs::read_to_string(&answer_path).map_err(|_| {
+        format!(
+            "the compiling child exited with {} and wrote no answer; stderr: {}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr).trim()
+        )
+    })?;
+    let parsed = stats::parse_answer(&answer, modules.len(), target.vendor())?;
+    if let Some(name) = stats::device_mismatch(target, &parsed.driver) {
+        return Err(format!(
+            "the driver compiled for {name}, not {}: the shim did not take",
+            target.chip()
+        ));
+    }
+    let functions = plan
+        .iter()
+        .map(|ids| {
+            let get = |m: usize| parsed.modules[m].clone();
+            let (fk, bk, f1, b1) = (get(ids[0])?, get(ids[1])?, get(ids[2])?, get(ids[3])?);
+            Ok(Cost::net(k, &fk, &bk, &f1, &b1))
+        })
+        .collect();
+    Ok(TargetCosts {
+        driver: parsed.driver,
+        driver_info: parsed.driver_info,
+        functions,
+    })
+}
