@@ -122,3 +122,55 @@ pub(crate) fn wrap(user: &str, sig: &Signature, feeds: &[Feed], k: u32, evaluate
         bindings,
     }
 }
+
+/// A library's witness kernel: every function whose signature the harness reads
+/// ([`Signature::read`]) called once on arguments loaded from one storage buffer (each
+/// argument its own words), the XOR of every result's bits stored, so that no call is dead.
+/// Returns the kernel and the functions it calls.
+pub(crate) fn library(user: &str) -> Result<(Wrapped, Vec<String>), String> {
+    let checked = crate::wgsl::parse_and_validate(user).map_err(|e| e.to_string())?;
+    let mut body = String::from("    var acc = 0u;\n");
+    let mut names = Vec::new();
+    let mut word = 0usize;
+    for (_, f) in checked.module.functions.iter() {
+        let Some(name) = &f.name else { continue };
+        let Ok(sig) = Signature::read(user, name) else {
+            continue;
+        };
+        let mut args = Vec::new();
+        for p in &sig.params {
+            let bits = lane_read(p.ty, "prepass_isa_lib_in", &format!("{word}u + gid.x"));
+            word += p.ty.words();
+            args.push(if p.ty.scalar == Scalar::U32 {
+                bits
+            } else {
+                format!("bitcast<{}>({bits})", p.ty.wgsl())
+            });
+        }
+        let r = format!("bitcast<{}>({name}({}))", sig.result.wgsl_bits(), args.join(", "));
+        let _ = writeln!(body, "    {{ let r = {r};");
+        for lane in 0..sig.result.words() {
+            let v = if sig.result.words() == 1 {
+                "r".to_string()
+            } else {
+                format!("r.{}", ["x", "y", "z", "w"][lane])
+            };
+            let _ = writeln!(body, "    acc ^= {v};");
+        }
+        body.push_str("    }\n");
+        names.push(name.clone());
+    }
+    let source = format!(
+        "{user}\n@group(0) @binding(0) var<storage, read> prepass_isa_lib_in: array<u32>;\n\
+         @group(0) @binding(1) var<storage, read_write> prepass_isa_out: array<u32>;\n\
+         @compute @workgroup_size({WORKGROUP_SIZE})\n\
+         fn {ENTRY}(@builtin(global_invocation_id) gid: vec3<u32>) {{\n{body}    prepass_isa_out[gid.x] = acc;\n}}\n"
+    );
+    Ok((
+        Wrapped {
+            source,
+            bindings: "rw".into(),
+        },
+        names,
+    ))
+}

@@ -246,22 +246,8 @@ impl Costing {
                 let id = match by_source.get(&w.source) {
                     Some(&id) => id,
                     None => {
-                        let checked = crate::wgsl::parse_and_validate(&w.source)
+                        let path = spirv_file(dir, modules.len(), &w.source)
                             .map_err(|e| IsaError(format!("{}: {e}", f.function)))?;
-                        let words = naga::back::spv::write_vec(
-                            &checked.module,
-                            &checked.info,
-                            &naga::back::spv::Options::default(),
-                            Some(&naga::back::spv::PipelineOptions {
-                                shader_stage: naga::ShaderStage::Compute,
-                                entry_point: ENTRY.to_string(),
-                            }),
-                        )
-                        .map_err(|e| IsaError(format!("{}: SPIR-V: {e}", f.function)))?;
-                        let path = dir.join(format!("m{}.spv", modules.len()));
-                        let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
-                        std::fs::write(&path, bytes)
-                            .map_err(|e| IsaError(format!("{}: {e}", path.display())))?;
                         by_source.insert(w.source.clone(), modules.len());
                         modules.push((path, w.bindings));
                         modules.len() - 1
@@ -314,26 +300,20 @@ fn scratch_dir() -> Result<PathBuf, IsaError> {
     Ok(dir)
 }
 
-/// One child process for `target`: write the job, run, read and net the answer.
-fn compile_for(
+/// One child process for `target`: write the job, run it, read the answer.
+fn run_child(
     target: Target,
     root: Option<&std::path::Path>,
     dir: &std::path::Path,
     modules: &[(PathBuf, String)],
-    plan: &[[usize; 4]],
-    k: u32,
-    disassembly: bool,
-) -> Result<TargetCosts, String> {
+    wants_asm: &[bool],
+) -> Result<stats::Answer, String> {
     let root = root.ok_or_else(|| {
         format!("no compilers: set {ROOT_VAR} (bash .ci/setup-gpu-compilers fills it)")
     })?;
     let env = target::environment(root, target)?;
-    // The one-way function kernels (slot 2) carry the disassembly when asked.
-    let wants_asm: Vec<bool> = (0..modules.len())
-        .map(|m| disassembly && plan.iter().any(|ids| ids[2] == m))
-        .collect();
     let mut job = String::new();
-    for ((path, bindings), asm) in modules.iter().zip(&wants_asm) {
+    for ((path, bindings), asm) in modules.iter().zip(wants_asm) {
         job.push_str(&format!(
             "module\t{}\t{ENTRY}\t{bindings}\t{}\n",
             path.display(),
@@ -343,13 +323,12 @@ fn compile_for(
     let job_path = dir.join(format!("job-{}", target.chip()));
     std::fs::write(&job_path, job).map_err(|e| format!("{}: {e}", job_path.display()))?;
     let exe = std::env::current_exe().map_err(|e| format!("current_exe: {e}"))?;
-    let mut cmd = Command::new(&exe);
-    cmd.env(CHILD_VAR, &job_path)
+    let out = Command::new(&exe)
+        .env(CHILD_VAR, &job_path)
         .envs(env)
         .stdin(std::process::Stdio::null())
         .stdout(std::process::Stdio::null())
-        .stderr(std::process::Stdio::piped());
-    let out = cmd
+        .stderr(std::process::Stdio::piped())
         .output()
         .map_err(|e| format!("cannot start {}: {e}", exe.display()))?;
     let answer_path = {
@@ -371,6 +350,24 @@ fn compile_for(
             target.chip()
         ));
     }
+    Ok(parsed)
+}
+
+/// Net the four kernels of every function compiled for `target`.
+fn compile_for(
+    target: Target,
+    root: Option<&std::path::Path>,
+    dir: &std::path::Path,
+    modules: &[(PathBuf, String)],
+    plan: &[[usize; 4]],
+    k: u32,
+    disassembly: bool,
+) -> Result<TargetCosts, String> {
+    // The one-way function kernels (slot 2) carry the disassembly when asked.
+    let wants_asm: Vec<bool> = (0..modules.len())
+        .map(|m| disassembly && plan.iter().any(|ids| ids[2] == m))
+        .collect();
+    let parsed = run_child(target, root, dir, modules, &wants_asm)?;
     let functions = plan
         .iter()
         .map(|ids| {
@@ -384,4 +381,88 @@ fn compile_for(
         driver_info: parsed.driver_info,
         functions,
     })
+}
+
+/// Write `source` (a module with the [`ENTRY`] compute entry point) as SPIR-V into `dir`.
+fn spirv_file(dir: &std::path::Path, n: usize, source: &str) -> Result<PathBuf, String> {
+    let checked = crate::wgsl::parse_and_validate(source).map_err(|e| e.to_string())?;
+    let words = naga::back::spv::write_vec(
+        &checked.module,
+        &checked.info,
+        &naga::back::spv::Options::default(),
+        Some(&naga::back::spv::PipelineOptions {
+            shader_stage: naga::ShaderStage::Compute,
+            entry_point: ENTRY.to_string(),
+        }),
+    )
+    .map_err(|e| format!("SPIR-V: {e}"))?;
+    let path = dir.join(format!("m{n}.spv"));
+    let bytes: Vec<u8> = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+    std::fs::write(&path, bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok(path)
+}
+
+/// What [`Costing::compile_libraries`] found on one target: each library's kernel, compiled.
+#[derive(Clone, Debug)]
+pub struct LibraryReport {
+    /// The target.
+    pub target: Target,
+    /// The driver's version and one entry per library (the compiler's message on failure), or
+    /// why the target was not measured.
+    pub outcome: Result<(String, Vec<Result<Stats, String>>), String>,
+}
+
+impl Costing {
+    /// Compile whole WGSL libraries (modules of functions, no entry point) for every target, as
+    /// a witness that the compilers accept them: each gets an entry point that calls every
+    /// function whose signature the harness reads on arguments loaded from a buffer, and stores
+    /// the XOR of their results' bits (so no call is dead code); the names of the functions it
+    /// calls come back with the report. A library naga rejects fails the call.
+    pub fn compile_libraries(
+        &self,
+        sources: &[&str],
+    ) -> Result<(Vec<LibraryReport>, Vec<Vec<String>>), IsaError> {
+        let dir = scratch_dir()?;
+        let result = (|| {
+            let mut modules = Vec::new();
+            let mut called = Vec::new();
+            for (n, source) in sources.iter().enumerate() {
+                let (wrapped, names) = kernel::library(source).map_err(IsaError)?;
+                let path = spirv_file(&dir, n, &wrapped.source).map_err(IsaError)?;
+                modules.push((path, wrapped.bindings));
+                called.push(names);
+            }
+            let none = vec![false; modules.len()];
+            let root = self.root.clone();
+            let reports = std::thread::scope(|scope| {
+                let handles: Vec<_> = self
+                    .targets
+                    .iter()
+                    .map(|&target| {
+                        let (modules, none, root, dir) = (&modules, &none, &root, &dir);
+                        scope.spawn(move || LibraryReport {
+                            target,
+                            outcome: run_child(target, root.as_deref(), dir, modules, none).map(
+                                |a| {
+                                    let stats = a
+                                        .modules
+                                        .into_iter()
+                                        .map(|m| m.map(|c| c.stats))
+                                        .collect();
+                                    (a.driver_info, stats)
+                                },
+                            ),
+                        })
+                    })
+                    .collect();
+                handles
+                    .into_iter()
+                    .map(|h| h.join().expect("a compiling thread panicked"))
+                    .collect()
+            });
+            Ok((reports, called))
+        })();
+        let _ = std::fs::remove_dir_all(&dir);
+        result
+    }
 }
