@@ -44,7 +44,10 @@ fn measured(report: &prepass::isa::Report) -> Vec<(Target, &TargetCosts)> {
 }
 
 fn driver_line(targets: &[(Target, &TargetCosts)]) -> String {
-    let mut versions: Vec<&str> = targets.iter().map(|(_, c)| c.driver_info.as_str()).collect();
+    let mut versions: Vec<&str> = targets
+        .iter()
+        .map(|(_, c)| c.driver_info.as_str())
+        .collect();
     versions.dedup();
     format!(
         "<!-- measured on: {} (ACO and brw, static compiler estimates) -->\n",
@@ -135,7 +138,9 @@ fn every_shipped_function_compiles_and_is_costed_on_every_target() {
         "docs/figures.md",
         "isa-costs",
         &table,
-        driver_line(&targets).trim_start_matches("<!-- measured on: ").trim_end_matches(" -->\n"),
+        driver_line(&targets)
+            .trim_start_matches("<!-- measured on: ")
+            .trim_end_matches(" -->\n"),
     );
 }
 
@@ -158,4 +163,228 @@ fn every_shipped_file_compiles_whole_on_every_target() {
             }
         }
     }
+}
+
+/// The README's real-instruction-set costs (block `isa-cost`): each encoding's encoder and
+/// decoder, the depth and roughness functions, on RDNA2 and Xe-HPG beside SPIR-V. A function's
+/// first argument is per pixel (a column); the rest are per-frame constants, fed from a
+/// uniform as a renderer feeds them.
+#[test]
+fn readme_cost_table_on_real_instruction_sets() {
+    let normals = [
+        (
+            "xyz8",
+            "normal_xyz8",
+            "encode_normal_xyz8",
+            "decode_normal_xyz8",
+        ),
+        (
+            "xy fp16",
+            "normal_xy_fp16",
+            "encode_normal_xy_fp16",
+            "decode_normal_xy_fp16",
+        ),
+        (
+            "oct16",
+            "normal_oct",
+            "encode_normal_oct16",
+            "decode_normal_oct16",
+        ),
+        (
+            "oct16 fast",
+            "normal_oct",
+            "encode_normal_oct16_fast",
+            "decode_normal_oct16",
+        ),
+        (
+            "oct24",
+            "normal_oct",
+            "encode_normal_oct24",
+            "decode_normal_oct24",
+        ),
+        (
+            "oct24 fast",
+            "normal_oct",
+            "encode_normal_oct24_fast",
+            "decode_normal_oct24",
+        ),
+        (
+            "oct32",
+            "normal_oct",
+            "encode_normal_oct32",
+            "decode_normal_oct32",
+        ),
+        (
+            "oct32 fast",
+            "normal_oct",
+            "encode_normal_oct32_fast",
+            "decode_normal_oct32",
+        ),
+        (
+            "hemioct24",
+            "normal_hemioct",
+            "encode_normal_hemioct24",
+            "decode_normal_hemioct24",
+        ),
+        (
+            "hemioct24 fast",
+            "normal_hemioct",
+            "encode_normal_hemioct24_fast",
+            "decode_normal_hemioct24",
+        ),
+    ];
+    let others = [
+        ("linear_depth", "view_z_from_depth24"),
+        ("linear_depth", "view_z_from_depth24_consts"),
+        ("linear_depth", "view_z_from_depth"),
+        ("linear_depth", "view_z_from_depth_consts"),
+        ("linear_depth", "view_z_from_reversed_depth"),
+        ("linear_depth", "view_z_from_reversed_depth_consts"),
+        ("linear_depth", "view_z_from_depth_uniform"),
+        ("depth24", "depth24_from_rgb8"),
+        ("depth24", "hyperbolic_depth_from_depth24"),
+        ("roughness", "encode_log_roughness"),
+        ("roughness", "decode_log_roughness"),
+    ];
+    let source = |stem: &str| {
+        prepass::wgsl::FILES
+            .iter()
+            .find(|f| f.name == format!("{stem}.wgsl"))
+            .unwrap()
+            .source
+    };
+    let function = |stem: &str, name: &str| {
+        let src = source(stem);
+        let sig = Signature::read(src, name).unwrap();
+        let feeds: Vec<prepass::harness::Feed> = (0..sig.params.len())
+            .map(|k| {
+                if k == 0 {
+                    prepass::harness::Feed::Column
+                } else {
+                    prepass::harness::Feed::Splat
+                }
+            })
+            .collect();
+        Function::new(src, name).with_feeds(&feeds)
+    };
+    let mut list = Vec::new();
+    for (_, stem, enc, dec) in normals {
+        list.push(function(stem, enc));
+        list.push(function(stem, dec));
+    }
+    for (stem, name) in others {
+        list.push(function(stem, name));
+    }
+    let shown = [Target::Rdna2, Target::XeHpg];
+    let report = Costing::new().targets(&shown).cost(&list).unwrap();
+    let targets = measured(&report);
+    let get = |t: Target, k: usize| {
+        report
+            .get(t, k)
+            .unwrap_or_else(|| panic!("{}: `{}` did not compile", t.label(), list[k].function))
+    };
+    let spirv = |k: usize| {
+        prepass::wgsl::spirv_instruction_count(&list[k].source, &list[k].function)
+            .unwrap()
+            .total
+    };
+    let mut body = String::from(
+        "| encoding | SPIR-V encode / decode | RDNA2 instructions encode / decode | RDNA2 inverse throughput encode / decode | Xe-HPG cycles encode / decode |\n|---|---|---|---|---|\n",
+    );
+    for (i, (name, ..)) in normals.iter().enumerate() {
+        let (e, d) = (2 * i, 2 * i + 1);
+        let (re, rd) = (get(Target::Rdna2, e).net, get(Target::Rdna2, d).net);
+        let (xe, xd) = (get(Target::XeHpg, e).net, get(Target::XeHpg, d).net);
+        let _ = writeln!(
+            body,
+            "| {name} | {} / {} | {:.1} / {:.1} | {} / {} | {} / {} |",
+            spirv(e),
+            spirv(d),
+            re.instructions,
+            rd.instructions,
+            cell(re.inverse_throughput),
+            cell(rd.inverse_throughput),
+            cell(xe.cycles),
+            cell(xd.cycles)
+        );
+    }
+    body.push_str(
+        "\n| function | SPIR-V | RDNA2 instructions | RDNA2 inverse throughput | Xe-HPG cycles |\n|---|---|---|---|---|\n",
+    );
+    for k in 2 * normals.len()..list.len() {
+        let (r, x) = (get(Target::Rdna2, k).net, get(Target::XeHpg, k).net);
+        let _ = writeln!(
+            body,
+            "| `{}` | {} | {:.1} | {} | {} |",
+            list[k].function,
+            spirv(k),
+            r.instructions,
+            cell(r.inverse_throughput),
+            cell(x.cycles)
+        );
+    }
+    common::publish_on(
+        "README.md",
+        "isa-cost",
+        &body,
+        driver_line(&targets)
+            .trim_start_matches("<!-- measured on: ")
+            .trim_end_matches(" -->\n"),
+    );
+}
+
+/// Each precise (hemi-)octahedral encoder's net cost over its rounding sibling's, per target
+/// (docs/figures.md, block `isa-precise-ratio`).
+#[test]
+fn precise_over_rounding_encoders_on_every_target() {
+    let pairs = [
+        ("normal_oct", "encode_normal_oct16"),
+        ("normal_oct", "encode_normal_oct24"),
+        ("normal_oct", "encode_normal_oct32"),
+        ("normal_hemioct", "encode_normal_hemioct24"),
+    ];
+    let mut list = Vec::new();
+    for (stem, name) in pairs {
+        let src = prepass::wgsl::FILES
+            .iter()
+            .find(|f| f.name == format!("{stem}.wgsl"))
+            .unwrap()
+            .source;
+        list.push(Function::new(src, name));
+        list.push(Function::new(src, &format!("{name}_fast")));
+    }
+    let report = Costing::new().cost(&list).unwrap();
+    let targets = measured(&report);
+    let mut body = String::from(
+        "Precise encoder's net cost / its rounding sibling's (`_fast`): instructions, and ACO \
+         inverse throughput (AMD) or brw cycles (Intel).\n\n| encoder |",
+    );
+    for (t, _) in &targets {
+        let _ = write!(body, " {} |", t.label());
+    }
+    let _ = writeln!(body, "\n|---|{}", "---|".repeat(targets.len()));
+    for (i, (_, name)) in pairs.iter().enumerate() {
+        let _ = write!(body, "| `{name}` |");
+        for (t, _) in &targets {
+            let (p, f) = (
+                report.get(*t, 2 * i).expect("compiled").net,
+                report.get(*t, 2 * i + 1).expect("compiled").net,
+            );
+            let _ = write!(
+                body,
+                " {:.2}× / {:.2}× |",
+                p.instructions / f.instructions,
+                p.rank() / f.rank()
+            );
+        }
+        body.push('\n');
+    }
+    common::publish_on(
+        "docs/figures.md",
+        "isa-precise-ratio",
+        &body,
+        driver_line(&targets)
+            .trim_start_matches("<!-- measured on: ")
+            .trim_end_matches(" -->\n"),
+    );
 }

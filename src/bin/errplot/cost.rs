@@ -7,13 +7,16 @@
 //!   invocations, minus its empty-kernel baseline;
 //! - Rust twin ns per call: a batch loop over `black_box`ed inputs, fastest of several batches,
 //!   minus the same loop around an identity function;
-//! - SPIR-V instructions: [`prepass::wgsl::spirv_instruction_count`] (callees included).
+//! - SPIR-V instructions: [`prepass::wgsl::spirv_instruction_count`] (callees included);
+//! - real instruction sets: [`prepass::isa`], AMD's ACO and Intel's brw compiling the WGSL
+//!   for eight targets without a GPU (static compiler estimates, net of a same-loads baseline).
 
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
 use crate::peers::{self, Point};
 use crate::plot::{Chart, Labelled, Scatter};
 use crate::variant::{TimedArg, TwinTimer, Variant, twin_timer};
-use prepass::harness::{Arg, MIN_TIMED_INVOCATIONS, TimingMethod};
+use prepass::harness::{Arg, Feed, MIN_TIMED_INVOCATIONS, TimingMethod};
+use prepass::isa::{Costing, Function, Net, Target};
 use std::fmt::Write as _;
 
 struct Costs {
@@ -21,6 +24,74 @@ struct Costs {
     gpu_gross_ns: Option<f64>,
     cpu_ns: Option<f64>,
     spirv: Option<usize>,
+    /// Net per-evaluation figures per target, in [`Target::ALL`] order.
+    isa: Vec<Option<Net>>,
+}
+
+/// The targets drawn on Pareto plots and checked for dominance: one AMD generation before and
+/// one after RDNA3's dual issue, and Intel's discrete Xe-HPG.
+pub const PLOTTED: [Target; 3] = [Target::Rdna2, Target::Rdna3, Target::XeHpg];
+
+/// What the compilers said: per target, the driver version or why it was not measured.
+struct IsaRun {
+    versions: Vec<Result<String, String>>,
+}
+
+/// Cost every WGSL variant on every target (one child process per target, side by side).
+fn isa_costs(variants: &[Variant]) -> (IsaRun, Vec<Vec<Option<Net>>>) {
+    let functions: Vec<Function> = variants
+        .iter()
+        .filter_map(|v| v.wgsl.as_ref())
+        .map(|w| {
+            let feeds: Vec<Feed> = w
+                .args
+                .iter()
+                .map(|a| match a {
+                    TimedArg::Splat(_) => Feed::Splat,
+                    _ => Feed::Column,
+                })
+                .collect();
+            Function::new(&w.source, &w.function).with_feeds(&feeds)
+        })
+        .collect();
+    let none = || vec![vec![None; Target::ALL.len()]; variants.len()];
+    let report = match Costing::new().cost(&functions) {
+        Ok(r) => r,
+        Err(e) => {
+            let why = format!("naga refused a kernel: {e}");
+            return (
+                IsaRun {
+                    versions: vec![Err(why); Target::ALL.len()],
+                },
+                none(),
+            );
+        }
+    };
+    let mut per_variant = none();
+    let mut versions = Vec::new();
+    for (ti, t) in report.targets.iter().enumerate() {
+        match &t.outcome {
+            Ok(c) => {
+                versions.push(Ok(c.driver_info.clone()));
+                let mut k = 0;
+                for (vi, v) in variants.iter().enumerate() {
+                    if v.wgsl.is_some() {
+                        per_variant[vi][ti] = c.functions[k].as_ref().ok().map(|c| c.net);
+                        k += 1;
+                    }
+                }
+            }
+            Err(why) => versions.push(Err(why.clone())),
+        }
+    }
+    (IsaRun { versions }, per_variant)
+}
+
+fn target_index(t: Target) -> usize {
+    Target::ALL
+        .iter()
+        .position(|&x| x == t)
+        .expect("a listed target")
 }
 
 /// A CSV field, quoted (RFC 4180) when it holds a comma, a quote or a line break.
@@ -49,13 +120,16 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     let loop_ns = cpu_best(&empty) / calls as f64;
     let mut method = None;
     let mut costs = Vec::new();
-    for v in &variants {
+    bar.set_message("real instruction sets (ACO, brw)");
+    let (isa_run, mut isa) = isa_costs(&variants);
+    for (v, isa) in variants.iter().zip(&mut isa) {
         bar.set_message(v.name.clone());
         let mut c = Costs {
             gpu_ns: None,
             gpu_gross_ns: None,
             cpu_ns: None,
             spirv: None,
+            isa: std::mem::take(isa),
         };
         if let Some(w) = &v.wgsl {
             c.spirv = Some(
@@ -136,11 +210,20 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         num(loop_ns)
     ));
     ctx.line("");
-    ctx.line("| family | variant | bits | max error | mean error | RMS error | unit | error measured | GPU ns/eval | GPU gross ns | CPU ns/call | SPIR-V instr. |");
-    ctx.line("|---|---|---|---|---|---|---|---|---|---|---|---|");
+    isa_lines(ctx, &isa_run);
+    ctx.line("| family | variant | bits | max error | mean error | RMS error | unit | error measured | RDNA2 inv. throughput | RDNA3 inv. throughput | Xe-HPG cycles | GPU ns/eval | GPU gross ns | CPU ns/call | SPIR-V instr. |");
+    ctx.line("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
     let mut csv = String::from(
-        "family,variant,bits,unit,max_error,mean_error,rms_error,error_measured,gpu_ns_per_eval,gpu_gross_ns_per_eval,gpu_timing_method,cpu_ns_per_call,spirv_instructions,peer\n",
+        "family,variant,bits,unit,max_error,mean_error,rms_error,error_measured,gpu_ns_per_eval,gpu_gross_ns_per_eval,gpu_timing_method,cpu_ns_per_call,spirv_instructions,peer",
     );
+    for t in Target::ALL {
+        let c = t.chip();
+        let _ = write!(
+            csv,
+            ",{c}_instructions,{c}_alu,{c}_latency,{c}_inverse_throughput,{c}_cycles"
+        );
+    }
+    csv.push('\n');
     let opt = |x: Option<f64>| x.map_or(String::new(), |v| format!("{v}"));
     for (v, c) in variants.iter().zip(&costs) {
         let e = v.error.as_ref();
@@ -150,8 +233,14 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             None => "—".into(),
         };
         let needs_gpu = v.wgsl.is_some();
+        let isa_cell = |t: Target| match (&isa_run.versions[target_index(t)], v.wgsl.is_some()) {
+            (_, false) => "—".to_string(),
+            (Err(_), true) => "not measured".to_string(),
+            (Ok(_), true) => c.isa[target_index(t)]
+                .map_or("compile failed".into(), |n| format!("{:.1}", n.rank())),
+        };
         ctx.line(format!(
-            "| {} | `{}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | `{}` | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
             v.family,
             v.name,
             v.bits,
@@ -160,12 +249,15 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             cell(e.map(|e| e.rms()), true),
             v.unit,
             v.error_from,
+            isa_cell(Target::Rdna2),
+            isa_cell(Target::Rdna3),
+            isa_cell(Target::XeHpg),
             cell(c.gpu_ns, needs_gpu),
             cell(c.gpu_gross_ns, needs_gpu),
             cell(c.cpu_ns, false),
             c.spirv.map_or("—".into(), |s| s.to_string()),
         ));
-        let _ = writeln!(
+        let _ = write!(
             csv,
             "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             csv_field(v.family),
@@ -183,8 +275,21 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             c.spirv.map_or(String::new(), |s| s.to_string()),
             v.name.starts_with(peers::PREFIX),
         );
+        for n in &c.isa {
+            let _ = write!(
+                csv,
+                ",{},{},{},{},{}",
+                opt(n.map(|n| n.instructions)),
+                opt(n.map(|n| n.alu)),
+                opt(n.and_then(|n| n.latency)),
+                opt(n.and_then(|n| n.inverse_throughput)),
+                opt(n.and_then(|n| n.cycles)),
+            );
+        }
+        csv.push('\n');
     }
     ctx.line("");
+    isa_table(ctx, &variants, &costs, &isa_run);
     ctx.csv("error_vs_cost.csv", &csv)?;
 
     // One Pareto plot per family: max error against the best cost measure available.
@@ -195,84 +300,176 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             families.push(v.family);
         }
     }
+    // Per family: one plot on the adapter's (or SPIR-V's) axis, one per plotted target.
+    let base: (String, Box<dyn Fn(&Costs) -> Option<f64>>, String) = if ctx.gpu().is_some() {
+        (
+            "GPU time per evaluation, gross (ns, log scale)".into(),
+            Box::new(|c: &Costs| c.gpu_gross_ns),
+            String::new(),
+        )
+    } else {
+        (
+            "SPIR-V instructions (log scale; no adapter for GPU time)".into(),
+            Box::new(|c: &Costs| c.spirv.map(|s| s as f64)),
+            String::new(),
+        )
+    };
+    let mut axes = vec![base];
+    for t in PLOTTED {
+        let ti = target_index(t);
+        let Ok(version) = &isa_run.versions[ti] else {
+            continue;
+        };
+        let what = match t.vendor() {
+            prepass::isa::Vendor::Amd => "ACO inverse throughput, cycles per wave64",
+            prepass::isa::Vendor::Intel => "brw cycles per SIMD thread",
+        };
+        axes.push((
+            format!(
+                "{} net per evaluation ({what}; static estimate, {version}; log scale)",
+                t.label()
+            ),
+            Box::new(move |c: &Costs| c.isa[ti].map(|n| n.rank()).filter(|&x| x > 0.0)),
+            format!("_{}", t.chip()),
+        ));
+    }
     for family in &families {
         let members: Vec<(&Variant, &Costs)> = variants
             .iter()
             .zip(&costs)
             .filter(|(v, _)| v.family == *family)
             .collect();
-        let unit = members[0].0.unit;
-        let (x_label, pick): (&str, fn(&Costs) -> Option<f64>) = if ctx.gpu().is_some() {
-            ("GPU time per evaluation, gross (ns, log scale)", |c| {
-                c.gpu_gross_ns
-            })
-        } else {
-            (
-                "SPIR-V instructions (log scale; no adapter for GPU time)",
-                |c| c.spirv.map(|s| s as f64),
-            )
-        };
-        // A zero maximum (an exact variant) cannot sit on a log axis: it is drawn at a floor
-        // one decade below the smallest non-zero maximum, and its label says "exact".
-        let nonzero = members
-            .iter()
-            .filter_map(|(v, _)| v.error.map(|e| e.max))
-            .filter(|&m| m > 0.0)
-            .fold(f64::INFINITY, f64::min);
-        let floor = if nonzero.is_finite() {
-            nonzero / 10.0
-        } else {
-            1.0
-        };
-        let points: Vec<Labelled> = members
-            .iter()
-            .filter_map(|(v, c)| {
-                let y = v.error?.max;
-                let x = pick(c)?;
-                Some(Labelled {
-                    peer: v.name.starts_with(peers::PREFIX),
-                    label: if y == 0.0 {
-                        format!("{} (max error 0, drawn at {})", v.name, num(floor))
-                    } else {
-                        v.name.clone()
-                    },
-                    x,
-                    y: if y == 0.0 { floor } else { y },
-                })
-            })
-            .collect();
-        if points.is_empty() {
-            ctx.line(format!(
-                "*Pareto plot for {family}: no points ({NEEDS_ADAPTER} for the error).*"
-            ));
-            ctx.line("");
-            continue;
+        for (x_label, pick, suffix) in &axes {
+            pareto(ctx, family, &members, x_label, pick.as_ref(), suffix)?;
         }
-        let chart = Chart::Scatter(Scatter {
-            title: format!("Max error against cost: {family}"),
-            x_label: x_label.into(),
-            y_label: format!("max error ({unit}, log scale)"),
-            points,
-        });
-        // Named after the family, so a family's file keeps its name as others are added.
-        let slug: String = family
-            .chars()
-            .map(|c| {
-                if c.is_ascii_alphanumeric() {
-                    c.to_ascii_lowercase()
-                } else {
-                    '_'
-                }
-            })
-            .collect();
-        ctx.chart(
-            &chart,
-            &format!("pareto_{slug}"),
-            &format!("Pareto: {family}"),
-        )?;
     }
     dominance_section(ctx, &variants, &costs);
     Ok(())
+}
+
+/// One family's Pareto plot: max error against the cost `pick` reads.
+fn pareto(
+    ctx: &mut Ctx,
+    family: &str,
+    members: &[(&Variant, &Costs)],
+    x_label: &str,
+    pick: &dyn Fn(&Costs) -> Option<f64>,
+    suffix: &str,
+) -> Result<(), String> {
+    let unit = members[0].0.unit;
+    // A zero maximum (an exact variant) cannot sit on a log axis: it is drawn at a floor
+    // one decade below the smallest non-zero maximum, and its label says "exact".
+    let nonzero = members
+        .iter()
+        .filter_map(|(v, _)| v.error.map(|e| e.max))
+        .filter(|&m| m > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    let floor = if nonzero.is_finite() {
+        nonzero / 10.0
+    } else {
+        1.0
+    };
+    let points: Vec<Labelled> = members
+        .iter()
+        .filter_map(|(v, c)| {
+            let y = v.error?.max;
+            let x = pick(c)?;
+            Some(Labelled {
+                peer: v.name.starts_with(peers::PREFIX),
+                label: if y == 0.0 {
+                    format!("{} (max error 0, drawn at {})", v.name, num(floor))
+                } else {
+                    v.name.clone()
+                },
+                x,
+                y: if y == 0.0 { floor } else { y },
+            })
+        })
+        .collect();
+    if points.is_empty() {
+        ctx.line(format!(
+            "*Pareto plot for {family} ({x_label}): no points ({NEEDS_ADAPTER} for the error).*"
+        ));
+        ctx.line("");
+        return Ok(());
+    }
+    let chart = Chart::Scatter(Scatter {
+        title: format!("Max error against cost: {family}"),
+        x_label: x_label.into(),
+        y_label: format!("max error ({unit}, log scale)"),
+        points,
+    });
+    // Named after the family, so a family's file keeps its name as others are added.
+    let slug: String = family
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() {
+                c.to_ascii_lowercase()
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    ctx.chart(
+        &chart,
+        &format!("pareto_{slug}{suffix}"),
+        &format!("Pareto: {family}{}", suffix.replace('_', " on ")),
+    )
+}
+
+/// Where the real-instruction-set columns come from, or why a target has none.
+fn isa_lines(ctx: &mut Ctx, run: &IsaRun) {
+    let mut measured = Vec::new();
+    for (t, v) in Target::ALL.iter().zip(&run.versions) {
+        match v {
+            Ok(version) => measured.push(format!("{} ({version})", t.label())),
+            Err(why) => ctx.line(format!("{}: **not measured**: {why}", t.label())),
+        }
+    }
+    ctx.line("");
+    ctx.line(format!(
+        "Real instruction sets (`prepass::isa`): the WGSL compiled by Mesa's own compilers \
+         without a GPU, for {}. **Static compiler estimates, not timings**, net per evaluation \
+         (8 independent evaluations per invocation, minus a kernel with the same loads and \
+         stores): ACO's inverse throughput on AMD (cycles per wave64 when the SIMD is kept \
+         busy), brw's cycle estimate on Intel (per SIMD thread). Compare within one target, \
+         never across vendors; every target's instructions, ALU instructions and ACO latency \
+         are in `error_vs_cost.csv`, and the next table ranks on all eight.",
+        measured.join(", ")
+    ));
+    ctx.line("");
+}
+
+/// Every variant's rank figure on every target.
+fn isa_table(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs], run: &IsaRun) {
+    ctx.line("### Cost on every real instruction set");
+    ctx.line("");
+    ctx.line(
+        "Net per evaluation: ACO inverse throughput (AMD) or brw cycles (Intel), then net \
+         instructions in parentheses. Static compiler estimates.",
+    );
+    ctx.line("");
+    let mut head = String::from("| family | variant |");
+    for t in Target::ALL {
+        head.push_str(&format!(" {} |", t.label()));
+    }
+    ctx.line(head);
+    ctx.line(format!("|---|---|{}", "---|".repeat(Target::ALL.len())));
+    for (v, c) in variants.iter().zip(costs) {
+        if v.wgsl.is_none() {
+            continue;
+        }
+        let mut row = format!("| {} | `{}` |", v.family, v.name);
+        for (n, version) in c.isa.iter().zip(&run.versions) {
+            row.push_str(&match (n, version) {
+                (_, Err(_)) => " not measured |".to_string(),
+                (None, Ok(_)) => " compile failed |".to_string(),
+                (Some(n), Ok(_)) => format!(" {:.1} ({:.1}) |", n.rank(), n.instructions),
+            });
+        }
+        ctx.line(row);
+    }
+    ctx.line("");
 }
 
 /// The dominance check: for each shipped variant of a family with peers, the peers with no more
@@ -286,7 +483,7 @@ fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
     if with_peers.is_empty() {
         return;
     }
-    let points = |cost: fn(&Costs) -> Option<f64>| -> Vec<Point> {
+    let points = |cost: &dyn Fn(&Costs) -> Option<f64>| -> Vec<Point> {
         variants
             .iter()
             .zip(costs)
@@ -304,15 +501,24 @@ fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
             })
             .collect()
     };
-    let spirv = peers::dominance(&points(|c| c.spirv.map(|s| s as f64)));
-    let gpu = peers::dominance(&points(|c| c.gpu_ns));
+    let spirv = peers::dominance(&points(&|c| c.spirv.map(|s| s as f64)));
+    let gpu = peers::dominance(&points(&|c| c.gpu_ns));
+    let on_targets: Vec<_> = PLOTTED
+        .iter()
+        .map(|&t| {
+            let ti = target_index(t);
+            peers::dominance(&points(&|c| c.isa[ti].map(|n| n.rank())))
+        })
+        .collect();
     ctx.line("### Does a peer dominate a shipped function?");
     ctx.line("");
     ctx.line(
         "A peer dominates a shipped function of its family when it stores no more bits, its max \
          error is no larger and its cost no larger, one of the two strictly smaller; a \
          hemisphere-only encoding is compared with the peer's error over z ≥ 0. Cost: SPIR-V \
-         instructions (static, device-independent) and GPU ns/eval (net).",
+         instructions (static, device-independent), GPU ns/eval (net), and the net cost on \
+         RDNA2, RDNA3 (ACO inverse throughput) and Xe-HPG (brw cycles), static compiler \
+         estimates.",
     );
     if ctx.gpu().is_some_and(|g| g.is_software()) {
         ctx.line("");
@@ -331,10 +537,14 @@ fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
         );
     }
     ctx.line("");
-    ctx.line(
+    let mut head = String::from(
         "| family | shipped function | dominated on SPIR-V count by | dominated on GPU ns by |",
     );
-    ctx.line("|---|---|---|---|");
+    for t in PLOTTED {
+        head.push_str(&format!(" dominated on {} by |", t.arch()));
+    }
+    ctx.line(head);
+    ctx.line(format!("|---|---|---|---|{}", "---|".repeat(PLOTTED.len())));
     for v in variants
         .iter()
         .filter(|v| with_peers.contains(&v.family) && peers::is_shipped(&v.name))
@@ -344,13 +554,20 @@ fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
             Some((_, d)) if d.is_empty() => "none".to_string(),
             Some((_, d)) => d.join(", "),
         };
-        ctx.line(format!(
+        let mut row = format!(
             "| {} | `{}` | {} | {} |",
             v.family,
             v.name,
             find(&spirv),
             find(&gpu)
-        ));
+        );
+        for d in &on_targets {
+            row.push_str(&format!(
+                " {} |",
+                find(d).replace(NEEDS_ADAPTER, "not measured")
+            ));
+        }
+        ctx.line(row);
     }
     ctx.line("");
 }
