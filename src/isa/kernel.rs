@@ -147,7 +147,11 @@ pub(crate) fn library(user: &str) -> Result<(Wrapped, Vec<String>), String> {
                 format!("bitcast<{}>({bits})", p.ty.wgsl())
             });
         }
-        let r = format!("bitcast<{}>({name}({}))", sig.result.wgsl_bits(), args.join(", "));
+        let r = format!(
+            "bitcast<{}>({name}({}))",
+            sig.result.wgsl_bits(),
+            args.join(", ")
+        );
         let _ = writeln!(body, "    {{ let r = {r};");
         for lane in 0..sig.result.words() {
             let v = if sig.result.words() == 1 {

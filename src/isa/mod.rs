@@ -444,11 +444,8 @@ impl Costing {
                             target,
                             outcome: run_child(target, root.as_deref(), dir, modules, none).map(
                                 |a| {
-                                    let stats = a
-                                        .modules
-                                        .into_iter()
-                                        .map(|m| m.map(|c| c.stats))
-                                        .collect();
+                                    let stats =
+                                        a.modules.into_iter().map(|m| m.map(|c| c.stats)).collect();
                                     (a.driver_info, stats)
                                 },
                             ),
