@@ -311,12 +311,12 @@ fn readme_cost_table_on_real_instruction_sets() {
     body.push_str(
         "\n| function | SPIR-V | RDNA2 instructions | RDNA2 inverse throughput | Xe-HPG cycles |\n|---|---|---|---|---|\n",
     );
-    for k in 2 * normals.len()..list.len() {
+    for (k, f) in list.iter().enumerate().skip(2 * normals.len()) {
         let (r, x) = (get(Target::Rdna2, k).net, get(Target::XeHpg, k).net);
         let _ = writeln!(
             body,
             "| `{}` | {} | {:.1} | {} | {} |",
-            list[k].function,
+            f.function,
             spirv(k),
             r.instructions,
             cell(r.inverse_throughput),

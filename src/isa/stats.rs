@@ -167,8 +167,10 @@ pub(crate) struct Answer {
 pub(crate) fn parse_answer(text: &str, modules: usize, vendor: Vendor) -> Result<Answer, String> {
     let mut driver = None;
     let mut out: Vec<Result<Compiled, String>> = Vec::new();
+    // An executable as read so far: its name, subgroup size and statistics.
+    type Executable = (String, u32, Vec<(String, f64)>);
     struct Open {
-        exe: Option<(String, u32, Vec<(String, f64)>)>,
+        exe: Option<Executable>,
         asm: Vec<String>,
         err: Option<String>,
     }

@@ -301,7 +301,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         }
     }
     // Per family: one plot on the adapter's (or SPIR-V's) axis, one per plotted target.
-    let base: (String, Box<dyn Fn(&Costs) -> Option<f64>>, String) = if ctx.gpu().is_some() {
+    let base: Axis = if ctx.gpu().is_some() {
         (
             "GPU time per evaluation, gross (ns, log scale)".into(),
             Box::new(|c: &Costs| c.gpu_gross_ns),
@@ -346,6 +346,9 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     dominance_section(ctx, &variants, &costs);
     Ok(())
 }
+
+/// A Pareto plot's x axis: its label, the cost it reads, the file-name suffix.
+type Axis = (String, Box<dyn Fn(&Costs) -> Option<f64>>, String);
 
 /// One family's Pareto plot: max error against the cost `pick` reads.
 fn pareto(
