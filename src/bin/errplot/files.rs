@@ -66,7 +66,10 @@ pub const CSV_FILES: &[(&str, &str, &str)] = &[
          what), gpu_ns_per_eval (net of the empty-kernel baseline), gpu_gross_ns_per_eval, \
          gpu_timing_method, cpu_ns_per_call (Rust twin, net of an empty loop), \
          spirv_instructions (naga SPIR-V, callees included), peer (true for a baseline from \
-         another project, `tests/baselines/peer_*.wgsl`; its variant starts with `peer:`)",
+         another project, `tests/baselines/peer_*.wgsl`; its variant starts with `peer:`), then \
+         per target chip (polaris10, vega10, navi21, navi31, skl, tgl, dg2, lnl) \
+         CHIP_instructions, CHIP_alu, CHIP_latency (ACO), CHIP_inverse_throughput (ACO), \
+         CHIP_cycles (brw): net per evaluation, static compiler estimates (`prepass::isa`)",
     ),
 ];
 
