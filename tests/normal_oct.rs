@@ -150,36 +150,6 @@ fn the_publishing_adapter_evaluates_like_the_twins() {
     }
 }
 
-/// Issue 21's budget: a precise encoder costs at most 1.3 times its rounding encoder in SPIR-V
-/// instructions (`wgsl::spirv_instruction_count`, callees included; the README's table), at 8,
-/// 12 and 16 bits and for hemioct24. oct32's exact `|D|²` (`oct_try_wide`: a u32 sum, where a
-/// float dot would round each square and flip near-ties, see
-/// `precise_encoders_equal_the_twin_at_near_ties`) is paid for inside the same budget.
-#[test]
-fn precise_encoders_cost_at_most_1_3_times_the_rounding_ones() {
-    use prepass::wgsl::{NORMAL_HEMIOCT, NORMAL_OCT, spirv_instruction_count};
-    let cost = |src: &str, f: &str| spirv_instruction_count(src, f).unwrap().total;
-    for (src, name) in [
-        (NORMAL_OCT, "oct16"),
-        (NORMAL_OCT, "oct24"),
-        (NORMAL_OCT, "oct32"),
-        (NORMAL_HEMIOCT, "hemioct24"),
-    ] {
-        let (precise, fast) = (
-            format!("encode_normal_{name}"),
-            format!("encode_normal_{name}_fast"),
-        );
-        let (p, r) = (cost(src, &precise), cost(src, &fast));
-        let ratio = p as f64 / r as f64;
-        eprintln!("{precise}: {p} / {fast}: {r} = {ratio:.3}");
-        assert!(
-            ratio <= 1.3,
-            "{precise}: {p} SPIR-V instructions, {ratio:.3} times {fast}'s {r}; budget 1.3 \
-             (issue 21)"
-        );
-    }
-}
-
 #[test]
 fn every_16_and_24_bit_code_decodes_to_a_unit_vector() {
     let d16 = decode_range(gpu(), codec("oct16"), 0, 1 << 16).unwrap();
