@@ -66,18 +66,38 @@ fn hemioct_try(s: vec3<f32>, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) ->
     let score = dot(x, x) / dot(d, d);
     return select(best, vec3<f32>(c, score), score < best.z);
 }
-// Precise: the best of the four codes around the continuous coordinates, tried in the order
-// (0,0), (1,0), (0,1), (1,1), a later one winning only if strictly closer ((0,0) always
-// replaces the start: every score is below 48). Straight-line (no loop, no variables).
+// Precise: the best of the four codes around the continuous coordinates, by hemioct_try's
+// score (the same expression per candidate); of equal scores the first in the order (0,0),
+// (1,0), (0,1), (1,1), as hemioct_try's chain of strict comparisons chooses. Straight-line;
+// written out rather than as four hemioct_try calls so that the candidates share their parts:
+// hemioct_lattice's (x, y) = (u + v - M, u - v) are (h, k) for c00, then (h + 1, k + 1),
+// (h + 1, k - 1), (h + 2, k), and z = (M - |x|) - |y|: every value an integer below 2^14, so
+// every operation is exact on any conforming adapter and each D is hemioct_lattice's. The
+// choice is a tree (as normal_oct.wgsl's oct_encode_precise: the first of the smallest; every
+// score is finite, below 48), the code taken from the bits of c00 + 2^23 (0x4b000000 + c00,
+// exact; the high half's bias shifts out of the u32, the low half's is taken off).
 fn encode_normal_hemioct24(n: vec3<f32>) -> u32 {
     let s = hemioct_sanitize(n);
     let c00 = floor(hemioct_continuous(s, 4095u));
-    let b0 = hemioct_try(s, c00, vec2<f32>(0.0, 0.0), vec3<f32>(0.0, 0.0, 3.0e38));
-    let b1 = hemioct_try(s, c00, vec2<f32>(1.0, 0.0), b0);
-    let b2 = hemioct_try(s, c00, vec2<f32>(0.0, 1.0), b1);
-    let best = hemioct_try(s, c00, vec2<f32>(1.0, 1.0), b2);
-    let uv = vec2<u32>(best.xy);
-    return uv.x | (uv.y << 12u);
+    let h = (c00.x + c00.y) - 4095.0;
+    let k = c00.x - c00.y;
+    let h1 = h + 1.0;
+    let x = vec4<f32>(h, h1, h1, h + 2.0);
+    let y = vec4<f32>(k, k + 1.0, k - 1.0, k);
+    let z = (vec4<f32>(4095.0) - abs(x)) - abs(y);
+    let d0 = vec3<f32>(x.x, y.x, z.x);
+    let d1 = vec3<f32>(x.y, y.y, z.y);
+    let d2 = vec3<f32>(x.z, y.z, z.z);
+    let d3 = vec3<f32>(x.w, y.w, z.w);
+    let x0 = cross(s, d0);
+    let x1 = cross(s, d1);
+    let x2 = cross(s, d2);
+    let x3 = cross(s, d3);
+    let q = vec4<f32>(dot(x0, x0) / dot(d0, d0), dot(x1, x1) / dot(d1, d1), dot(x2, x2) / dot(d2, d2), dot(x3, x3) / dot(d3, d3));
+    let j = min(q.z, q.w) < min(q.x, q.y);
+    let i = select(q.y < q.x, q.w < q.z, j);
+    let w = bitcast<vec2<u32>>(c00 + vec2<f32>(8388608.0)) + vec2<u32>(select(0u, 1u, i), select(0u, 1u, j));
+    return (w.x + (w.y << 12u)) - 0x4b000000u;
 }
 // Rounding encoder: nearest code per axis (round half to even).
 fn encode_normal_hemioct24_fast(n: vec3<f32>) -> u32 {

@@ -92,49 +92,99 @@ fn oct_try(s: vec3<f32>, m: f32, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>
 
 // oct_try for 16 bits per axis (M = 65535 written in), where |D|^2 (up to M^2 < 2^32) needs
 // 32 bits: summed exactly in u32 and rounded once, as the narrower codes' dot is. A float dot
-// would round each square and could flip a near-tie. The choice reads the z lane of one
+// would round each square and could flip a near-tie. Each |D| component k (a whole number, at
+// most 65535) is read as an integer from the bits of k + 2^23, 0x4b000000 + k (the sum is
+// exact): its low 16 bits are k, and the mask tells the compiler the squares are 16 x 16 bits
+// (a full-rate multiply, where u32(k) would be clamped and multiplied at 32 bits). The choice reads the z lane of one
 // vector compare (an instruction fewer than a scalar compare splatted to the select).
 fn oct_try_wide(s: vec3<f32>, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -> vec3<f32> {
     let c = c00 + off;
     let d = oct_lattice(c, 65535.0, vec2<f32>(65535.0));
     let x = cross(s, d);
-    let q = vec3<u32>(abs(d));
+    let q = bitcast<vec3<u32>>(abs(d) + vec3<f32>(8388608.0)) & vec3<u32>(0xffffu);
     let sq = q * q;
     let cand = vec3<f32>(c, dot(x, x) / f32(sq.x + sq.y + sq.z));
     return select(best, cand, (cand < best).zzz);
 }
 
 // The survey's precise encoder, 8 or 12 bits per axis: of the four codes around the continuous
-// coordinates (floor and floor + 1 per axis), the one whose decoded direction is closest to s.
-// Candidates are tried in the order (0,0), (1,0), (0,1), (1,1); a later one wins only if
-// strictly closer, and (0,0) always replaces the start (every score is below 48, |s|^2's
-// bound). Straight-line (no loop, no variables); codes are whole f32 until the last line.
+// coordinates (floor and floor + 1 per axis), the one whose decoded direction is closest to s,
+// by oct_try's score (sin^2 of the angle, |s x D|^2 / |D|^2, the same expression per candidate);
+// of equal scores the first in the order (0,0), (1,0), (0,1), (1,1), as oct_try's chain of
+// strict comparisons chooses. Straight-line; written out rather than as four oct_try calls so
+// that the candidates share their common parts:
+// - D per candidate by oct_lattice's formula with (a_i, b_j) = 2 c - M, i, j in {0, 1} (lanes
+//   (0,0), (1,0), (0,1), (1,1)): z = (M - |a_i|) - |b_j| (M - |a_i| once per i) and
+//   (x, y) = (a, b) + sign(a, b) min(z, 0), sign() as clamp(, -1, 1) (a and b are odd). Every
+//   value is an integer below 2^17, so every operation is exact on any conforming adapter,
+//   fused or not, and each D is oct_lattice's bit for bit;
+// - the choice as a tree: j = 1 if the (0,1)/(1,1) pair's smaller score is strictly below the
+//   other pair's, then i within the chosen pair (strictly smaller second): the first of the
+//   smallest, as the chain; scores are finite (below 48), so no NaN reaches a comparison;
+// - the code from the bits of c00 + 2^23 (0x4b000000 + c00, exact): the bias of the high half
+//   shifts out of the u32 (bits >= 8), the low half's is taken off.
 fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
     let m = f32((1u << bits) - 1u);
     let s = oct_sanitize(n).xyz;
     let c00 = floor(oct_continuous(s, m));
-    let b0 = oct_try(s, m, c00, vec2<f32>(0.0, 0.0), vec3<f32>(0.0, 0.0, 3.0e38));
-    let b1 = oct_try(s, m, c00, vec2<f32>(1.0, 0.0), b0);
-    let b2 = oct_try(s, m, c00, vec2<f32>(0.0, 1.0), b1);
-    let best = oct_try(s, m, c00, vec2<f32>(1.0, 1.0), b2);
-    let uv = vec2<u32>(best.xy);
-    return uv.x | (uv.y << bits);
+    let ab0 = (c00 + c00) - vec2<f32>(m);
+    let ab1 = ab0 + vec2<f32>(2.0);
+    let a = vec4<f32>(ab0.x, ab1.x, ab0.x, ab1.x);
+    let b = vec4<f32>(ab0.y, ab0.y, ab1.y, ab1.y);
+    let ta = vec2<f32>(m) - abs(vec2<f32>(ab0.x, ab1.x));
+    let z = vec4<f32>(ta, ta) - abs(b);
+    let mz = min(z, vec4<f32>(0.0));
+    let x = a + clamp(a, vec4<f32>(-1.0), vec4<f32>(1.0)) * mz;
+    let y = b + clamp(b, vec4<f32>(-1.0), vec4<f32>(1.0)) * mz;
+    let d0 = vec3<f32>(x.x, y.x, z.x);
+    let d1 = vec3<f32>(x.y, y.y, z.y);
+    let d2 = vec3<f32>(x.z, y.z, z.z);
+    let d3 = vec3<f32>(x.w, y.w, z.w);
+    let x0 = cross(s, d0);
+    let x1 = cross(s, d1);
+    let x2 = cross(s, d2);
+    let x3 = cross(s, d3);
+    let q = vec4<f32>(dot(x0, x0) / dot(d0, d0), dot(x1, x1) / dot(d1, d1), dot(x2, x2) / dot(d2, d2), dot(x3, x3) / dot(d3, d3));
+    let j = min(q.z, q.w) < min(q.x, q.y);
+    let i = select(q.y < q.x, q.w < q.z, j);
+    let w = bitcast<vec2<u32>>(c00 + vec2<f32>(8388608.0)) + vec2<u32>(select(0u, 1u, i), select(0u, 1u, j));
+    return (w.x + (w.y << bits)) - 0x4b000000u;
 }
 
-// oct_encode_precise at 16 bits per axis, with oct_try_wide's exact |D|^2 (WGSL has no
-// generics, so the four calls are written again). The code is packed by pack2x16unorm, which
-// is exact here: u / 65535 is formed by one correctly rounded multiply (relative error at most
-// 2^-23 with the rounded reciprocal), so 65535 times it lies within 0.008 of the whole number
-// u, far from the .5 where implementations may differ, and floor(0.5 + that) is u.
+// oct_encode_precise at 16 bits per axis, with oct_try_wide's exact |D|^2 (a u32 sum of the
+// squares, rounded once; each square from the bits of |D_k| + 2^23, see oct_try_wide).
 fn oct_encode_precise_wide(n: vec3<f32>) -> u32 {
     let m = 65535.0;
     let s = oct_sanitize(n).xyz;
     let c00 = floor(oct_continuous(s, m));
-    let b0 = oct_try_wide(s, c00, vec2<f32>(0.0, 0.0), vec3<f32>(0.0, 0.0, 3.0e38));
-    let b1 = oct_try_wide(s, c00, vec2<f32>(1.0, 0.0), b0);
-    let b2 = oct_try_wide(s, c00, vec2<f32>(0.0, 1.0), b1);
-    let best = oct_try_wide(s, c00, vec2<f32>(1.0, 1.0), b2);
-    return pack2x16unorm(best.xy * (1.0 / 65535.0));
+    let ab0 = (c00 + c00) - vec2<f32>(m);
+    let ab1 = ab0 + vec2<f32>(2.0);
+    let a = vec4<f32>(ab0.x, ab1.x, ab0.x, ab1.x);
+    let b = vec4<f32>(ab0.y, ab0.y, ab1.y, ab1.y);
+    let ta = vec2<f32>(m) - abs(vec2<f32>(ab0.x, ab1.x));
+    let z = vec4<f32>(ta, ta) - abs(b);
+    let mz = min(z, vec4<f32>(0.0));
+    let x = a + clamp(a, vec4<f32>(-1.0), vec4<f32>(1.0)) * mz;
+    let y = b + clamp(b, vec4<f32>(-1.0), vec4<f32>(1.0)) * mz;
+    let d0 = vec3<f32>(x.x, y.x, z.x);
+    let d1 = vec3<f32>(x.y, y.y, z.y);
+    let d2 = vec3<f32>(x.z, y.z, z.z);
+    let d3 = vec3<f32>(x.w, y.w, z.w);
+    let x0 = cross(s, d0);
+    let x1 = cross(s, d1);
+    let x2 = cross(s, d2);
+    let x3 = cross(s, d3);
+    let big = vec4<f32>(8388608.0);
+    let mask = vec4<u32>(0xffffu);
+    let qx = bitcast<vec4<u32>>(abs(x) + big) & mask;
+    let qy = bitcast<vec4<u32>>(abs(y) + big) & mask;
+    let qz = bitcast<vec4<u32>>(abs(z) + big) & mask;
+    let dd = vec4<f32>((qx * qx + qy * qy) + qz * qz);
+    let q = vec4<f32>(dot(x0, x0), dot(x1, x1), dot(x2, x2), dot(x3, x3)) / dd;
+    let j = min(q.z, q.w) < min(q.x, q.y);
+    let i = select(q.y < q.x, q.w < q.z, j);
+    let w = bitcast<vec2<u32>>(c00 + vec2<f32>(8388608.0)) + vec2<u32>(select(0u, 1u, i), select(0u, 1u, j));
+    return (w.x + (w.y << 16u)) - 0x4b000000u;
 }
 
 // The plain rounding encoder: nearest code per axis (round half to even).
