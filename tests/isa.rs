@@ -388,3 +388,98 @@ fn precise_over_rounding_encoders_on_every_target() {
             .trim_end_matches(" -->\n"),
     );
 }
+
+/// The compilers as witnesses: per shipped function, the freedoms ACO (RDNA2) and brw (Xe-HPG)
+/// took, read from their disassembly. Each must be one `prepass::conforming` emulates (or the
+/// finite-math freedom, which the bad-input contract meets by reading special inputs from
+/// bits); an unclassified float instruction or an unmodelled freedom fails the test. The
+/// tally is published in docs/figures.md (block `isa-freedoms`).
+#[test]
+fn the_freedoms_the_compilers_take_are_the_ones_the_emulation_models() {
+    use prepass::isa::freedoms::{Taken, observed};
+    let functions = shipped_functions();
+    let list: Vec<Function> = functions.iter().map(|(_, f)| f.clone()).collect();
+    let targets = [Target::Rdna2, Target::XeHpg];
+    let report = Costing::new()
+        .targets(&targets)
+        .independent(1)
+        .disassembly(true)
+        .cost(&list)
+        .unwrap();
+    let measured_targets = measured(&report);
+    let mut body = String::from(
+        "Per shipped function, the instructions through which the compiler took a freedom of \
+         the WGSL spec (count in the one-evaluation kernel), and the `prepass::conforming` \
+         freedom that covers each (`FiniteMath`: DX9 multiplies, which assume finite operands; \
+         the bad-input contract reads special inputs from bits).\n\n| function | RDNA2 (ACO) | Xe-HPG (brw) |\n|---|---|---|\n",
+    );
+    let mut problems = Vec::new();
+    let mut kinds: std::collections::BTreeMap<String, usize> = Default::default();
+    for (k, (_, f)) in functions.iter().enumerate() {
+        let mut cells = Vec::new();
+        for t in targets {
+            let cost = report.get(t, k).expect("measured above");
+            let asm = cost
+                .disassembly
+                .as_deref()
+                .unwrap_or_else(|| panic!("{}: no disassembly for `{}`", t.label(), f.function));
+            assert!(
+                asm.contains("Assembly"),
+                "{}: `{}`: the disassembly has no final assembly section",
+                t.label(),
+                f.function
+            );
+            let seen = observed(t.vendor(), asm);
+            let mut cell = Vec::new();
+            for o in &seen {
+                let class = match o.taken {
+                    Taken::Freedom(fr) => fr.name().unwrap_or("several").to_string(),
+                    Taken::FiniteMath => "FiniteMath".to_string(),
+                    Taken::Unmodelled | Taken::Unknown => {
+                        problems.push(format!(
+                            "{}: `{}`: {} ×{} — {} ({:?})",
+                            t.label(),
+                            f.function,
+                            o.opcode,
+                            o.count,
+                            o.what,
+                            o.taken
+                        ));
+                        format!("{:?}", o.taken)
+                    }
+                };
+                *kinds
+                    .entry(format!("{} {} → {class}", t.arch(), o.opcode))
+                    .or_default() += o.count;
+                cell.push(format!("{} ×{}", o.opcode, o.count));
+            }
+            cells.push(if cell.is_empty() {
+                "none".to_string()
+            } else {
+                cell.join(", ")
+            });
+        }
+        let _ = writeln!(body, "| `{}` | {} | {} |", f.function, cells[0], cells[1]);
+    }
+    assert!(
+        problems.is_empty(),
+        "instructions that are neither exact nor a freedom prepass::conforming emulates \
+         (classify them in src/isa/freedoms.rs, and extend the emulation if they are a new \
+         freedom):\n{}",
+        problems.join("\n")
+    );
+    body.push_str(
+        "\n| target and instruction → freedom | count over every shipped function |\n|---|---|\n",
+    );
+    for (kind, n) in &kinds {
+        let _ = writeln!(body, "| {kind} | {n} |");
+    }
+    common::publish_on(
+        "docs/figures.md",
+        "isa-freedoms",
+        &body,
+        driver_line(&measured_targets)
+            .trim_start_matches("<!-- measured on: ")
+            .trim_end_matches(" -->\n"),
+    );
+}

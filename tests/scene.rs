@@ -194,8 +194,7 @@ fn composed_modules_compile_with_aco_and_brw() {
     let sets: Vec<Vec<&str>> = if common::full_strength() {
         root_sets_for_backends(&by_roots)
     } else {
-        let mut picked: BTreeSet<Vec<&str>> =
-            by_roots.iter().flatten().map(|r| vec![*r]).collect();
+        let mut picked: BTreeSet<Vec<&str>> = by_roots.iter().flatten().map(|r| vec![*r]).collect();
         picked.extend(by_roots.iter().max_by_key(|r| r.len()).cloned());
         picked.into_iter().collect()
     };
@@ -216,7 +215,11 @@ fn composed_modules_compile_with_aco_and_brw() {
         });
         for (roots, m) in sets.iter().zip(compiled) {
             if let Err(e) = m {
-                panic!("{}: composed [{}] does not compile: {e}", r.target, roots.join(", "));
+                panic!(
+                    "{}: composed [{}] does not compile: {e}",
+                    r.target,
+                    roots.join(", ")
+                );
             }
         }
     }

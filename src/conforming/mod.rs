@@ -250,6 +250,24 @@ impl Freedoms {
     pub const fn union(self, other: Freedoms) -> Freedoms {
         Freedoms(self.0 | other.0)
     }
+
+    /// The constant's name for a single freedom (`FUSION`), `None` for a set of several.
+    pub const fn name(self) -> Option<&'static str> {
+        Some(match self.0 {
+            1 => "DIVISION",
+            2 => "INVERSE_SQRT",
+            4 => "EXP_LOG",
+            8 => "UNPACK",
+            16 => "PACK",
+            32 => "ROUNDING",
+            64 => "FLUSH",
+            128 => "FUSION",
+            256 => "REASSOCIATION",
+            512 => "INHERITED",
+            1024 => "CONVERSION",
+            _ => return None,
+        })
+    }
 }
 
 /// The host adapter's own error where the emulation starts from the host's result, in ULPs of

@@ -54,6 +54,7 @@
 //! ```
 
 mod child;
+pub mod freedoms;
 mod kernel;
 mod stats;
 mod target;
