@@ -44,7 +44,7 @@
 //! for t in &report.targets {
 //!     match &t.outcome {
 //!         Ok(costs) => {
-//!             let c = costs.functions[0].as_ref()?;
+//!             let c = costs.functions[0].clone()?;
 //!             println!("{}: {:.1} instructions ({})", t.target, c.net.instructions, costs.driver_info);
 //!         }
 //!         Err(why) => println!("{}: not measured: {why}", t.target),
