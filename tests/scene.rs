@@ -156,6 +156,18 @@ fn all_scenes() -> Vec<Scene> {
     v
 }
 
+/// Every distinct root set a valid declaration gives (each sorted).
+fn distinct_root_sets() -> BTreeSet<Vec<&'static str>> {
+    all_scenes()
+        .iter()
+        .filter_map(|s| s.roots().ok())
+        .map(|mut roots| {
+            roots.sort_unstable();
+            roots
+        })
+        .collect()
+}
+
 /// The distinct root sets whose modules naga validates and the backends (naga's four, Tint)
 /// translate: all of them under `PREPASS_FULL=1`; otherwise every root alone, the largest set,
 /// and every 16th set in order (the test prints how many). Why the sample proves the same: a
@@ -184,13 +196,7 @@ fn root_sets_for_backends<'a>(by_roots: &BTreeSet<Vec<&'a str>>) -> Vec<Vec<&'a 
 #[test]
 fn composed_modules_compile_with_aco_and_brw() {
     let lib = Library::shipped().unwrap();
-    let mut by_roots: BTreeSet<Vec<&str>> = BTreeSet::new();
-    for s in all_scenes() {
-        if let Ok(mut roots) = s.roots() {
-            roots.sort_unstable();
-            by_roots.insert(roots);
-        }
-    }
+    let by_roots = distinct_root_sets();
     let sets: Vec<Vec<&str>> = if common::full_strength() {
         root_sets_for_backends(&by_roots)
     } else {
@@ -236,13 +242,7 @@ fn composed_modules_compile_with_aco_and_brw() {
 #[test]
 fn every_distinct_module_compiles_with_tint() {
     let lib = Library::shipped().unwrap();
-    let mut by_roots: BTreeSet<Vec<&str>> = BTreeSet::new();
-    for s in all_scenes() {
-        if let Ok(mut roots) = s.roots() {
-            roots.sort_unstable();
-            by_roots.insert(roots);
-        }
-    }
+    let by_roots = distinct_root_sets();
     let modules: Vec<(String, String)> = root_sets_for_backends(&by_roots)
         .iter()
         .map(|roots| {

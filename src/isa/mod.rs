@@ -259,34 +259,34 @@ impl Costing {
             plan.push(ids);
         }
         let root = self.root.clone();
-        let targets = std::thread::scope(|scope| {
-            let handles: Vec<_> = self
-                .targets
-                .iter()
-                .map(|&target| {
-                    let (modules, plan, root) = (&modules, &plan, &root);
-                    let disassembly = self.disassembly;
-                    scope.spawn(move || TargetReport {
-                        target,
-                        outcome: compile_for(
-                            target,
-                            root.as_deref(),
-                            dir,
-                            modules,
-                            plan,
-                            k,
-                            disassembly,
-                        ),
-                    })
-                })
-                .collect();
-            handles
-                .into_iter()
-                .map(|h| h.join().expect("a costing thread panicked"))
-                .collect()
+        let disassembly = self.disassembly;
+        let targets = per_target(&self.targets, |target| TargetReport {
+            target,
+            outcome: compile_for(
+                target,
+                root.as_deref(),
+                dir,
+                &modules,
+                &plan,
+                k,
+                disassembly,
+            ),
         });
         Ok(Report { targets })
     }
+}
+
+/// `f` for every target, each on its own thread (each waits on its own child process), in the
+/// targets' order.
+fn per_target<T: Send>(targets: &[Target], f: impl Fn(Target) -> T + Sync) -> Vec<T> {
+    std::thread::scope(|scope| {
+        let f = &f;
+        let handles: Vec<_> = targets.iter().map(|&t| scope.spawn(move || f(t))).collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().expect("a compiling thread panicked"))
+            .collect()
+    })
 }
 
 fn scratch_dir() -> Result<PathBuf, IsaError> {
@@ -435,28 +435,12 @@ impl Costing {
             }
             let none = vec![false; modules.len()];
             let root = self.root.clone();
-            let reports = std::thread::scope(|scope| {
-                let handles: Vec<_> = self
-                    .targets
-                    .iter()
-                    .map(|&target| {
-                        let (modules, none, root, dir) = (&modules, &none, &root, &dir);
-                        scope.spawn(move || LibraryReport {
-                            target,
-                            outcome: run_child(target, root.as_deref(), dir, modules, none).map(
-                                |a| {
-                                    let stats =
-                                        a.modules.into_iter().map(|m| m.map(|c| c.stats)).collect();
-                                    (a.driver_info, stats)
-                                },
-                            ),
-                        })
-                    })
-                    .collect();
-                handles
-                    .into_iter()
-                    .map(|h| h.join().expect("a compiling thread panicked"))
-                    .collect()
+            let reports = per_target(&self.targets, |target| LibraryReport {
+                target,
+                outcome: run_child(target, root.as_deref(), &dir, &modules, &none).map(|a| {
+                    let stats = a.modules.into_iter().map(|m| m.map(|c| c.stats)).collect();
+                    (a.driver_info, stats)
+                }),
             });
             Ok((reports, called))
         })();
