@@ -66,3 +66,9 @@ pub mod wgsl;
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
+
+/// docs/precision.md's examples (validate, run, measure and cost your own WGSL), compiled and
+/// run as doctests like the README's, each on the features it names.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/precision.md")]
+pub struct PrecisionDocDoctests;

@@ -1279,12 +1279,13 @@ fn every_normal_encoding_under_emulation() {
             "{}: |len − 1| of the decodes at the searched worst tables",
             r.name
         );
-        // The README says the greedy and searched worst agree to the fourth decimal.
+        // docs/figures.md (Normal encodings) says the greedy and searched worst agree to the
+        // fourth decimal.
         assert_within_abs!(
             r.searched - worst,
             0.0,
             1e-4,
-            "README, Pick an encoding: greedy and searched agree to the fourth decimal",
+            "docs/figures.md, Normal encodings: greedy and searched agree to the fourth decimal",
             "{}: searched worst − greedy worst, degrees",
             r.name
         );

@@ -45,3 +45,57 @@ fn deferred_minimal_scene_lines() -> usize {
         .lines()
         .count()
 }
+
+/// The README is a five-minute read for a renderer author (issue 48): at most
+/// [`README_MAX_LINES`] lines, its sections in the order that reader needs, each other topic
+/// linked from `docs/` rather than explained in place.
+const README_MAX_LINES: usize = 300;
+
+/// The README's top-level sections, in order.
+const README_SECTIONS: [&str; 8] = [
+    "Add it",
+    "Quick start",
+    "Pick an encoding",
+    "Depth",
+    "Conventions",
+    "Module map",
+    "Commands",
+    "More",
+];
+
+#[test]
+fn readme_is_short_and_in_the_readers_order() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .expect("README.md");
+    let lines = readme.lines().count();
+    assert!(
+        lines <= README_MAX_LINES,
+        "README.md has {lines} lines, more than {README_MAX_LINES}: move explanations and \
+         secondary tables to docs/ (each generated block with the test that writes it) and link \
+         them from one line"
+    );
+    // Headings outside code blocks (the doctests' `# ` lines are not headings).
+    let mut fenced = false;
+    let mut sections = Vec::new();
+    for l in readme.lines() {
+        if l.starts_with("```") {
+            fenced = !fenced;
+        } else if !fenced && let Some(h) = l.strip_prefix("## ") {
+            sections.push(h);
+        }
+    }
+    assert_eq!(
+        sections, README_SECTIONS,
+        "README.md's sections are not in the reader's order (what it is, add it, Quick start, \
+         pick an encoding, depth, conventions and words, module map, commands, more)"
+    );
+    // Every docs/ page the README links exists.
+    for link in readme.split("](docs/").skip(1) {
+        let page = link.split([')', '#']).next().unwrap();
+        let path = format!("{}/docs/{page}", env!("CARGO_MANIFEST_DIR"));
+        assert!(
+            std::path::Path::new(&path).exists(),
+            "README links docs/{page}, which does not exist"
+        );
+    }
+}

@@ -1,7 +1,7 @@
 //! The peers (`tests/baselines/peer_*.wgsl`, measured by errplot's `peers.rs`, included here)
 //! against the shipped functions on (max error, SPIR-V count): which shipped function a peer
-//! dominates is checked against the list below, each entry with its reason, and published in the
-//! README (`peers` block). Errors are measured on the adapter on errplot's quick inputs (2^16
+//! dominates is checked against the list below, each entry with its reason, and published in
+//! docs/figures.md (`peers` block). Errors are measured on the adapter on errplot's quick inputs (2^16
 //! Fibonacci directions; all 2^24 depth codes; 2^20 reversed float depths); SPIR-V counts are
 //! static. Dominance on GPU ns is in errplot's report only: it is a timing.
 
@@ -274,5 +274,5 @@ fn peers_dominate_only_the_listed_functions_on_spirv_count() {
         "\nDominance on GPU ns, and every peer's error and cost: errplot's report \
          (\"Does a peer dominate a shipped function?\").\n",
     );
-    common::publish_measured("README.md", "peers", &body);
+    common::publish_measured("docs/figures.md", "peers", &body);
 }

@@ -9,9 +9,9 @@
 //! input of the issue (a light at the camera, a volume through the near plane, a zero-radius
 //! light, the sky, resolutions of 0 and beyond the adapter's limit).
 //!
-//! It publishes the README's `light-prepass` table (bytes per pixel, memory, error: the
+//! It publishes docs/light_prepass.md's `light-prepass` table (bytes per pixel, memory, error: the
 //! deterministic columns; times vary per run and stay in the example's `compare.md`) and, with
-//! `PREPASS_WRITE_DOCS=1` (`bash .ci/docs`), rewrites the README's PNGs in `docs/light_prepass/`;
+//! `PREPASS_WRITE_DOCS=1` (`bash .ci/docs`), rewrites that page's PNGs in `docs/light_prepass/`;
 //! otherwise it checks that the committed PNGs are the frames it renders.
 
 mod common;
@@ -214,7 +214,7 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
     assert!(md.contains("## The G-buffer, decoded"), "{md}");
     let _ = std::fs::remove_dir_all(&dir);
 
-    // The README's table and images.
+    // docs/light_prepass.md's table and images.
     let memory_at = (
         Config::default_frame().width,
         Config::default_frame().height,
@@ -229,7 +229,7 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
         memory_at.1,
         table(&rows, memory_at, false)
     );
-    common::publish_measured("README.md", "light-prepass", &body);
+    common::publish_measured("docs/light_prepass.md", "light-prepass", &body);
     let find = |stem: &str| {
         rows.iter()
             .find(|r| r.cfg.file_stem() == stem)
@@ -281,7 +281,7 @@ fn png_size(path: &std::path::Path) -> (u32, u32) {
 fn png_pixels(path: &std::path::Path) -> Vec<[u8; 3]> {
     let f = std::fs::File::open(path).unwrap_or_else(|e| {
         panic!(
-            "{}: {e}; run `bash .ci/docs` to write the README's images",
+            "{}: {e}; run `bash .ci/docs` to write docs/light_prepass.md's images",
             path.display()
         )
     });

@@ -285,7 +285,7 @@ fn normal_and_roughness_share_one_texel() {
 /// to 128 patterns either side); and the interval enclosure of every allowed result. Power-of-two
 /// ranges are integer constructions, so their promise — the exact nearest code, the decode
 /// bit-identical to the twin — must hold on every conforming adapter; general ranges keep
-/// `roughness::bounds`. Publishes the README's and docs/figures.md's roughness tables.
+/// `roughness::bounds`. Publishes docs/figures.md's roughness tables.
 #[test]
 fn every_range_keeps_its_promise_on_every_conforming_adapter() {
     use prepass::conforming::Policy;
@@ -423,7 +423,6 @@ fn every_range_keeps_its_promise_on_every_conforming_adapter() {
         );
     }
     let table = format!("{round_trips}\n{decodes}");
-    common::publish_measured("README.md", "roughness", &table);
     let i = gpu().adapter_info();
     let line = format!("Measured on {} ({}).\n", i.name, i.driver_info);
     common::publish_measured("docs/figures.md", "roughness", &format!("{line}\n{table}"));

@@ -1,6 +1,6 @@
 //! A headless light pre-pass renderer on top of prepass: real render targets, the crate's
 //! composed WGSL, light volumes, a composite pass, PNGs out; `--compare` measures the
-//! render-target diet against a fat G-buffer. See the README's "A frame" section.
+//! render-target diet against a fat G-buffer. See docs/light_prepass.md.
 //!
 //! ```text
 //! cargo run --release --all-features --example light_prepass -- --out DIR [options]

@@ -134,7 +134,7 @@ pub fn direction() -> impl Strategy<Value = Vec3> {
 
 /// `f32` values that are not ordinary: NaN (quiet, signalling, negative), `±Inf`, `±0.0`, the
 /// smallest and largest subnormals of both signs, `±f32::MIN_POSITIVE` and `±f32::MAX`. Every
-/// public function has a documented answer for these (README, "Bad input").
+/// public function has a documented answer for these (docs/bad_input.md).
 pub fn bad_f32() -> impl Strategy<Value = f32> {
     select(vec![
         f32::NAN,
