@@ -36,6 +36,8 @@ fn t_inverse_sqrt(x: f32) -> f32 { return inverseSqrt(x); }
 fn t_sqrt(x: f32) -> f32 { return sqrt(x); }
 fn t_exp2(x: f32) -> f32 { return exp2(x); }
 fn t_log2(x: f32) -> f32 { return log2(x); }
+fn t_sin(x: f32) -> f32 { return sin(x); }
+fn t_cos(x: f32) -> f32 { return cos(x); }
 fn t_unpack4x8unorm(p: u32) -> vec4<f32> { return unpack4x8unorm(p); }
 fn t_unpack4x8snorm(p: u32) -> vec4<f32> { return unpack4x8snorm(p); }
 fn t_pack4x8unorm(v: vec4<f32>) -> u32 { return pack4x8unorm(v); }
@@ -481,6 +483,88 @@ fn inverse_sqrt_sqrt_and_length_stay_inside_their_intervals() {
                 "{policy}: sqrt({}) = {g} outside the inherited interval around {e}",
                 xs[i]
             );
+        }
+    }
+}
+
+/// `sin` and `cos`: every emulated result lies within the spec's absolute 2^-11 of the exact
+/// value on `[−π, π]`; the upper and lower policies reach that end less the host's error and
+/// the push's rounding (so the check fails if the push is dropped: under the identity a result
+/// is the host's, within `HOST_TRIG_ABS`); the host's own error is what `HOST_TRIG_ABS`
+/// assumes; and an argument beyond `[−π, π]`, where the spec states no accuracy, raises the
+/// indeterminate flag.
+#[test]
+fn sin_and_cos_reach_their_absolute_allowance_and_flag_beyond_pi() {
+    use prepass::conforming::HOST_TRIG_ABS;
+    let d = allowance::TRIG_DOMAIN;
+    let xs: Vec<f32> = (0..=4000)
+        .map(|i| -d + i as f32 * (2.0 * d / 4000.0))
+        .chain([0.0, d, -d, 1e-3, -1e-30])
+        .collect();
+    let beyond = [
+        std::f32::consts::PI,
+        -std::f32::consts::PI,
+        4.0,
+        -100.0,
+        1e6,
+    ];
+    let n = xs.len();
+    // The push is the allowance less HOST_TRIG_ABS and 2^-24; the result then errs by the host's
+    // own error (≤ HOST_TRIG_ABS) and the push's rounding (≤ 2^-25) at most.
+    let reach = allowance::TRIG_ABS - 2.0 * HOST_TRIG_ABS - 2f64.powi(-23);
+    for (f, exact) in [("t_sin", f64::sin as fn(f64) -> f64), ("t_cos", f64::cos)] {
+        for policy in ALL_POLICIES {
+            let (got, flags) = run(f, policy, Freedoms::ALL, &[Arg::column(&xs)], n);
+            let mut host_max = 0.0f64;
+            for i in 0..n {
+                assert!(!flags[i], "{policy}: {f}({}) flagged inside [−π, π]", xs[i]);
+                let err = f64::from(f32::from_bits(got[i])) - exact(f64::from(xs[i]));
+                assert_within_abs!(
+                    err,
+                    0.0,
+                    allowance::TRIG_ABS,
+                    "conforming::allowance::TRIG_ABS: WGSL's 2^-11 for sin and cos on [−π, π]",
+                    "{policy}: {f}({})",
+                    xs[i]
+                );
+                match policy {
+                    Policy::Upper => assert_at_least!(
+                        err,
+                        reach,
+                        "the push, TRIG_ABS − HOST_TRIG_ABS − 2^-24, less the host's error and the push's rounding",
+                        "upper: {f}({}) − exact",
+                        xs[i]
+                    ),
+                    Policy::Lower => assert_at_least!(
+                        -err,
+                        reach,
+                        "the push, TRIG_ABS − HOST_TRIG_ABS − 2^-24, less the host's error and the push's rounding",
+                        "lower: exact − {f}({})",
+                        xs[i]
+                    ),
+                    _ => {}
+                }
+                host_max = host_max.max(err.abs());
+            }
+            if policy == Policy::Identity {
+                eprintln!("host {f}: max {host_max:.3e} absolute on [−π, π]");
+                assert_within!(
+                    host_max,
+                    HOST_TRIG_ABS,
+                    "conforming::HOST_TRIG_ABS (lavapipe's sin and cos)",
+                    "the host's {f}, absolute"
+                );
+            }
+            let (_, flags) = run(
+                f,
+                policy,
+                Freedoms::ALL,
+                &[Arg::column(&beyond)],
+                beyond.len(),
+            );
+            for (x, flagged) in beyond.iter().zip(flags) {
+                assert!(flagged, "{policy}: {f}({x}) beyond [−π, π] is not flagged");
+            }
         }
     }
 }
@@ -1560,7 +1644,7 @@ fn the_emulation_covers_every_shipped_composed_and_example_module() {
     use prepass::conforming::emulate;
     let emu = Emulation::new(Policy::Upper);
     for (src, want) in [
-        ("fn f(x: f32) -> f32 { return sin(x); }", "Sin"),
+        ("fn f(x: f32) -> f32 { return tan(x); }", "Tan"),
         (
             "fn f(a: mat2x2<f32>, b: mat2x2<f32>) -> mat2x2<f32> { return a + b; }",
             "matrix arithmetic",

@@ -410,3 +410,45 @@ fn light_prepass_bad_input() {
         );
     }
 }
+
+/// The renderer's shaders (every layout) use no f32 operation the conforming emulation leaves
+/// at the host's accuracy (`Emulated::uncovered`): the coverage check of `tests/conforming.rs`
+/// (`the_emulation_covers_every_shipped_composed_and_example_module`) applied to the example's
+/// own shaders, which only this binary builds. Single-sampled only: the 4× MSAA modules differ
+/// in texture types and an integer sample index alone (`shaders::module`), and the emulation's
+/// validator lacks the multisampled-shading capability their `sample_index` needs.
+#[test]
+fn light_prepass_shaders_are_covered_by_the_emulation() {
+    use prepass::conforming::{Emulation, Policy, emulate};
+    let emu = Emulation::new(Policy::Upper);
+    let mut checked = 0;
+    for lights in [
+        prepass::scene::LightBuffers::One,
+        prepass::scene::LightBuffers::Two,
+    ] {
+        let mut layouts = vec![(Storage::Fat, lights)];
+        layouts.extend(renderer::diet_layouts(lights));
+        for (storage, lights_layout) in layouts {
+            {
+                let msaa = 1;
+                let cfg = Config {
+                    storage,
+                    lights_layout,
+                    msaa,
+                    ..small()
+                };
+                let src = renderer::shaders::module(&cfg, &cfg.scene().wgsl().unwrap());
+                let name = format!("{} msaa {msaa}", cfg.layout_name());
+                let e = emulate(&src, &emu).unwrap_or_else(|err| panic!("{name}: {err}"));
+                assert!(
+                    e.uncovered.is_empty(),
+                    "{name} uses operations the emulation leaves at the host's accuracy: {:?} \
+                     (emulate them in src/conforming, or change the shader)",
+                    e.uncovered
+                );
+                checked += 1;
+            }
+        }
+    }
+    eprintln!("coverage: {checked} light pre-pass modules, nothing left uncovered");
+}

@@ -24,6 +24,7 @@ const PREPASS_CF_FUSION: u32 = 128u;
 const PREPASS_CF_REASSOCIATION: u32 = 256u;
 const PREPASS_CF_INHERITED: u32 = 512u;
 const PREPASS_CF_CONVERSION: u32 = 1024u;
+const PREPASS_CF_TRIG: u32 = 2048u;
 
 // Mark the current evaluation as outside the spec's domain (indeterminate result).
 fn prepass_cf_undefined_if(c: bool) {
@@ -481,6 +482,25 @@ fn prepass_cf_sqrt(site: u32, x: f32) -> f32 {
         return x;
     }
     return prepass_cf_div(site + 8u, 1.0, prepass_cf_inverse_sqrt(site, x));
+}
+
+// sin and cos: within 2^-11 absolute on [-pi, pi]; outside it the spec states no accuracy, so
+// the result is indeterminate and the flag is raised. No exact reference: the host's result is
+// pushed by the allowance less the host's error and the push's rounding (PREPASS_CF_TRIG_PUSH).
+fn prepass_cf_trig_end(site: u32, x: f32, host: f32) -> f32 {
+    prepass_cf_undefined_if(!(abs(x) <= PREPASS_CF_TRIG_DOMAIN));
+    let dir = prepass_cf_dir(PREPASS_CF_TRIG, site, x, x);
+    return prepass_cf_ftz(site + 3u, host + f32(dir) * PREPASS_CF_TRIG_PUSH);
+}
+
+fn prepass_cf_sin(site: u32, x0: f32) -> f32 {
+    let x = prepass_cf_ftz(site + 1u, x0);
+    return prepass_cf_trig_end(site, x, sin(x));
+}
+
+fn prepass_cf_cos(site: u32, x0: f32) -> f32 {
+    let x = prepass_cf_ftz(site + 1u, x0);
+    return prepass_cf_trig_end(site, x, cos(x));
 }
 
 // Budget of exp and exp2, 3 + 2|x| ULP, less the host's own error, in half ULPs (the push of

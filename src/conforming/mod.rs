@@ -94,6 +94,11 @@
 //! (`tests/conforming.rs`) measure the host's error and check every emulated result against
 //! the spec interval computed in f64.
 //!
+//! `sin` and `cos` have an absolute allowance, 2^-11 on `[−π, π]`, and none outside it
+//! (indeterminate: the flag below is raised). They are pushed from the host's result by the
+//! allowance less [`HOST_TRIG_ABS`] and less the push's own rounding; a conforming adapter's
+//! whole reach is 3 % wider than the emulation's there.
+//!
 //! The either-neighbour rounding of `+ − ×` is found exactly with error-free transformations
 //! (TwoSum, Dekker's product, Fast2Sum), and the fused `a·b + c` is built the same way; they need
 //! the host to round to nearest without contraction, reassociation or flushing, as lavapipe does
@@ -119,7 +124,7 @@
 //!
 //! # Not emulated
 //! Left at the host's accuracy, and listed in [`Emulated::uncovered`] when a module uses them:
-//! trigonometric and hyperbolic functions, `smoothstep`, `refract`, `faceForward`, `%` on f32,
+//! trigonometric functions other than `sin` and `cos`, hyperbolic functions, `smoothstep`, `refract`, `faceForward`, `%` on f32,
 //! `quantizeToF16`, `ldexp`, `modf`, `frexp`, `determinant`, `inverse`, matrix arithmetic other
 //! than matrix × vector, and conversion to f16 — any f32 operation the pass does not rewrite is
 //! listed, under naga's name for it, except the exact ones (negation, `select`, `transpose`,
@@ -131,8 +136,8 @@
 //!
 //! # Indeterminate results
 //! An operation outside its domain — a divisor outside ±[2^-126, 2^126], `inverseSqrt`, `log`
-//! or `log2` of a value ≤ 0, subnormal or infinite, `exp2` that overflows, a `pack2x16float` lane
-//! beyond ±65504 — makes the spec's result indeterminate. The helpers then raise a private flag,
+//! or `log2` of a value ≤ 0, subnormal or infinite, `sin` or `cos` beyond `[−π, π]`, `exp2`
+//! that overflows, a `pack2x16float` lane beyond ±65504 — makes the spec's result indeterminate. The helpers then raise a private flag,
 //! [`UNDEFINED_FLAG`]; [`crate::conforming::EmulatedKernel`] reads it after each evaluation as a
 //! tail word of the same pipeline ([`crate::harness::Gpu::kernel_with_tail`]), and for every
 //! function `f` of the module the emulation also adds `prepass_cf_undefined__f` (same
@@ -243,8 +248,10 @@ impl Freedoms {
     pub const INHERITED: Freedoms = Freedoms(512);
     /// `f32(u32)`, `f32(i32)`: either neighbour where the integer is not an f32 (above 2^24).
     pub const CONVERSION: Freedoms = Freedoms(1024);
+    /// `sin`, `cos` within their absolute allowance, [`allowance::TRIG_ABS`], on `[−π, π]`.
+    pub const TRIG: Freedoms = Freedoms(2048);
     /// Every freedom.
-    pub const ALL: Freedoms = Freedoms(2047);
+    pub const ALL: Freedoms = Freedoms(4095);
 
     /// Both sets.
     pub const fn union(self, other: Freedoms) -> Freedoms {
@@ -265,6 +272,7 @@ impl Freedoms {
             256 => "REASSOCIATION",
             512 => "INHERITED",
             1024 => "CONVERSION",
+            2048 => "TRIG",
             _ => return None,
         })
     }
@@ -309,7 +317,20 @@ pub mod allowance {
     pub fn exp_ulp(x: f64) -> f64 {
         3.0 + 2.0 * x.abs()
     }
+    /// `sin`, `cos` on `[−π, π]`, absolute: 2^-11. Outside that range the spec states no
+    /// accuracy: the result is indeterminate (the emulation raises its flag).
+    pub const TRIG_ABS: f64 = 4.8828125e-4;
+    /// The largest f32 inside `[−π, π]` (`f32::consts::PI` rounds up, past π): `sin` and `cos`
+    /// of a larger magnitude have no accuracy in the spec.
+    pub const TRIG_DOMAIN: f32 = 3.141_592_5;
 }
+
+/// The host's `sin` and `cos` error, absolute, on `[−π, π]`: the emulation pushes the host's
+/// result by [`allowance::TRIG_ABS`] less this (and less the push's own rounding, 2^-24), so
+/// the result stays inside the spec's interval. No exact reference is formed for them: this
+/// bounds lavapipe's (measured by `tests/conforming.rs`, which fails on an adapter whose error
+/// is larger), and costs a conforming adapter's reach 3 % of the allowance.
+pub const HOST_TRIG_ABS: f64 = 1.52587890625e-5;
 
 /// Functions every conforming adapter evaluates exactly on the arguments the shipped code
 /// passes them, which the emulation therefore leaves as they are (see the module docs, "Exact
@@ -387,6 +408,14 @@ impl Emulation {
         let _ = writeln!(s, "const PREPASS_CF_EXP_HOST_HALVES: i32 = {exp_host};");
         let unpack = Self::halves(allowance::UNPACK_ULP, h.division_ulp);
         let _ = writeln!(s, "const PREPASS_CF_UNPACK_HALVES: i32 = {unpack};");
+        // 2^-24: the push's own rounding, at most half an ULP of a result below 1 + 2^-11.
+        let trig = allowance::TRIG_ABS - HOST_TRIG_ABS - 2f64.powi(-24);
+        let _ = writeln!(s, "const PREPASS_CF_TRIG_PUSH: f32 = {trig:e};");
+        let _ = writeln!(
+            s,
+            "const PREPASS_CF_TRIG_DOMAIN: f32 = {:e};",
+            allowance::TRIG_DOMAIN
+        );
         s
     }
 }

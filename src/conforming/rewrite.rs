@@ -490,6 +490,8 @@ fn site_for(
                 M::Sqrt => call(plan, "sqrt", &[arg]),
                 M::Exp => call(plan, "exp", &[arg]),
                 M::Exp2 => call(plan, "exp2", &[arg]),
+                M::Sin => call(plan, "sin", &[arg]),
+                M::Cos => call(plan, "cos", &[arg]),
                 M::Log => call(plan, "log", &[arg]),
                 M::Log2 => call(plan, "log2", &[arg]),
                 M::Fract => call(plan, "fract", &[arg]),

@@ -21,7 +21,7 @@ pub enum Taken {
     /// for every `x`): not emulated; prepass's functions meet it by reading special inputs from
     /// their bits, and no test asserts a non-finite intermediate.
     FiniteMath,
-    /// A freedom the spec grants that the emulation does not model (`sin`, `cos`, …).
+    /// A freedom the spec grants that the emulation does not model (`tan`, `atan2`, …).
     Unmodelled,
     /// A float instruction this table does not know: classify it before trusting a figure.
     Unknown,
@@ -132,7 +132,10 @@ fn amd(op: &str) -> Option<(Taken, &'static str)> {
             "packing to f16 or normalised integers (either neighbour)",
         )
     } else if op == "v_sin_f32" || op == "v_cos_f32" {
-        (Taken::Unmodelled, "hardware sin / cos")
+        (
+            Taken::Freedom(Freedoms::TRIG),
+            "hardware sin / cos (2^-11 absolute on [−π, π])",
+        )
     } else if exact_prefixes.iter().any(|p| op.starts_with(p)) {
         return None;
     } else {
@@ -186,7 +189,10 @@ fn intel(line: &str) -> Option<(String, Taken, &'static str)> {
         "math exp" | "math log" | "math pow" => {
             (Taken::Freedom(Freedoms::EXP_LOG), "hardware exp2 / log2")
         }
-        "math sin" | "math cos" => (Taken::Unmodelled, "hardware sin / cos"),
+        "math sin" | "math cos" => (
+            Taken::Freedom(Freedoms::TRIG),
+            "hardware sin / cos (2^-11 absolute on [−π, π])",
+        ),
         "mov" if is_float(dest_type) && !src_types.iter().any(|t| is_float(t)) => (
             Taken::Freedom(Freedoms::CONVERSION),
             "f32 of an integer (either neighbour)",

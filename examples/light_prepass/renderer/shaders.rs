@@ -86,6 +86,13 @@ struct GeoOut {
     return o;
 }
 
+// WGSL specifies sin and cos (2^-11 absolute) on [-pi, pi] only: beyond it any result
+// conforms. Reduce by 2pi first; the clamp keeps a rounding at the edge inside.
+fn wrap_pi(x: f32) -> f32 {
+    let tau = 6.2831855;
+    return clamp(x - tau * round(x / tau), -3.1415925, 3.1415925);
+}
+
 // View-space shading normal; the ground is normal-mapped with the height field
 // a·sin(f x)·sin(f z), whose slopes tilt normals past the view direction (z < 0 in view space).
 fn shading_normal(in: GeoOut) -> vec3<f32> {
@@ -95,8 +102,10 @@ fn shading_normal(in: GeoOut) -> vec3<f32> {
         let a = m.bump.x;
         let f = m.bump.y;
         let p = in.world_pos;
-        let dx = a * f * cos(f * p.x) * sin(f * p.z);
-        let dz = a * f * sin(f * p.x) * cos(f * p.z);
+        let u = wrap_pi(f * p.x);
+        let v = wrap_pi(f * p.z);
+        let dx = a * f * cos(u) * sin(v);
+        let dz = a * f * sin(u) * cos(v);
         n = normalize(vec3<f32>(-dx, 1.0, -dz));
     }
     return normalize((frame.view * vec4<f32>(n, 0.0)).xyz);
