@@ -1,6 +1,6 @@
 //! `wgsl/linear_depth.wgsl` on the adapter over the stiff grid (near 1e-4…10 × far/near
 //! 10…1e9 and ∞): every 24-bit code, and 2^24 float depths per case for both conventions,
-//! against exact f64 distances and the Rust twins in `src/linear_depth.rs`.
+//! against exact f64 distances and the Rust twins in `src/linear_depth/`.
 //!
 //! Bounds asserted: `linear_depth::bounds` — the correctly rounded figure on an adapter that
 //! evaluates like the twins (`common::evaluates_like_the_twins`: lavapipe rounds `+ − × /`

@@ -54,11 +54,20 @@
 //! `vz >= SKY` for the sky (`vz >= VIEW_Z_SKY` in WGSL, the shipped constant
 //! `3.4028234e38`, which rounds to it: Tint rejects the usual `3.4028235e38`, which lies above
 //! `f32::MAX`).
+//!
+//! **Dependencies:** this module and the constants it reads (`src/linear_depth/constants.rs`:
+//! [`DepthConvention`], [`DepthUniform`], [`DepthConsts`], [`ReversedDepthConsts`],
+//! [`Depth24Consts`]) use nothing of [`crate::projection`], which depends on them: it builds the
+//! constants from near/far, re-exports them at `prepass::projection::*`, and reads depth through
+//! [`view_z_from_depth_uniform`]. `tests::no_use_of_projection` keeps it one way.
 
-use crate::depth24::DEPTH24_MAX;
-use crate::projection::{
+mod constants;
+
+pub use constants::{
     Depth24Consts, DepthConsts, DepthConvention, DepthUniform, ReversedDepthConsts,
 };
+
+use crate::depth24::DEPTH24_MAX;
 
 /// The view distance every function here returns for the sky (and for NaN depth and invalid
 /// planes): `f32::MAX`, the largest finite `f32` (WGSL `const VIEW_Z_SKY`, written
@@ -439,6 +448,27 @@ mod tests {
             "bounds::FLOAT_CORRECTLY_ROUNDED",
             "the reversed far plane, ULP"
         );
+    }
+
+    /// `projection` depends on this module; a path into it from here, outside comments (doc links
+    /// only point a reader there), would close the circle again.
+    #[test]
+    fn no_use_of_projection() {
+        let m = "projection";
+        let needles = [format!("{m}::"), format!("::{m}"), format!("{{{m}")];
+        for (file, text) in [
+            ("mod.rs", include_str!("mod.rs")),
+            ("constants.rs", include_str!("constants.rs")),
+        ] {
+            for (i, line) in text.lines().enumerate() {
+                let code = line.trim_start();
+                assert!(
+                    code.starts_with("//") || !needles.iter().any(|n| code.contains(n.as_str())),
+                    "src/linear_depth/{file}:{}: {line}",
+                    i + 1
+                );
+            }
+        }
     }
 
     #[test]
