@@ -37,8 +37,9 @@ struct IsaRun {
     versions: Vec<Result<String, String>>,
 }
 
-/// Cost every WGSL variant on every target (one child process per target, side by side).
-fn isa_costs(variants: &[Variant]) -> (IsaRun, Vec<Vec<Option<Net>>>) {
+/// Cost every WGSL variant on `targets` (one child process per target, side by side); the
+/// other targets of [`Target::ALL`] are reported as not measured, saying why.
+fn isa_costs(variants: &[Variant], targets: &[Target]) -> (IsaRun, Vec<Vec<Option<Net>>>) {
     let functions: Vec<Function> = variants
         .iter()
         .filter_map(|v| v.wgsl.as_ref())
@@ -55,7 +56,7 @@ fn isa_costs(variants: &[Variant]) -> (IsaRun, Vec<Vec<Option<Net>>>) {
         })
         .collect();
     let none = || vec![vec![None; Target::ALL.len()]; variants.len()];
-    let report = match Costing::new().cost(&functions) {
+    let report = match Costing::new().targets(targets).cost(&functions) {
         Ok(r) => r,
         Err(e) => {
             let why = format!("naga refused a kernel: {e}");
@@ -68,11 +69,19 @@ fn isa_costs(variants: &[Variant]) -> (IsaRun, Vec<Vec<Option<Net>>>) {
         }
     };
     let mut per_variant = none();
-    let mut versions = Vec::new();
-    for (ti, t) in report.targets.iter().enumerate() {
+    let mut versions: Vec<Result<String, String>> = vec![
+        Err(
+            "not costed in a quick run (RDNA2, RDNA3 and Xe-HPG only, the plotted targets; \
+             the full run costs all eight)"
+                .into()
+        );
+        Target::ALL.len()
+    ];
+    for t in &report.targets {
+        let ti = target_index(t.target);
         match &t.outcome {
             Ok(c) => {
-                versions.push(Ok(c.driver_info.clone()));
+                versions[ti] = Ok(c.driver_info.clone());
                 let mut k = 0;
                 for (vi, v) in variants.iter().enumerate() {
                     if v.wgsl.is_some() {
@@ -81,7 +90,7 @@ fn isa_costs(variants: &[Variant]) -> (IsaRun, Vec<Vec<Option<Net>>>) {
                     }
                 }
             }
-            Err(why) => versions.push(Err(why.clone())),
+            Err(why) => versions[ti] = Err(why.clone()),
         }
     }
     (IsaRun { versions }, per_variant)
@@ -121,7 +130,10 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     let mut method = None;
     let mut costs = Vec::new();
     bar.set_message("real instruction sets (ACO, brw)");
-    let (isa_run, mut isa) = isa_costs(&variants);
+    // A quick run compiles for the plotted targets only: each target is one child process
+    // compiling every variant, and the quick report is read for its plots.
+    let targets: &[Target] = if quick { &PLOTTED } else { &Target::ALL };
+    let (isa_run, mut isa) = isa_costs(&variants, targets);
     for (v, isa) in variants.iter().zip(&mut isa) {
         bar.set_message(v.name.clone());
         let mut c = Costs {
