@@ -32,6 +32,15 @@ fn t_sub(a: f32, b: f32) -> f32 { return a - b; }
 fn t_mul(a: f32, b: f32) -> f32 { return a * b; }
 fn t_mad(a: f32, b: f32, c: f32) -> f32 { return a * b + c; }
 fn t_add3(a: f32, b: f32, c: f32) -> f32 { return (a + b) + c; }
+fn t_sub_add(a: f32, b: f32, c: f32) -> f32 { return (a - b) + c; }
+fn t_add_sub(a: f32, b: f32, c: f32) -> f32 { return (a + b) - c; }
+fn t_mul_div(a: f32, b: f32, c: f32) -> f32 { return (a * b) / c; }
+fn t_matmat(a: f32, b: f32, c: f32) -> vec4<f32> {
+    let m = mat2x2<f32>(a, b, c, a) * mat2x2<f32>(b, c, a, b);
+    return vec4<f32>(m[0], m[1]);
+}
+fn t_dot3(a: f32, b: f32, c: f32) -> f32 { return dot(vec3<f32>(a, b, c), vec3<f32>(1.0)); }
+fn t_dot4(a: f32, b: f32, c: f32) -> f32 { return dot(vec4<f32>(a, b, c, -0.5 * b), vec4<f32>(1.0)); }
 fn t_inverse_sqrt(x: f32) -> f32 { return inverseSqrt(x); }
 fn t_sqrt(x: f32) -> f32 { return sqrt(x); }
 fn t_exp2(x: f32) -> f32 { return exp2(x); }
@@ -424,6 +433,172 @@ fn fusion_and_reassociation_reach_their_alternatives() {
         "upper takes a + (b + c)"
     );
     assert_eq!(f32::from_bits(r_lo[0]), 1.0, "lower takes (a + b) + c");
+}
+
+/// Every grouping the spec's reassociation allows for three terms (and for `dot`'s lanes),
+/// reached: with reassociation the only freedom, every other operation rounds to nearest as the
+/// host (and this f32 arithmetic) does, so the upper policy must return the largest of the
+/// groupings' results and the lower the smallest, at every input. Each grouping must be the
+/// only one to reach that end at some input, so an emulation missing one fails, and so does
+/// the identity (only the written grouping).
+#[test]
+fn reassociation_reaches_every_grouping() {
+    type Groupings = fn(f32, f32, f32) -> Vec<f32>;
+    let cases: [(&str, Freedoms, Groupings); 6] = [
+        ("t_add3", Freedoms::REASSOCIATION, |a, b, c| {
+            vec![(a + b) + c, a + (b + c), (a + c) + b]
+        }),
+        ("t_sub_add", Freedoms::REASSOCIATION, |a, b, c| {
+            vec![(a - b) + c, (a + c) - b, a - (b - c)]
+        }),
+        ("t_add_sub", Freedoms::REASSOCIATION, |a, b, c| {
+            vec![(a + b) - c, a + (b - c), (a - c) + b]
+        }),
+        ("t_mul_div", Freedoms::REASSOCIATION, |a, b, c| {
+            vec![(a * b) / c, (a / c) * b, a * (b / c)]
+        }),
+        // dot as its defining sum (inherited). Its products are exact here (each term times
+        // 1): what is tested is the order of the sum. With rounded products lavapipe returned,
+        // at some inputs, another grouping's sum than the one the wrapper wrote (its compiler
+        // may regroup float adds, as WGSL allows), so the test would measure the host's order.
+        (
+            "t_dot3",
+            Freedoms::REASSOCIATION.union(Freedoms::INHERITED),
+            |a, b, c| vec![(a + b) + c, a + (b + c), (a + c) + b],
+        ),
+        (
+            "t_dot4",
+            Freedoms::REASSOCIATION.union(Freedoms::INHERITED),
+            |a, b, c| {
+                let d = -0.5 * b;
+                vec![((a + b) + c) + d, a + (b + (c + d)), (a + b) + (c + d)]
+            },
+        ),
+    ];
+    // Magnitudes spread over 2^±12 of either sign, so sums cancel and groupings differ.
+    let mut s = 0x9e37_79b9_7f4a_7c15u64;
+    let mut draw = || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        let m = 1.0 + (s >> 40) as f32 / (1u64 << 24) as f32;
+        let e = ((s >> 8) % 25) as i32 - 12;
+        let sign = if s & 1 == 1 { -1.0 } else { 1.0 };
+        sign * m * 2f32.powi(e)
+    };
+    let n = 4096;
+    let (xs, ys, zs): (Vec<f32>, Vec<f32>, Vec<f32>) =
+        (0..n).map(|_| (draw(), draw(), draw())).fold(
+            (vec![], vec![], vec![]),
+            |(mut x, mut y, mut z), (a, b, c)| {
+                x.push(a);
+                y.push(b);
+                z.push(c);
+                (x, y, z)
+            },
+        );
+    let args = [Arg::column(&xs), Arg::column(&ys), Arg::column(&zs)];
+    for (f, freedoms, groupings) in cases {
+        let (up, _) = run(f, Policy::Upper, freedoms, &args, n);
+        let (lo, _) = run(f, Policy::Lower, freedoms, &args, n);
+        let mut only = [[0usize; 3]; 2];
+        for i in 0..n {
+            let g = groupings(xs[i], ys[i], zs[i]);
+            let (max, min) = (
+                g.iter().copied().fold(f32::MIN, f32::max),
+                g.iter().copied().fold(f32::MAX, f32::min),
+            );
+            let (u, l) = (f32::from_bits(up[i]), f32::from_bits(lo[i]));
+            assert_eq!(
+                u.to_bits(),
+                max.to_bits(),
+                "{f}({}, {}, {}): upper gave {u:e}, the largest grouping is {max:e} (groupings {g:?})",
+                xs[i],
+                ys[i],
+                zs[i]
+            );
+            assert_eq!(
+                l.to_bits(),
+                min.to_bits(),
+                "{f}({}, {}, {}): lower gave {l:e}, the smallest grouping is {min:e} (groupings {g:?})",
+                xs[i],
+                ys[i],
+                zs[i]
+            );
+            for (end, v) in [(0, max), (1, min)] {
+                let reach: Vec<usize> = (0..3).filter(|&k| g[k] == v).collect();
+                if let [k] = reach[..] {
+                    only[end][k] += 1;
+                }
+            }
+        }
+        eprintln!(
+            "{f}: inputs where grouping k alone is the max {:?}, the min {:?}",
+            only[0], only[1]
+        );
+        for k in 0..3 {
+            assert!(
+                only[0][k] + only[1][k] > 0,
+                "{f}: grouping {k} is never the only one at an end over {n} inputs: the test \
+                 would not see it missing"
+            );
+        }
+    }
+}
+
+/// Matrix × matrix is emulated as the dot products that define each element: with rounding the
+/// only freedom (and inheritance, so the dots are expanded), the upper policy's every element is
+/// at or above the exact value and the lower's at or below, and both leave the host's
+/// round-to-nearest result at some inputs (so the identity, or a product left at the host's
+/// accuracy, fails).
+#[test]
+fn matrix_products_round_each_way() {
+    let n = 2048;
+    let mut s = 0x2545_f491_4f6c_dd1du64;
+    let mut draw = || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        (1.0 + (s >> 41) as f32 / (1u64 << 23) as f32) * if s & 1 == 1 { -1.0 } else { 1.0 }
+    };
+    let v: Vec<[f32; 3]> = (0..n).map(|_| [draw(), draw(), draw()]).collect();
+    let col = |k: usize| v.iter().map(|x| x[k]).collect::<Vec<f32>>();
+    let (xs, ys, zs) = (col(0), col(1), col(2));
+    let args = [Arg::column(&xs), Arg::column(&ys), Arg::column(&zs)];
+    let fr = Freedoms::ROUNDING.union(Freedoms::INHERITED);
+    let (up, _) = run("t_matmat", Policy::Upper, fr, &args, n);
+    let (lo, _) = run("t_matmat", Policy::Lower, fr, &args, n);
+    let (id, _) = run("t_matmat", Policy::Identity, fr, &args, n);
+    let (mut up_moved, mut lo_moved) = (0, 0);
+    for i in 0..n {
+        let [a, b, c] = v[i].map(f64::from);
+        // Columns: A = [(a, b), (c, a)], B = [(b, c), (a, b)]; (A·B)[j] = B[j].x·A[0] + B[j].y·A[1].
+        let exact = [b * a + c * c, b * b + c * a, a * a + b * c, a * b + b * a];
+        for k in 0..4 {
+            let (u, l, h) = (
+                f64::from(f32::from_bits(up[4 * i + k])),
+                f64::from(f32::from_bits(lo[4 * i + k])),
+                f32::from_bits(id[4 * i + k]),
+            );
+            // The exact value in f64 is a sum of two exact products: within 2^-52 of it.
+            let slack = exact[k].abs() * 2f64.powi(-52);
+            assert!(
+                u >= exact[k] - slack && l <= exact[k] + slack,
+                "element {k} at ({a}, {b}, {c}): upper {u:e} and lower {l:e} do not bracket the exact {:e}",
+                exact[k]
+            );
+            up_moved += usize::from(u != f64::from(h));
+            lo_moved += usize::from(l != f64::from(h));
+        }
+    }
+    eprintln!(
+        "matrix × matrix: upper left the host's result in {up_moved}, lower in {lo_moved} of {} elements",
+        4 * n
+    );
+    assert!(
+        up_moved > 0 && lo_moved > 0,
+        "the policies never moved a matrix product's element: not emulated"
+    );
 }
 
 #[test]

@@ -700,17 +700,34 @@ fn prepass_cf_add3(site: u32, a: f32, b: f32, c: f32) -> f32 {
         return left;
     }
     let right = prepass_cf_add(site + 16u, a, prepass_cf_add(site + 24u, b, c));
-    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
+    // The third grouping of three terms: (a + c) + b.
+    let third = prepass_cf_add(site + 40u, prepass_cf_add(site + 48u, a, c), b);
+    let two = prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
+    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 56u, two, third);
 }
 
-// (a - b) + c, or (a + c) - b.
+// (a - b) + c, (a + c) - b, or a - (b - c).
 fn prepass_cf_sub_add(site: u32, a: f32, b: f32, c: f32) -> f32 {
     let left = prepass_cf_add(site, prepass_cf_sub(site + 8u, a, b), c);
     if (!prepass_cf_on(PREPASS_CF_REASSOCIATION)) {
         return left;
     }
     let right = prepass_cf_sub(site + 16u, prepass_cf_add(site + 24u, a, c), b);
-    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
+    let third = prepass_cf_sub(site + 40u, a, prepass_cf_sub(site + 48u, b, c));
+    let two = prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
+    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 56u, two, third);
+}
+
+// (a + b) - c, a + (b - c), or (a - c) + b.
+fn prepass_cf_add_sub(site: u32, a: f32, b: f32, c: f32) -> f32 {
+    let left = prepass_cf_sub(site, prepass_cf_add(site + 8u, a, b), c);
+    if (!prepass_cf_on(PREPASS_CF_REASSOCIATION)) {
+        return left;
+    }
+    let right = prepass_cf_add(site + 16u, a, prepass_cf_sub(site + 24u, b, c));
+    let third = prepass_cf_add(site + 40u, prepass_cf_sub(site + 48u, a, c), b);
+    let two = prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
+    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 56u, two, third);
 }
 
 // (a - b) + x*y: fused or not, or reassociated to (a + x*y) - b.
@@ -733,14 +750,16 @@ fn prepass_cf_add3_mad(site: u32, a: f32, b: f32, x: f32, y: f32) -> f32 {
     return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 80u, left, right);
 }
 
-// (a * b) / c, or (a / c) * b.
+// (a * b) / c, (a / c) * b, or a * (b / c).
 fn prepass_cf_mul_div(site: u32, a: f32, b: f32, c: f32) -> f32 {
     let left = prepass_cf_div(site, prepass_cf_mul(site + 8u, a, b), c);
     if (!prepass_cf_on(PREPASS_CF_REASSOCIATION)) {
         return left;
     }
     let right = prepass_cf_mul(site + 16u, prepass_cf_div(site + 24u, a, c), b);
-    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
+    let third = prepass_cf_mul(site + 40u, a, prepass_cf_div(site + 48u, b, c));
+    let two = prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 32u, left, right);
+    return prepass_cf_pick(PREPASS_CF_REASSOCIATION, site + 56u, two, third);
 }
 
 // fract(x) as inherited: x - floor(x).

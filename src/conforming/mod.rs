@@ -11,7 +11,13 @@
 //! table, comparisons, `min`, `max`, `clamp`, `floor` and the rest included, and of f16 pack and
 //! unpack intermediates); `a·b + c` may be fused; and an implementation may reassociate,
 //! `(a+b)+c ↔ a+(b+c)`, `(a−b)+c ↔ (a+c)−b`, `(a·b)/c ↔ (a/c)·b` (WGSL spec, "Floating Point
-//! Evaluation"). A correctly rounded adapter such as lavapipe uses none of that freedom, so a
+//! Evaluation"). The emulation takes the spec's examples as the rule they illustrate: every
+//! grouping of a three-term sum (`(a+b)+c`, `a+(b+c)`, `(a+c)+b`; the same with a difference,
+//! `(a−b)+c`, `(a+c)−b`, `a−(b−c)` and `(a+b)−c`, `a+(b−c)`, `(a−c)+b`), of a product over a
+//! quotient (`(a·b)/c`, `(a/c)·b`, `a·(b/c)`), and of `dot`'s lanes (written order, reversed,
+//! and the outer terms first at three lanes or pairwise at four). Not modelled: a product
+//! returned by a helper function fused into its caller's sum (what a compiler may do after
+//! inlining). A correctly rounded adapter such as lavapipe uses none of that freedom, so a
 //! figure measured there holds on one adapter.
 //!
 //! [`emulate`] rewrites any WGSL module at the naga IR level so that every such operation is

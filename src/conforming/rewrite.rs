@@ -225,6 +225,19 @@ fn inherited(plan: &mut Plan, what: &str, n: Lanes) -> String {
                     s,
                     "    r = {p}pick(PREPASS_CF_REASSOCIATION, site + 1600u, r, q);"
                 );
+                // The grouping neither order reaches: the outer terms first, (p0 + p2) + p1
+                // at three lanes; pairwise, (p0 + p1) + (p2 + p3), at four.
+                let third = if n == 3 {
+                    format!("{p}add(site + 3072u, {p}add(site + 3136u, p0, p2), p1)")
+                } else {
+                    format!(
+                        "{p}add(site + 3072u, {p}add(site + 3136u, p0, p1), {p}add(site + 3200u, p2, p3))"
+                    )
+                };
+                let _ = writeln!(
+                    s,
+                    "    r = {p}pick(PREPASS_CF_REASSOCIATION, site + 3264u, r, {third});"
+                );
             }
             if n > 1 {
                 // Fused: every product after the first folded into a multiply-add.
@@ -453,6 +466,8 @@ fn site_for(
                         call(plan, "msub", &[a, b, right])
                     } else if let Some((a, b)) = mul(right) {
                         call(plan, "nmad", &[a, b, left])
+                    } else if let Some((a, b)) = add(left) {
+                        call(plan, "add_sub", &[a, b, right])
                     } else {
                         call(plan, "sub", &[left, right])
                     }
