@@ -38,8 +38,9 @@ pub struct Outcome {
     pub output: Option<Output>,
 }
 
-/// Jobs per node process: dawn.node 0.6.2 crashed (SIGSEGV) after a few thousand shader
-/// modules in one process.
+/// Jobs per node process, also the unit split across cores: dawn.node 0.6.2 crashed (SIGSEGV)
+/// after a few thousand shader modules in one process, before run.mjs held Dawn's instance
+/// (see `run_to_the_end`; likely the same cause, not measured again).
 const JOBS_PER_PROCESS: usize = 256;
 
 /// The adapter Dawn ran on and one [`Outcome`] per job, in order. Panics (the test fails) when
@@ -241,8 +242,8 @@ fn cpu_ticks(pid: u32) -> Option<u64> {
 
 /// A runner that finishes no job and uses less than `IDLE_CPU_TICKS` of CPU (2 % of a core)
 /// over the last `HANG_WINDOW` is hung: seen here as a deadlock in Dawn's event processing
-/// (`dawn::native::InstanceBase::ProcessEvents` waiting on a mutex no thread holds; 2 s of CPU
-/// in 16 min, 0.2 %), in 2 of 100 runs of 246 small dispatches. A job that is compiling keeps a
+/// (`dawn::native::InstanceBase::ProcessEvents` waiting on a mutex no thread holds, the freed
+/// instance's: see `run_to_the_end`; 2 s of CPU in 16 min, 0.2 %). A job that is compiling keeps a
 /// core busy, and so does a dispatch on lavapipe (on a GPU these dispatches take milliseconds),
 /// so a slow job is not mistaken for a hang. Where CPU time cannot be read (not Linux), only
 /// `NO_JOB_LIMIT` without a finished job counts as hung.
@@ -253,17 +254,27 @@ const NO_JOB_LIMIT: Duration = Duration::from_secs(900);
 /// Starts in a row that finish no job before the runner is given up on.
 const FRUITLESS_STARTS: usize = 5;
 
-/// Runs `dir`'s jobs to the end through as many node processes as it takes. Dawn's node
-/// binding dies by a signal now and then, or hangs (SIGSEGV; SIGABRT after "std::system_error:
-/// Invalid argument", "The futex facility returned an unexpected error code" or a glibc
-/// assertion in `__pthread_mutex_lock_full`; a deadlock at 0 % CPU): 5 of 100 runs of 246
-/// small dispatches on a 2-core Xeon (2026-12-05), after 6 of 14 runs of
-/// tests/implementations.rs on an EPYC (2026-12-04). `node --single-threaded` made it worse
-/// (41 of 100), keeping every Dawn object alive did not cure it (3 of 100). Every finished
-/// job is on disk (run.mjs appends it whole), so a crashed or hung process is replaced by one
-/// that starts at the first unfinished job, and the crash is printed. A runner that exits with
-/// a status (an error it reports) fails at once, as does one that crashes or hangs
-/// `FRUITLESS_STARTS` times in a row without finishing a job.
+/// Runs `dir`'s jobs to the end through as many node processes as it takes.
+///
+/// Why the runner crashed: the npm `webgpu` binding (dawn.node 0.6.2, the newest) does not keep
+/// Dawn's instance alive from the device: only the JS objects `create()` and `requestAdapter()`
+/// return do. run.mjs used them only at its start, so V8 was free to collect them mid-run; their
+/// finaliser freed the instance that the binding's event loop still polls
+/// (`InstanceBase::ProcessEvents` → `CallbackTaskManager::Flush` on freed memory), and the
+/// process died by SIGSEGV, by SIGABRT ("std::system_error: Invalid argument", glibc's
+/// `__pthread_mutex_lock` assertions) or deadlocked at 0 % CPU, at the first full GC after a
+/// couple of hundred jobs. Reproduced by `node --expose-gc` with `gc()` after every job: every
+/// run crashed at job 200 of 246 (6 of 6), and none of 10 with either object held.
+/// run.mjs now holds them for the life of the process: replaying 246 small dispatches of
+/// tests/implementations.rs, 0 of 30 runs crashed or hung, against 8 of 20 (6 crashes, 2 hangs)
+/// before, on a 2-core Xeon (2026-12-06).
+///
+/// The restart stays as a guard, since Dawn is a large native library that we cannot fix here
+/// and a crash costs a whole test binary otherwise: every finished job is on disk (run.mjs
+/// appends it whole), so a crashed or hung process is replaced by one that starts at the first
+/// unfinished job, and the crash is printed — a crash now is a new bug, to be reduced like this
+/// one. A runner that exits with a status (an error it reports) fails at once, as does one that
+/// crashes or hangs `FRUITLESS_STARTS` times in a row without finishing a job.
 fn run_to_the_end(
     root: &Path,
     dir: &Path,

@@ -39,6 +39,11 @@ const faults = Object.fromEntries((process.env.PREPASS_DAWN_FAULTS || '').split(
   .map(f => f.split(':')).map(([kind, at]) => [kind, Number(at)]));
 const results = path.join(dir, 'results.txt');
 const device = await adapter.requestDevice();
+// Dawn's instance lives as long as the JS objects `gpu` and `adapter`, and the device does not
+// keep it alive: once neither is reachable, V8 may collect them mid-run and free the instance
+// that the binding still polls (InstanceBase::ProcessEvents), which crashed (SIGSEGV, SIGABRT in
+// CallbackTaskManager::Flush) or deadlocked the runner after a couple of hundred jobs. Hold them.
+globalThis.prepassDawnRoots = [gpu, adapter];
 const jobs = fs.readFileSync(path.join(dir, 'jobs.tsv'), 'utf8').split('\n').filter(l => l).map(l => {
   const [name, file, entry, uniform, columns, outWords, groups] = l.split('\t');
   const job = { name, source: fs.readFileSync(path.join(dir, file), 'utf8') };
