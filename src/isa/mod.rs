@@ -443,8 +443,9 @@ pub struct LibraryReport {
 
 impl Costing {
     /// Compile whole WGSL libraries (modules of functions, no entry point) for every target, as
-    /// a witness that the compilers accept them: each gets an entry point that calls every
-    /// function whose signature the harness reads on arguments loaded from a buffer, and stores
+    /// a witness that the compilers accept them: each gets an entry point ([`library_kernel`])
+    /// that calls every function whose signature the harness reads (`f32` matrix parameters
+    /// included) on arguments loaded from a buffer, and stores
     /// the XOR of their results' bits (so no call is dead code); the names of the functions it
     /// calls come back with the report. A library naga rejects fails the call.
     pub fn compile_libraries(
