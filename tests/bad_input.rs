@@ -227,6 +227,7 @@ fn wgsl_gives_the_documented_answers_on_dawn() {
                         .dispatch(&j.args(), j.n)
                         .unwrap_or_else(|e| panic!("{}: {e}", j.name)),
                 ),
+                pipelines: Vec::new(),
             })
             .collect();
         let (a, outcomes) = dawn::run(dawn_jobs);

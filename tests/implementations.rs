@@ -96,6 +96,7 @@ fn dawn_jobs(calls: Vec<Dispatch>) -> Vec<dawn::Job> {
             name: format!("call {i}"),
             source: String::new(),
             dispatch: Some(d),
+            pipelines: Vec::new(),
         })
         .collect()
 }

@@ -25,7 +25,7 @@ mod renderer;
 
 use prepass::{assert_at_least, assert_within};
 use renderer::compare::{false_colour, non_finite, to_rgb8};
-use renderer::render::{Device, lights_in_view, render};
+use renderer::render::{Device, PipelineShape, lights_in_view, pipeline_shapes, render};
 use renderer::report::{Row, fat_of, run, table};
 use renderer::{Config, Storage, bound, scene};
 use std::sync::OnceLock;
@@ -299,8 +299,10 @@ fn png_pixels(path: &std::path::Path) -> Vec<[u8; 3]> {
 /// Bad input: a resolution of 0 and one beyond the adapter's limit are clear errors; the
 /// frame's own bad-input lights (at the camera, through the near plane, radius 0) and its sky
 /// render finite pixels; MSAA, where the adapter has it, renders finite pixels per sample.
-/// The renderer's shaders (every layout the report renders, single-sampled and 4× MSAA) compile
-/// with Tint too, through Dawn.
+/// The renderer's shaders (every layout the report renders, single-sampled and 4× MSAA) build
+/// with Tint too, through Dawn: every render pipeline the frame creates
+/// (`render::pipeline_shapes`: formats, blending, depth and samples as `render` sets them), so
+/// Tint's backend compiles each entry point for the pipeline it serves.
 #[test]
 fn light_prepass_shaders_compile_with_tint() {
     let mut modules = Vec::new();
@@ -322,11 +324,87 @@ fn light_prepass_shaders_compile_with_tint() {
                 modules.push((
                     format!("{} msaa {msaa}", cfg.layout_name()),
                     renderer::shaders::module(&cfg, &crate_wgsl),
+                    pipeline_shapes(&cfg).iter().map(webgpu_pipeline).collect(),
                 ));
             }
         }
     }
-    dawn::assert_compile(modules);
+    dawn::assert_pipelines(modules);
+}
+
+/// `p` as a WebGPU render pipeline descriptor in JSON, less the module and layout (the Dawn
+/// runner sets them). wgpu's variant names are WebGPU's enum values in another case.
+fn webgpu_pipeline(p: &PipelineShape) -> String {
+    // Formats: `Rgba16Float` is "rgba16float" (but "depth24plus-stencil8"); other enums:
+    // `GreaterEqual` is "greater-equal".
+    let format = |d: &dyn std::fmt::Debug| {
+        let f = format!("{d:?}").to_lowercase();
+        format!("\"{}\"", f.replace("plusstencil8", "plus-stencil8"))
+    };
+    let value = |d: &dyn std::fmt::Debug| {
+        let mut v = String::new();
+        for (i, c) in format!("{d:?}").chars().enumerate() {
+            if c.is_uppercase() && i > 0 {
+                v.push('-');
+            }
+            v.push(c.to_ascii_lowercase());
+        }
+        format!("\"{v}\"")
+    };
+    let attributes: Vec<String> = p
+        .attributes
+        .iter()
+        .map(|a| {
+            format!(
+                r#"{{"shaderLocation":{},"offset":{},"format":{}}}"#,
+                a.shader_location,
+                a.offset,
+                format(&a.format)
+            )
+        })
+        .collect();
+    let component = |c: &wgpu::BlendComponent| {
+        format!(
+            r#"{{"srcFactor":{},"dstFactor":{},"operation":{}}}"#,
+            value(&c.src_factor),
+            value(&c.dst_factor),
+            value(&c.operation)
+        )
+    };
+    let targets: Vec<String> = p
+        .targets
+        .iter()
+        .map(|t| {
+            let t = t.as_ref().expect("every target present");
+            let blend = t.blend.map_or(String::new(), |b| {
+                format!(
+                    r#","blend":{{"color":{},"alpha":{}}}"#,
+                    component(&b.color),
+                    component(&b.alpha)
+                )
+            });
+            format!(
+                r#"{{"format":{},"writeMask":{}{blend}}}"#,
+                format(&t.format),
+                t.write_mask.bits()
+            )
+        })
+        .collect();
+    let depth = &p.depth;
+    format!(
+        r#"{{"label":"{}","vertex":{{"entryPoint":"{}","buffers":[{{"arrayStride":{},"attributes":[{}]}}]}},"fragment":{{"entryPoint":"{}","targets":[{}]}},"primitive":{{"cullMode":{}}},"depthStencil":{{"format":{},"depthWriteEnabled":{},"depthCompare":{}}},"multisample":{{"count":{}}}}}"#,
+        p.label,
+        p.vs,
+        p.vertex_stride,
+        attributes.join(","),
+        p.fs,
+        targets.join(","),
+        value(&p.cull),
+        format(&depth.format),
+        depth.depth_write_enabled.expect("depth write set"),
+        value(&depth.depth_compare.expect("depth compare set")),
+        p.samples
+    )
 }
 
 #[test]

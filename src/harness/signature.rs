@@ -134,7 +134,15 @@ impl Signature {
     /// Read the signature of `function` from `source` (which must parse and validate on its own).
     pub fn read(source: &str, function: &str) -> Result<Self, SignatureError> {
         let checked = parse_and_validate(source).map_err(SignatureError::Wgsl)?;
-        let module = &checked.module;
+        Self::read_parsed(&checked.module, function)
+    }
+
+    /// [`Signature::read`] of a module already parsed and validated: a caller reading every
+    /// function of a large module parses it once, not once per function.
+    pub(crate) fn read_parsed(
+        module: &naga::Module,
+        function: &str,
+    ) -> Result<Self, SignatureError> {
         let found = module
             .functions
             .iter()

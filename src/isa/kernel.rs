@@ -123,38 +123,66 @@ pub(crate) fn wrap(user: &str, sig: &Signature, feeds: &[Feed], k: u32, evaluate
     }
 }
 
+/// A call's arguments, each as the values loaded for it and, for a matrix, the type its
+/// columns build.
+type Args = Vec<(Vec<ValueType>, Option<String>)>;
+
+/// [`library`]'s kernel, the functions it calls, and those it leaves out with why.
+type Library = (Wrapped, Vec<String>, Vec<(String, String)>);
+
 /// A library's witness kernel: every function whose signature the harness reads
 /// ([`Signature::read`]) called once on arguments loaded from one storage buffer (each
 /// argument its own words), the XOR of every result's bits stored, so that no call is dead.
-/// Returns the kernel and the functions it calls.
-pub(crate) fn library(user: &str) -> Result<(Wrapped, Vec<String>), String> {
+/// Returns the kernel, the functions it calls, and the functions it cannot call that none of
+/// those calls either (each with why it cannot call it): the ones the kernel leaves out.
+pub(crate) fn library(user: &str) -> Result<Library, String> {
     let checked = crate::wgsl::parse_and_validate(user).map_err(|e| e.to_string())?;
     let mut body = String::from("    var acc = 0u;\n");
     let mut names = Vec::new();
+    let mut uncallable = Vec::new();
     let mut word = 0usize;
     for (_, f) in checked.module.functions.iter() {
         let Some(name) = &f.name else { continue };
-        let Ok(sig) = Signature::read(user, name) else {
-            continue;
+        // Each argument as the values it is built from (a matrix: its columns).
+        let (parts, result): (Args, ValueType) = match Signature::read_parsed(&checked.module, name)
+        {
+            Ok(sig) => (
+                sig.params.iter().map(|p| (vec![p.ty], None)).collect(),
+                sig.result,
+            ),
+            Err(why) => match with_matrices(&checked.module, f) {
+                Some(read) => read,
+                None => {
+                    uncallable.push((name.clone(), why.to_string()));
+                    continue;
+                }
+            },
         };
         let mut args = Vec::new();
-        for p in &sig.params {
-            let bits = lane_read(p.ty, "prepass_isa_lib_in", &format!("{word}u + gid.x"));
-            word += p.ty.words();
-            args.push(if p.ty.scalar == Scalar::U32 {
-                bits
-            } else {
-                format!("bitcast<{}>({bits})", p.ty.wgsl())
+        for (values, matrix) in parts {
+            let mut loaded = Vec::new();
+            for ty in values {
+                let bits = lane_read(ty, "prepass_isa_lib_in", &format!("{word}u + gid.x"));
+                word += ty.words();
+                loaded.push(if ty.scalar == Scalar::U32 {
+                    bits
+                } else {
+                    format!("bitcast<{}>({bits})", ty.wgsl())
+                });
+            }
+            args.push(match matrix {
+                Some(m) => format!("{m}({})", loaded.join(", ")),
+                None => loaded.remove(0),
             });
         }
         let r = format!(
             "bitcast<{}>({name}({}))",
-            sig.result.wgsl_bits(),
+            result.wgsl_bits(),
             args.join(", ")
         );
         let _ = writeln!(body, "    {{ let r = {r};");
-        for lane in 0..sig.result.words() {
-            let v = if sig.result.words() == 1 {
+        for lane in 0..result.words() {
+            let v = if result.words() == 1 {
                 "r".to_string()
             } else {
                 format!("r.{}", ["x", "y", "z", "w"][lane])
@@ -170,11 +198,98 @@ pub(crate) fn library(user: &str) -> Result<(Wrapped, Vec<String>), String> {
          @compute @workgroup_size({WORKGROUP_SIZE})\n\
          fn {ENTRY}(@builtin(global_invocation_id) gid: vec3<u32>) {{\n{body}    prepass_isa_out[gid.x] = acc;\n}}\n"
     );
+    let reached = reachable(&checked.module, &names);
+    uncallable.retain(|(name, _)| !reached.contains(name));
     Ok((
         Wrapped {
             source,
             bindings: "rw".into(),
         },
         names,
+        uncallable,
     ))
+}
+
+/// `f`'s parameters and result where [`Signature::read`] refuses only its `f32` matrix
+/// parameters (`world_ray` takes a camera rotation): each parameter as the values it is built
+/// from, with the matrix type that builds it from its columns.
+fn with_matrices(module: &naga::Module, f: &naga::Function) -> Option<(Args, ValueType)> {
+    use naga::{ScalarKind, TypeInner};
+    let value = |inner: &TypeInner| {
+        let (s, lanes) = match inner {
+            TypeInner::Scalar(s) => (*s, 1u8),
+            TypeInner::Vector { size, scalar } => (*scalar, *size as u8),
+            _ => return None,
+        };
+        let scalar = match (s.kind, s.width) {
+            (ScalarKind::Float, 4) => Scalar::F32,
+            (ScalarKind::Uint, 4) => Scalar::U32,
+            (ScalarKind::Sint, 4) => Scalar::I32,
+            _ => return None,
+        };
+        Some(ValueType { scalar, lanes })
+    };
+    let mut params = Vec::new();
+    for a in &f.arguments {
+        let inner = &module.types[a.ty].inner;
+        params.push(match inner {
+            TypeInner::Matrix {
+                columns,
+                rows,
+                scalar,
+            } if *scalar == naga::Scalar::F32 => {
+                let (c, r) = (*columns as u8, *rows as u8);
+                let column = ValueType {
+                    scalar: Scalar::F32,
+                    lanes: r,
+                };
+                (
+                    vec![column; usize::from(c)],
+                    Some(format!("mat{c}x{r}<f32>")),
+                )
+            }
+            _ => (vec![value(inner)?], None),
+        });
+    }
+    let result = value(&module.types[f.result.as_ref()?.ty].inner)?;
+    Some((params, result))
+}
+
+/// The functions `roots` call, directly or not, roots included.
+fn reachable(module: &naga::Module, roots: &[String]) -> std::collections::BTreeSet<String> {
+    fn calls(block: &naga::Block, out: &mut Vec<naga::Handle<naga::Function>>) {
+        use naga::Statement as S;
+        for st in block.iter() {
+            match st {
+                S::Call { function, .. } => out.push(*function),
+                S::Block(b) => calls(b, out),
+                S::If { accept, reject, .. } => {
+                    calls(accept, out);
+                    calls(reject, out);
+                }
+                S::Switch { cases, .. } => cases.iter().for_each(|c| calls(&c.body, out)),
+                S::Loop {
+                    body, continuing, ..
+                } => {
+                    calls(body, out);
+                    calls(continuing, out);
+                }
+                _ => {}
+            }
+        }
+    }
+    let mut seen = std::collections::BTreeSet::new();
+    let mut todo: Vec<_> = module
+        .functions
+        .iter()
+        .filter(|(_, f)| f.name.as_ref().is_some_and(|n| roots.contains(n)))
+        .map(|(h, _)| h)
+        .collect();
+    while let Some(h) = todo.pop() {
+        let f = &module.functions[h];
+        if seen.insert(f.name.clone().unwrap_or_default()) {
+            calls(&f.body, &mut todo);
+        }
+    }
+    seen
 }

@@ -403,6 +403,34 @@ fn spirv_file(dir: &std::path::Path, n: usize, source: &str) -> Result<PathBuf, 
     Ok(path)
 }
 
+/// A library's witness kernel, as [`Costing::compile_libraries`] compiles it, for another
+/// compiler to build a pipeline of (Tint, through Dawn, in the tests).
+#[derive(Clone, Debug)]
+pub struct LibraryKernel {
+    /// The library with the [`ENTRY`] compute entry point appended. Bindings, group 0: 0 = the
+    /// arguments (`array<u32>`, read), 1 = the XOR of the results (`array<u32>`, read_write).
+    pub source: String,
+    /// The functions the entry point calls: those whose signature the harness reads
+    /// ([`Signature::read`]), and those it reads but for `f32` matrix parameters (loaded
+    /// column by column).
+    pub called: Vec<String>,
+    /// The functions it cannot call (a pointer, struct or `bool` parameter or result, no
+    /// result) that no called function reaches either, with why: no pipeline of this entry
+    /// point compiles them.
+    pub left_out: Vec<(String, String)>,
+}
+
+/// [`LibraryKernel`] of `source`, a WGSL library (functions, no entry point). Fails where naga
+/// rejects it.
+pub fn library_kernel(source: &str) -> Result<LibraryKernel, IsaError> {
+    let (wrapped, called, left_out) = kernel::library(source).map_err(IsaError)?;
+    Ok(LibraryKernel {
+        source: wrapped.source,
+        called,
+        left_out,
+    })
+}
+
 /// What [`Costing::compile_libraries`] found on one target: each library's kernel, compiled.
 #[derive(Clone, Debug)]
 pub struct LibraryReport {
@@ -415,8 +443,9 @@ pub struct LibraryReport {
 
 impl Costing {
     /// Compile whole WGSL libraries (modules of functions, no entry point) for every target, as
-    /// a witness that the compilers accept them: each gets an entry point that calls every
-    /// function whose signature the harness reads on arguments loaded from a buffer, and stores
+    /// a witness that the compilers accept them: each gets an entry point ([`library_kernel`])
+    /// that calls every function whose signature the harness reads (`f32` matrix parameters
+    /// included) on arguments loaded from a buffer, and stores
     /// the XOR of their results' bits (so no call is dead code); the names of the functions it
     /// calls come back with the report. A library naga rejects fails the call.
     pub fn compile_libraries(
@@ -428,7 +457,7 @@ impl Costing {
             let mut modules = Vec::new();
             let mut called = Vec::new();
             for (n, source) in sources.iter().enumerate() {
-                let (wrapped, names) = kernel::library(source).map_err(IsaError)?;
+                let (wrapped, names, _) = kernel::library(source).map_err(IsaError)?;
                 let path = spirv_file(&dir, n, &wrapped.source).map_err(IsaError)?;
                 modules.push((path, wrapped.bindings));
                 called.push(names);

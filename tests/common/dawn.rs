@@ -1,8 +1,10 @@
-//! WGSL through Dawn, whose WGSL compiler is Tint (Chrome's, Edge's): compile a module, or run a
-//! harness [`Dispatch`] and read its results back as the harness's [`Output`]. Node runs
+//! WGSL through Dawn, whose WGSL compiler is Tint (Chrome's, Edge's): compile a module and build
+//! its pipelines (which runs Tint's backend, not only its front end), or run a harness [`Dispatch`] and read its results back as the harness's [`Output`]. Node runs
 //! `tests/dawn/run.mjs` (npm `webgpu`, pinned in `tests/dawn/package-lock.json`) with the
 //! variables `bash .ci/setup-dawn` wrote to `target/dawn-env` (the Vulkan driver Dawn accepts).
-//! Without that setup every caller FAILS, naming the command.
+//! Without that setup every caller FAILS, naming the command. `PREPASS_DAWN_KEEP=1` keeps each
+//! runner's folder under `target/dawn-jobs/` (its `jobs.tsv` and files), to replay a run with
+//! `node tests/dawn/run.mjs DIR` (after `source target/dawn-env`; delete `results.txt` first).
 
 use prepass::harness::{Dispatch, Output};
 use std::collections::VecDeque;
@@ -23,6 +25,16 @@ pub struct Job {
     pub source: String,
     /// What to run, if anything.
     pub dispatch: Option<Dispatch>,
+    /// For a job with no dispatch: the pipelines to create of the module, each a WebGPU
+    /// pipeline descriptor in JSON without `module` and `layout` (the runner sets them: the
+    /// job's module, `"auto"`), e.g. [`compute`]. Creating one runs Tint's backend, which
+    /// compiling the module alone does not: with none, only Tint's front end judges the module.
+    pub pipelines: Vec<String>,
+}
+
+/// A compute pipeline of `entry`, for [`Job::pipelines`].
+pub fn compute(entry: &str) -> String {
+    format!(r#"{{"compute":{{"entryPoint":"{entry}"}}}}"#)
 }
 
 /// What Dawn said of a job.
@@ -38,8 +50,9 @@ pub struct Outcome {
     pub output: Option<Output>,
 }
 
-/// Jobs per node process: dawn.node 0.6.2 crashed (SIGSEGV) after a few thousand shader
-/// modules in one process.
+/// Jobs per node process, also the unit split across cores: dawn.node 0.6.2 crashed (SIGSEGV)
+/// after a few thousand shader modules in one process, before run.mjs held Dawn's instance
+/// (see `run_to_the_end`; likely the same cause, not measured again).
 const JOBS_PER_PROCESS: usize = 256;
 
 /// The adapter Dawn ran on and one [`Outcome`] per job, in order. Panics (the test fails) when
@@ -125,8 +138,13 @@ fn run_one_process(jobs: Vec<Job>, faults: &str) -> (String, Vec<Outcome>, usize
         std::fs::write(dir.join(&src), text).unwrap();
         let name = job.name.replace(['\t', '\n'], " ");
         match &job.dispatch {
-            None => {
+            None if job.pipelines.is_empty() => {
                 let _ = writeln!(tsv, "{name}\t{src}\t-");
+            }
+            None => {
+                let f = format!("pipes{i}.json");
+                std::fs::write(dir.join(&f), format!("[{}]", job.pipelines.join(","))).unwrap();
+                let _ = writeln!(tsv, "{name}\t{src}\t-\t{f}");
             }
             Some(d) => {
                 let mut cols = Vec::new();
@@ -154,7 +172,10 @@ fn run_one_process(jobs: Vec<Job>, faults: &str) -> (String, Vec<Outcome>, usize
         }
     }
     std::fs::write(dir.join("jobs.tsv"), tsv).unwrap();
-    let (adapter, done, restarts) = run_to_the_end(&root, &dir, jobs.len(), faults);
+    // Nothing runs, so lavapipe's LLVM need not optimise what it compiles (as `.ci/test` does
+    // for the compile-bound binaries): Tint's backend has run by then, and so has the driver's.
+    let compile_only = jobs.iter().all(|j| j.dispatch.is_none());
+    let (adapter, done, restarts) = run_to_the_end(&root, &dir, jobs.len(), faults, compile_only);
     let mut out: Vec<Outcome> = jobs
         .iter()
         .map(|j| Outcome {
@@ -187,7 +208,9 @@ fn run_one_process(jobs: Vec<Job>, faults: &str) -> (String, Vec<Outcome>, usize
             _ => {}
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
+    if std::env::var_os("PREPASS_DAWN_KEEP").is_none() {
+        let _ = std::fs::remove_dir_all(&dir);
+    }
     (adapter, out, restarts)
 }
 
@@ -241,8 +264,8 @@ fn cpu_ticks(pid: u32) -> Option<u64> {
 
 /// A runner that finishes no job and uses less than `IDLE_CPU_TICKS` of CPU (2 % of a core)
 /// over the last `HANG_WINDOW` is hung: seen here as a deadlock in Dawn's event processing
-/// (`dawn::native::InstanceBase::ProcessEvents` waiting on a mutex no thread holds; 2 s of CPU
-/// in 16 min, 0.2 %), in 2 of 100 runs of 246 small dispatches. A job that is compiling keeps a
+/// (`dawn::native::InstanceBase::ProcessEvents` waiting on a mutex no thread holds, the freed
+/// instance's: see `run_to_the_end`; 2 s of CPU in 16 min, 0.2 %). A job that is compiling keeps a
 /// core busy, and so does a dispatch on lavapipe (on a GPU these dispatches take milliseconds),
 /// so a slow job is not mistaken for a hang. Where CPU time cannot be read (not Linux), only
 /// `NO_JOB_LIMIT` without a finished job counts as hung.
@@ -253,22 +276,33 @@ const NO_JOB_LIMIT: Duration = Duration::from_secs(900);
 /// Starts in a row that finish no job before the runner is given up on.
 const FRUITLESS_STARTS: usize = 5;
 
-/// Runs `dir`'s jobs to the end through as many node processes as it takes. Dawn's node
-/// binding dies by a signal now and then, or hangs (SIGSEGV; SIGABRT after "std::system_error:
-/// Invalid argument", "The futex facility returned an unexpected error code" or a glibc
-/// assertion in `__pthread_mutex_lock_full`; a deadlock at 0 % CPU): 5 of 100 runs of 246
-/// small dispatches on a 2-core Xeon (2026-12-05), after 6 of 14 runs of
-/// tests/implementations.rs on an EPYC (2026-12-04). `node --single-threaded` made it worse
-/// (41 of 100), keeping every Dawn object alive did not cure it (3 of 100). Every finished
-/// job is on disk (run.mjs appends it whole), so a crashed or hung process is replaced by one
-/// that starts at the first unfinished job, and the crash is printed. A runner that exits with
-/// a status (an error it reports) fails at once, as does one that crashes or hangs
-/// `FRUITLESS_STARTS` times in a row without finishing a job.
+/// Runs `dir`'s jobs to the end through as many node processes as it takes.
+///
+/// Why the runner crashed: the npm `webgpu` binding (dawn.node 0.6.2, the newest) does not keep
+/// Dawn's instance alive from the device: only the JS objects `create()` and `requestAdapter()`
+/// return do. run.mjs used them only at its start, so V8 was free to collect them mid-run; their
+/// finaliser freed the instance that the binding's event loop still polls
+/// (`InstanceBase::ProcessEvents` → `CallbackTaskManager::Flush` on freed memory), and the
+/// process died by SIGSEGV, by SIGABRT ("std::system_error: Invalid argument", glibc's
+/// `__pthread_mutex_lock` assertions) or deadlocked at 0 % CPU, at the first full GC after a
+/// couple of hundred jobs. Reproduced by `node --expose-gc` with `gc()` after every job: every
+/// run crashed at job 200 of 246 (6 of 6), and none of 10 with either object held.
+/// run.mjs now holds them for the life of the process: replaying 246 small dispatches of
+/// tests/implementations.rs, 0 of 30 runs crashed or hung, against 8 of 20 (6 crashes, 2 hangs)
+/// before, on a 2-core Xeon (2026-12-06).
+///
+/// The restart stays as a guard, since Dawn is a large native library that we cannot fix here
+/// and a crash costs a whole test binary otherwise: every finished job is on disk (run.mjs
+/// appends it whole), so a crashed or hung process is replaced by one that starts at the first
+/// unfinished job, and the crash is printed — a crash now is a new bug, to be reduced like this
+/// one. A runner that exits with a status (an error it reports) fails at once, as does one that
+/// crashes or hangs `FRUITLESS_STARTS` times in a row without finishing a job.
 fn run_to_the_end(
     root: &Path,
     dir: &Path,
     total: usize,
     faults: &str,
+    compile_only: bool,
 ) -> (String, Vec<String>, usize) {
     let results = dir.join("results.txt");
     let (mut fruitless, mut restarts) = (0, 0);
@@ -288,6 +322,10 @@ fn run_to_the_end(
             .arg(before.jobs.to_string())
             .current_dir(root)
             .env("PREPASS_DAWN_FAULTS", faults)
+            .envs(
+                (compile_only && std::env::var_os("GALLIVM_PERF").is_none())
+                    .then_some(("GALLIVM_PERF", "nopt")),
+            )
             .spawn()
             .unwrap_or_else(|e| panic!("cannot start bash/node for Dawn ({e}): {SETUP}"));
         let (mut seen_jobs, mut since_job) = (before.jobs, Instant::now());
@@ -370,17 +408,61 @@ fn unique() -> u64 {
     N.fetch_add(1, Ordering::Relaxed)
 }
 
-/// Compile every `(name, source)` with Tint (through Dawn) and FAIL on any error, naming the
-/// module and Tint's message; warnings are printed, one line each. Returns how many compiled.
+/// Compile every library `(name, source)` (functions, no entry point) to a compute pipeline
+/// with Tint (through Dawn) and FAIL on any error, naming the module and Tint's or Dawn's
+/// message; warnings are printed, one line each. Each library gets the entry point
+/// `prepass::isa` compiles libraries with ([`prepass::isa::library_kernel`]: every function
+/// the harness can call, called on arguments read from a storage buffer, every result stored),
+/// so Tint's backend compiles every function, not only its front end. A function that entry
+/// point neither calls nor reaches (a pointer, struct or `bool` parameter or result) FAILS
+/// too: no pipeline would compile it. Returns how many compiled.
 #[allow(dead_code)]
 pub fn assert_compile(modules: Vec<(String, String)>) -> usize {
+    assert_libraries(modules.into_iter().map(|(n, s)| (n, s, true)).collect())
+}
+
+/// [`assert_compile`] where only the libraries marked `true` are built to pipelines; the rest
+/// meet Tint's front end alone (a sample's budget: the caller says why the sample holds).
+pub fn assert_libraries(modules: Vec<(String, String, bool)>) -> usize {
+    let mut left_out = Vec::new();
+    let modules: Vec<_> = modules
+        .into_iter()
+        .map(|(name, source, build)| {
+            if !build {
+                return (name, source, Vec::new());
+            }
+            let k = prepass::isa::library_kernel(&source)
+                .unwrap_or_else(|e| panic!("{name}: naga rejects it: {e}"));
+            for (f, why) in k.left_out {
+                left_out.push(format!("{name}: `{f}`: {why}"));
+            }
+            (name, k.source, vec![compute(prepass::isa::ENTRY)])
+        })
+        .collect();
+    assert!(
+        left_out.is_empty(),
+        "no Tint pipeline would compile these functions (the witness entry point cannot call \
+         them and no function it calls reaches them): call each from a function of scalars and \
+         vectors, or extend `prepass::isa::library_kernel`:\n{}",
+        left_out.join("\n")
+    );
+    assert_pipelines(modules)
+}
+
+/// Build every `(name, source, pipelines)` with Tint (through Dawn): compile the module and
+/// create each pipeline ([`Job::pipelines`]; none: Tint's front end alone), and FAIL on any
+/// error, naming the module and Tint's or Dawn's message; warnings are printed, one line each.
+/// Returns how many modules compiled.
+pub fn assert_pipelines(modules: Vec<(String, String, Vec<String>)>) -> usize {
     let n = modules.len();
+    let built = modules.iter().filter(|m| !m.2.is_empty()).count();
     let jobs = modules
         .into_iter()
-        .map(|(name, source)| Job {
+        .map(|(name, source, pipelines)| Job {
             name,
             source,
             dispatch: None,
+            pipelines,
         })
         .collect();
     let (adapter, outcomes) = run(jobs);
@@ -400,7 +482,8 @@ pub fn assert_compile(modules: Vec<(String, String)>) -> usize {
         }
     }
     eprintln!(
-        "Tint (Dawn on {adapter}): {n} modules, {} with errors, {warnings} warnings",
+        "Tint (Dawn on {adapter}): {n} modules, {built} of them built to pipelines, {} with \
+         errors, {warnings} warnings",
         errors.len()
     );
     assert!(

@@ -7,7 +7,9 @@
 // entry, uniform words (comma-separated), column files (comma-separated, or "-"), output words,
 // workgroups "x,y" — the harness's Dispatch (src/harness/mod.rs): bind group 0 = uniform, the
 // column buffers in order, the output buffer last; columns and outputs are little-endian files
-// in DIR. results.txt: "adapter TEXT" once per start, then per job "msg I TYPE LINE:COL TEXT",
+// in DIR. A job with no dispatch may name a fourth column: a JSON file of pipeline descriptors
+// (WebGPU's, less module and layout: the job's module, "auto") to create, which runs Tint's
+// backend; without it only Tint's front end judges the module. results.txt: "adapter TEXT" once per start, then per job "msg I TYPE LINE:COL TEXT",
 // "err I TEXT", "out I FILE" and last "job I ok|error MS" (texts on one line; MS the job's
 // milliseconds). Each job's lines are appended together once the job is done, "job" last, so a
 // process that dies mid-run leaves every finished job readable and the caller (tests/common/
@@ -39,9 +41,15 @@ const faults = Object.fromEntries((process.env.PREPASS_DAWN_FAULTS || '').split(
   .map(f => f.split(':')).map(([kind, at]) => [kind, Number(at)]));
 const results = path.join(dir, 'results.txt');
 const device = await adapter.requestDevice();
+// Dawn's instance lives as long as the JS objects `gpu` and `adapter`, and the device does not
+// keep it alive: once neither is reachable, V8 may collect them mid-run and free the instance
+// that the binding still polls (InstanceBase::ProcessEvents), which crashed (SIGSEGV, SIGABRT in
+// CallbackTaskManager::Flush) or deadlocked the runner after a couple of hundred jobs. Hold them.
+globalThis.prepassDawnRoots = [gpu, adapter];
 const jobs = fs.readFileSync(path.join(dir, 'jobs.tsv'), 'utf8').split('\n').filter(l => l).map(l => {
   const [name, file, entry, uniform, columns, outWords, groups] = l.split('\t');
   const job = { name, source: fs.readFileSync(path.join(dir, file), 'utf8') };
+  if (entry === '-' && uniform) job.pipelines = JSON.parse(fs.readFileSync(path.join(dir, uniform), 'utf8'));
   if (entry && entry !== '-') {
     Object.assign(job, {
       entry,
@@ -53,6 +61,30 @@ const jobs = fs.readFileSync(path.join(dir, 'jobs.tsv'), 'utf8').split('\n').fil
   }
   return job;
 });
+// Creates each pipeline (Tint's backend runs here, not at createShaderModule) and returns the
+// first error with the pipeline it came from, or null. Both scopes: Dawn reports a backend
+// failure as an internal error, a limit or interface mismatch as a validation error.
+async function buildPipelines(module, descriptors) {
+  for (const [k, d] of descriptors.entries()) {
+    const desc = { label: `pipeline ${k}`, ...d, layout: 'auto' };
+    for (const stage of ['compute', 'vertex', 'fragment']) {
+      if (d[stage]) desc[stage] = { ...d[stage], module };
+    }
+    const stages = ['compute', 'vertex', 'fragment'].filter(t => d[t]).map(t => `${t} ${d[t].entryPoint}`);
+    device.pushErrorScope('internal');
+    device.pushErrorScope('validation');
+    let thrown = null;
+    try {
+      if (desc.compute) device.createComputePipeline(desc);
+      else device.createRenderPipeline(desc);
+    } catch (e) {
+      thrown = e; // a descriptor the binding cannot convert (a bad enum value, say)
+    }
+    const errs = [await device.popErrorScope(), await device.popErrorScope(), thrown].filter(e => e);
+    if (errs.length) return `${desc.label} (${stages.join(', ')}): ${errs.map(e => e.message).join('; ')}`;
+  }
+  return null;
+}
 const oneLine = t => String(t).replace(/\s+/g, ' ').trim();
 fs.appendFileSync(results, `adapter ${oneLine(describe)}\n`);
 for (const [i, job] of jobs.entries()) {
@@ -68,6 +100,8 @@ for (const [i, job] of jobs.entries()) {
   let err = await device.popErrorScope();
   if (err) {
     r.error = err.message;
+  } else if (job.pipelines) {
+    r.error = await buildPipelines(module, job.pipelines);
   } else if (job.entry) {
     device.pushErrorScope('validation');
     const pipeline = device.createComputePipeline({ layout: 'auto', compute: { module, entryPoint: job.entry } });

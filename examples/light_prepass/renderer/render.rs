@@ -194,6 +194,9 @@ fn light_format(cfg: &Config) -> wgpu::TextureFormat {
     }
 }
 
+/// The composite pass's target (resolved, read back).
+const OUT_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Rgba16Float;
+
 fn light_count(cfg: &Config) -> usize {
     match cfg.lights_layout {
         LightBuffers::One => 1,
@@ -206,7 +209,7 @@ fn formats(cfg: &Config) -> Vec<wgpu::TextureFormat> {
     let mut f: Vec<_> = gbuffer_targets(cfg).iter().map(|t| t.format).collect();
     f.push(depth_format(cfg));
     f.push(light_format(cfg));
-    f.push(wgpu::TextureFormat::Rgba16Float);
+    f.push(OUT_FORMAT);
     f
 }
 
@@ -434,6 +437,148 @@ pub fn lights_in_view(cfg: &Config, scene: &SceneData) -> (Vec2, volumes::Sorted
 }
 
 /// Render `scene` with `cfg`: the three passes, `cfg.repeats` timed times after one untimed
+/// Which pipeline layout a render pipeline uses (its bind groups).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PipelineLayout {
+    /// Group 0: the frame uniform.
+    Geometry,
+    /// Groups 0 and 1: the frame, the G-buffer and the lights.
+    Light,
+    /// Groups 0 and 2 (1 empty): the frame and the light buffer(s).
+    Composite,
+}
+
+/// One render pipeline of the frame as [`render`] creates it, shared with
+/// tests/light_prepass.rs, which has Tint build the same pipelines through Dawn.
+pub struct PipelineShape {
+    /// Its label.
+    pub label: &'static str,
+    /// Its bind groups.
+    pub layout: PipelineLayout,
+    /// Vertex entry point.
+    pub vs: &'static str,
+    /// Fragment entry point.
+    pub fs: &'static str,
+    /// Bytes per vertex of the one vertex buffer.
+    pub vertex_stride: u64,
+    /// That buffer's attributes.
+    pub attributes: Vec<wgpu::VertexAttribute>,
+    /// Colour targets.
+    pub targets: Vec<Option<wgpu::ColorTargetState>>,
+    /// Faces culled.
+    pub cull: wgpu::Face,
+    /// Depth test and write.
+    pub depth: wgpu::DepthStencilState,
+    /// Samples per pixel.
+    pub samples: u32,
+}
+
+/// The frame's render pipelines, in the order [`render`] uses them: the G-buffer pass, the
+/// four light-volume pipelines (sphere front, sphere back, cone front, cone back), the
+/// composite pass.
+pub fn pipeline_shapes(cfg: &Config) -> Vec<PipelineShape> {
+    let reversed = cfg.convention == DepthConvention::Reversed;
+    let geo_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Uint32].to_vec();
+    let vol_attrs = wgpu::vertex_attr_array![0 => Float32x3].to_vec();
+    let nearer = if reversed {
+        wgpu::CompareFunction::Greater
+    } else {
+        wgpu::CompareFunction::Less
+    };
+    let (in_front, behind) = if reversed {
+        (
+            wgpu::CompareFunction::GreaterEqual,
+            wgpu::CompareFunction::LessEqual,
+        )
+    } else {
+        (
+            wgpu::CompareFunction::LessEqual,
+            wgpu::CompareFunction::GreaterEqual,
+        )
+    };
+    let depth_state = |write: bool, compare| wgpu::DepthStencilState {
+        format: depth_format(cfg),
+        depth_write_enabled: Some(write),
+        depth_compare: Some(compare),
+        stencil: Default::default(),
+        bias: Default::default(),
+    };
+    let shape = |label, layout, vs, fs, targets, cull, depth| PipelineShape {
+        label,
+        layout,
+        vs,
+        fs,
+        vertex_stride: if vs == "geo_vs" { 28 } else { 12 },
+        attributes: if vs == "geo_vs" {
+            geo_attrs.clone()
+        } else {
+            vol_attrs.clone()
+        },
+        targets,
+        cull,
+        depth,
+        samples: cfg.msaa,
+    };
+    let gformats: Vec<Option<wgpu::ColorTargetState>> = gbuffer_targets(cfg)
+        .iter()
+        .map(|t| Some(t.format.into()))
+        .collect();
+    let additive = wgpu::BlendComponent {
+        src_factor: wgpu::BlendFactor::One,
+        dst_factor: wgpu::BlendFactor::One,
+        operation: wgpu::BlendOperation::Add,
+    };
+    let ltargets: Vec<Option<wgpu::ColorTargetState>> = (0..light_count(cfg))
+        .map(|_| {
+            Some(wgpu::ColorTargetState {
+                format: light_format(cfg),
+                blend: Some(wgpu::BlendState {
+                    color: additive,
+                    alpha: additive,
+                }),
+                write_mask: wgpu::ColorWrites::ALL,
+            })
+        })
+        .collect();
+    let mut shapes = vec![shape(
+        "gbuffer",
+        PipelineLayout::Geometry,
+        "geo_vs",
+        "gbuffer_fs",
+        gformats,
+        wgpu::Face::Back,
+        depth_state(true, nearer),
+    )];
+    // Camera outside: front faces where the volume is in front of the scene. Camera inside (or
+    // the near plane cuts the volume): back faces where the volume is behind the scene.
+    for (vs, cull, cmp) in [
+        ("sphere_vs", wgpu::Face::Back, in_front),
+        ("sphere_vs", wgpu::Face::Front, behind),
+        ("cone_vs", wgpu::Face::Back, in_front),
+        ("cone_vs", wgpu::Face::Front, behind),
+    ] {
+        shapes.push(shape(
+            "light volume",
+            PipelineLayout::Light,
+            vs,
+            "light_fs",
+            ltargets.clone(),
+            cull,
+            depth_state(false, cmp),
+        ));
+    }
+    shapes.push(shape(
+        "composite",
+        PipelineLayout::Composite,
+        "geo_vs",
+        "composite_fs",
+        vec![Some(OUT_FORMAT.into())],
+        wgpu::Face::Back,
+        depth_state(false, wgpu::CompareFunction::Equal),
+    ));
+    shapes
+}
+
 /// run, then read the resolved colour back.
 pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, String> {
     check(dev, cfg)?;
@@ -588,7 +733,7 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
         .iter()
         .map(|t| t.create_view(&Default::default()))
         .collect();
-    let out_format = wgpu::TextureFormat::Rgba16Float;
+    let out_format = OUT_FORMAT;
     let resolved = texture(
         dev,
         cfg,
@@ -706,137 +851,48 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
     let comp_layout = layout(&[&g0_layout, &empty, &g2_layout]);
 
     // ---- pipelines ----
-    let geo_attrs = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3, 2 => Uint32];
-    let geo_vb = wgpu::VertexBufferLayout {
-        array_stride: 28,
-        step_mode: wgpu::VertexStepMode::Vertex,
-        attributes: &geo_attrs,
-    };
-    let vol_attrs = wgpu::vertex_attr_array![0 => Float32x3];
-    let vol_vb = wgpu::VertexBufferLayout {
-        array_stride: 12,
-        step_mode: wgpu::VertexStepMode::Vertex,
-        attributes: &vol_attrs,
-    };
-    let nearer = if reversed {
-        wgpu::CompareFunction::Greater
-    } else {
-        wgpu::CompareFunction::Less
-    };
-    let (in_front, behind) = if reversed {
-        (
-            wgpu::CompareFunction::GreaterEqual,
-            wgpu::CompareFunction::LessEqual,
-        )
-    } else {
-        (
-            wgpu::CompareFunction::LessEqual,
-            wgpu::CompareFunction::GreaterEqual,
-        )
-    };
-    let multisample = wgpu::MultisampleState {
-        count: cfg.msaa,
-        ..Default::default()
-    };
-    let depth_state = |write: bool, compare| wgpu::DepthStencilState {
-        format: dformat,
-        depth_write_enabled: Some(write),
-        depth_compare: Some(compare),
-        stencil: Default::default(),
-        bias: Default::default(),
-    };
-    let gformats: Vec<Option<wgpu::ColorTargetState>> =
-        gtargets.iter().map(|t| Some(t.format.into())).collect();
-    let pipeline = |label: &str,
-                    layout: &wgpu::PipelineLayout,
-                    vs: &str,
-                    vb: &wgpu::VertexBufferLayout,
-                    fs: &str,
-                    targets: &[Option<wgpu::ColorTargetState>],
-                    cull: wgpu::Face,
-                    depth: wgpu::DepthStencilState| {
+    let shapes = pipeline_shapes(cfg);
+    let mut pipes = shapes.iter().map(|p| {
+        let layout = match p.layout {
+            PipelineLayout::Geometry => &geo_layout,
+            PipelineLayout::Light => &light_layout,
+            PipelineLayout::Composite => &comp_layout,
+        };
         d.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-            label: Some(label),
+            label: Some(p.label),
             layout: Some(layout),
             vertex: wgpu::VertexState {
                 module: &module,
-                entry_point: Some(vs),
+                entry_point: Some(p.vs),
                 compilation_options: Default::default(),
-                buffers: &[Some(vb.clone())],
+                buffers: &[Some(wgpu::VertexBufferLayout {
+                    array_stride: p.vertex_stride,
+                    step_mode: wgpu::VertexStepMode::Vertex,
+                    attributes: &p.attributes,
+                })],
             },
             fragment: Some(wgpu::FragmentState {
                 module: &module,
-                entry_point: Some(fs),
+                entry_point: Some(p.fs),
                 compilation_options: Default::default(),
-                targets,
+                targets: &p.targets,
             }),
             primitive: wgpu::PrimitiveState {
-                cull_mode: Some(cull),
+                cull_mode: Some(p.cull),
                 ..Default::default()
             },
-            depth_stencil: Some(depth),
-            multisample,
+            depth_stencil: Some(p.depth.clone()),
+            multisample: wgpu::MultisampleState {
+                count: p.samples,
+                ..Default::default()
+            },
             multiview_mask: None,
             cache: None,
         })
-    };
-    let gbuffer_pipe = pipeline(
-        "gbuffer",
-        &geo_layout,
-        "geo_vs",
-        &geo_vb,
-        "gbuffer_fs",
-        &gformats,
-        wgpu::Face::Back,
-        depth_state(true, nearer),
-    );
-    let additive = wgpu::BlendComponent {
-        src_factor: wgpu::BlendFactor::One,
-        dst_factor: wgpu::BlendFactor::One,
-        operation: wgpu::BlendOperation::Add,
-    };
-    let ltargets: Vec<Option<wgpu::ColorTargetState>> = (0..light_count(cfg))
-        .map(|_| {
-            Some(wgpu::ColorTargetState {
-                format: lformat,
-                blend: Some(wgpu::BlendState {
-                    color: additive,
-                    alpha: additive,
-                }),
-                write_mask: wgpu::ColorWrites::ALL,
-            })
-        })
-        .collect();
-    // Camera outside: front faces where the volume is in front of the scene. Camera inside (or
-    // the near plane cuts the volume): back faces where the volume is behind the scene.
-    let light_pipes = [
-        ("sphere_vs", wgpu::Face::Back, in_front),
-        ("sphere_vs", wgpu::Face::Front, behind),
-        ("cone_vs", wgpu::Face::Back, in_front),
-        ("cone_vs", wgpu::Face::Front, behind),
-    ]
-    .map(|(vs, cull, cmp)| {
-        pipeline(
-            "light volume",
-            &light_layout,
-            vs,
-            &vol_vb,
-            "light_fs",
-            &ltargets,
-            cull,
-            depth_state(false, cmp),
-        )
     });
-    let comp_pipe = pipeline(
-        "composite",
-        &comp_layout,
-        "geo_vs",
-        &geo_vb,
-        "composite_fs",
-        &[Some(out_format.into())],
-        wgpu::Face::Back,
-        depth_state(false, wgpu::CompareFunction::Equal),
-    );
+    let gbuffer_pipe = pipes.next().unwrap();
+    let light_pipes: [wgpu::RenderPipeline; 4] = std::array::from_fn(|_| pipes.next().unwrap());
+    let comp_pipe = pipes.next().unwrap();
     if let Some(e) = pollster::block_on(scope.pop()) {
         return Err(format!(
             "wgpu rejected the frame ({}): {e}",
