@@ -250,8 +250,8 @@ fn wgsl_gives_the_documented_answers_on_dawn() {
 
 /// The shipped functions that, on some bad-input row or fuzz-corpus input, apply an operation the
 /// arithmetic helpers do not check (`min`, `max`, `clamp`, `abs`, `floor`, a comparison, a
-/// conversion, a builtin the identity calls unchanged, or `unpack2x16float` of an infinite or
-/// NaN half) to a ±∞ or NaN: outside the spec's domain, so their documented answers for those
+/// builtin the identity calls unchanged, or `unpack2x16float` of an infinite or NaN half) to a
+/// ±∞ or NaN: outside the spec's domain, so their documented answers for those
 /// inputs hold on lavapipe but are not promised on every conforming adapter. Each is a defect
 /// to fix (read the input's bits first); the list is exact, so the test fails on a new one and
 /// on a fixed one still listed.
@@ -292,7 +292,7 @@ const NON_FINITE_OPERANDS: &[&str] = &[
 /// - a returned ±∞ or NaN, read from the result's bits, by whatever path it leaves (a `select`,
 ///   `min`, a returned input);
 /// - an operation the arithmetic helpers do not see applied to a ±∞ or NaN (bit 2: `min`, `max`,
-///   `clamp`, `abs`, `floor`, comparisons, conversions, the identity's builtins) in a function
+///   `clamp`, `abs`, `floor`, comparisons, the identity's builtins) in a function
 ///   not in [`NON_FINITE_OPERANDS`], or none in one that is;
 /// - a row WGSL leaves indeterminate ([`V::WgslIndeterminate`]) whose evaluation stays in the
 ///   domain (then it is no indeterminate row).

@@ -33,8 +33,8 @@ fn prepass_cf_undefined_if(c: bool) {
 }
 
 // The same for an operation on a run-time ±Inf or NaN that no arithmetic helper sees (min, max,
-// clamp, abs, floor, comparisons, conversions, the identity's builtins, an infinite or NaN
-// unpack2x16float half): bit 2, so a suite can tell these apart (EmulatedKernel::run_flags).
+// clamp, abs, floor, comparisons, the identity's builtins, an infinite or NaN unpack2x16float
+// half): bit 2, so a suite can tell these apart (EmulatedKernel::run_flags).
 fn prepass_cf_operand_if(c: bool) {
     if (c) {
         prepass_cf_undefined = prepass_cf_undefined | 2u;
@@ -163,15 +163,6 @@ fn prepass_cf_checked3(v: vec3<f32>) -> vec3<f32> {
 
 fn prepass_cf_checked4(v: vec4<f32>) -> vec4<f32> {
     return vec4<f32>(prepass_cf_checked2(v.xy), prepass_cf_checked2(v.zw));
-}
-
-// f32 to i32 or u32 (WGSL: truncated, saturating): of ±Inf or NaN, outside the domain.
-fn prepass_cf_i32_from_f32(site: u32, x: f32) -> i32 {
-    return i32(prepass_cf_checked(x));
-}
-
-fn prepass_cf_u32_from_f32(site: u32, x: f32) -> u32 {
-    return u32(prepass_cf_checked(x));
 }
 
 fn prepass_cf_is_subnormal(x: f32) -> bool {

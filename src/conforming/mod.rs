@@ -141,7 +141,7 @@
 //! as "not defined by the spec" instead of failing them. Any result that is not finite, and any
 //! operation on a NaN or an infinity, raises the flag too (the spec's finite-math assumption):
 //! bit 1 of its word from the arithmetic helpers, bit 2 from the paths they do not see (`min`,
-//! `max`, `clamp`, `abs`, `floor`, comparisons, conversions to integers, the builtins the
+//! `max`, `clamp`, `abs`, `floor`, comparisons, the builtins the
 //! identity policy calls unchanged, an infinite or NaN `unpack2x16float` half;
 //! [`crate::conforming::EmulatedKernel::run_flags`] gives the word).
 //! The flag is per evaluation, not per data dependency: an operation whose indeterminate result

@@ -606,24 +606,6 @@ fn site_for(
             ))
         }
         Expression::As {
-            expr,
-            kind: kind @ (ScalarKind::Sint | ScalarKind::Uint),
-            convert: Some(4),
-        } => {
-            // An integer of an f32: exact (truncated, saturating), but of ±Inf or NaN outside the
-            // domain, which only the helper sees.
-            let lanes = lanes_of(expr)?;
-            let (core, ty) = if kind == ScalarKind::Sint {
-                ("i32_from_f32", "i32")
-            } else {
-                ("u32_from_f32", "u32")
-            };
-            Some((
-                componentwise_typed(plan, core, &[(lanes, "f32")], ty),
-                vec![expr],
-            ))
-        }
-        Expression::As {
             kind: ScalarKind::Float,
             convert: Some(2),
             ..
