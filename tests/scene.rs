@@ -156,6 +156,14 @@ fn all_scenes() -> Vec<Scene> {
     v
 }
 
+/// How many distinct root sets (so distinct composed modules) the valid declarations give,
+/// stated once: CONTRIBUTING.md quotes it, and `the_stated_counts_are_the_counted_ones` checks
+/// both.
+const DISTINCT_ROOT_SETS: usize = 14_016;
+
+/// How many of them [`root_sets_for_backends`] picks outside `PREPASS_FULL=1`.
+const SAMPLED_ROOT_SETS: usize = 943;
+
 /// Every distinct root set a valid declaration gives (each sorted).
 fn distinct_root_sets() -> BTreeSet<Vec<&'static str>> {
     all_scenes()
@@ -180,6 +188,11 @@ fn root_sets_for_backends<'a>(by_roots: &BTreeSet<Vec<&'a str>>) -> Vec<Vec<&'a 
     if common::full_strength() {
         return by_roots.iter().cloned().collect();
     }
+    sampled_root_sets(by_roots)
+}
+
+/// [`root_sets_for_backends`]' sample: every root alone, the largest set, every 16th set.
+fn sampled_root_sets<'a>(by_roots: &BTreeSet<Vec<&'a str>>) -> Vec<Vec<&'a str>> {
     let mut picked: BTreeSet<Vec<&str>> = by_roots.iter().flatten().map(|r| vec![*r]).collect();
     picked.extend(by_roots.iter().max_by_key(|r| r.len()).cloned());
     picked.extend(by_roots.iter().step_by(16).cloned());
@@ -244,10 +257,32 @@ fn composed_modules_compile_with_aco_and_brw() {
     );
 }
 
+/// The counts stated in prose are the counted ones: [`DISTINCT_ROOT_SETS`] and
+/// [`SAMPLED_ROOT_SETS`] against the declarations, and CONTRIBUTING.md's figure against the
+/// constant (a cheap check; the long test asserts them again where it prints them).
+#[test]
+fn the_stated_counts_are_the_counted_ones() {
+    let by_roots = distinct_root_sets();
+    assert_eq!(by_roots.len(), DISTINCT_ROOT_SETS, "distinct root sets");
+    assert_eq!(
+        sampled_root_sets(&by_roots).len(),
+        SAMPLED_ROOT_SETS,
+        "root sets sampled for the backends"
+    );
+    let n = DISTINCT_ROOT_SETS;
+    let stated = format!("all {},{:03} distinct composed modules", n / 1000, n % 1000);
+    let contributing =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/CONTRIBUTING.md")).unwrap();
+    assert!(
+        contributing.contains(&stated),
+        "CONTRIBUTING.md does not say `{stated}` (tests/scene.rs, DISTINCT_ROOT_SETS)"
+    );
+}
+
 /// Composed modules compile with Tint too (through Dawn): Tint's front end judges the root
 /// sets of [`root_sets_for_backends`], and those of [`root_sets_for_compilers`] are built to
 /// compute pipelines as well (every function called, `dawn::assert_libraries`), which runs
-/// Tint's backend; under `PREPASS_FULL=1` every distinct set, each built. Building all 943
+/// Tint's backend; under `PREPASS_FULL=1` every distinct set, each built. Building all the
 /// sampled modules would take about 335 s on a loaded 2-core Xeon (the first 355 took 126 s,
 /// 2026-12-06): beyond the test budget.
 #[test]
@@ -272,7 +307,7 @@ fn every_distinct_module_compiles_with_tint() {
 }
 
 /// Every valid declaration composes, the same text on default features (`Scene::wgsl`) as
-/// naga's composer, for all 14,016 distinct root sets; naga validates and its four backends
+/// naga's composer, for all [`DISTINCT_ROOT_SETS`] distinct root sets; naga validates and its four backends
 /// translate the root sets of [`root_sets_for_backends`] (all under `PREPASS_FULL=1`), whose
 /// argument covers validation too: naga, like the WGSL spec, checks a module declaration by
 /// declaration against the declarations each names, and a union of closures adds no name a
@@ -363,6 +398,15 @@ fn every_valid_combination_composes_validates_and_translates() {
             });
         }
     });
+    // The counts printed below are the ones stated (`DISTINCT_ROOT_SETS`, CONTRIBUTING.md).
+    assert_eq!(
+        by_roots.len(),
+        DISTINCT_ROOT_SETS,
+        "distinct modules composed"
+    );
+    if !common::full_strength() {
+        assert_eq!(checked.len(), SAMPLED_ROOT_SETS, "root sets sampled");
+    }
     eprintln!(
         "{} declarations ({invalid} refused), {} distinct modules composed, the same text on \
          both composers; {} root sets validated and translated by SPIR-V, MSL, HLSL, GLSL",
@@ -578,7 +622,7 @@ fn composed_module_is_no_larger_than_the_hand_picked_files() {
         }
         // The text composer: `every_valid_combination_composes_validates_and_translates` checks
         // that it emits exactly what naga's `Library::compose` does for every root set, so the
-        // size needs no second naga parse and validation of 14,016 modules.
+        // size needs no second naga parse and validation of every distinct module.
         let wgsl = s.wgsl().unwrap();
         let (files, hand) = hand_picked(&lib, &roots);
         assert!(wgsl.len() <= hand, "{s:?}: {} > {hand}", wgsl.len());

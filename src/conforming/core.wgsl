@@ -26,10 +26,19 @@ const PREPASS_CF_INHERITED: u32 = 512u;
 const PREPASS_CF_CONVERSION: u32 = 1024u;
 const PREPASS_CF_TRIG: u32 = 2048u;
 
-// Mark the current evaluation as outside the spec's domain (indeterminate result).
+// Mark the current evaluation as outside the spec's domain (indeterminate result): bit 1.
 fn prepass_cf_undefined_if(c: bool) {
     if (c) {
-        prepass_cf_undefined = 1u;
+        prepass_cf_undefined = prepass_cf_undefined | 1u;
+    }
+}
+
+// The same for an operation on a run-time ±Inf or NaN that no arithmetic helper sees (min, max,
+// clamp, abs, floor, comparisons, the identity's builtins, an infinite or NaN unpack2x16float
+// half): bit 2, so a suite can tell these apart (EmulatedKernel::run_flags).
+fn prepass_cf_operand_if(c: bool) {
+    if (c) {
+        prepass_cf_undefined = prepass_cf_undefined | 2u;
     }
 }
 
@@ -138,6 +147,25 @@ fn prepass_cf_finite(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7f800000u) != 0x7f800000u;
 }
 
+// x, with the evaluation marked outside the domain where it is ±Inf or NaN: for the builtins the
+// identity policy calls unchanged, whose operands pass through no prepass_cf_ftz.
+fn prepass_cf_checked(x: f32) -> f32 {
+    prepass_cf_operand_if(!prepass_cf_finite(x));
+    return x;
+}
+
+fn prepass_cf_checked2(v: vec2<f32>) -> vec2<f32> {
+    return vec2<f32>(prepass_cf_checked(v.x), prepass_cf_checked(v.y));
+}
+
+fn prepass_cf_checked3(v: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(prepass_cf_checked(v.x), prepass_cf_checked(v.y), prepass_cf_checked(v.z));
+}
+
+fn prepass_cf_checked4(v: vec4<f32>) -> vec4<f32> {
+    return vec4<f32>(prepass_cf_checked2(v.xy), prepass_cf_checked2(v.zw));
+}
+
 fn prepass_cf_is_subnormal(x: f32) -> bool {
     let a = bitcast<u32>(x) & 0x7fffffffu;
     return a != 0u && a < 0x00800000u;
@@ -214,8 +242,11 @@ fn prepass_cf_push(x: f32, halves: i32) -> f32 {
 }
 
 // A subnormal flushed to zero (keeping its sign) or kept: both are allowed for the operations
-// of the accuracy table.
+// of the accuracy table. Every helper passes its operands (and most their results) through
+// here, so this is also where an operation on a run-time ±Inf or NaN leaves the domain, on
+// every path: min, max, clamp, abs, floor and comparisons compute nothing that raises it.
 fn prepass_cf_ftz(site: u32, x: f32) -> f32 {
+    prepass_cf_operand_if(!prepass_cf_finite(x));
     if (!prepass_cf_is_subnormal(x)) {
         return x;
     }
@@ -634,7 +665,7 @@ fn prepass_cf_log(site: u32, x0: f32) -> f32 {
 // pow(x, y) as inherited: exp2(y * log2(x)).
 fn prepass_cf_pow(site: u32, x: f32, y: f32) -> f32 {
     if (!prepass_cf_on(PREPASS_CF_INHERITED)) {
-        return pow(x, y);
+        return prepass_cf_checked(pow(prepass_cf_checked(x), prepass_cf_checked(y)));
     }
     return prepass_cf_exp2(site + 8u, prepass_cf_mul(site + 16u, y, prepass_cf_log2(site + 24u, x)));
 }
@@ -688,7 +719,8 @@ fn prepass_cf_nmad(site: u32, a: f32, b: f32, c: f32) -> f32 {
 // fma(a, b, c): inherited from a*b + c, so it may be fused or not.
 fn prepass_cf_fma(site: u32, a: f32, b: f32, c: f32) -> f32 {
     if (!prepass_cf_on(PREPASS_CF_INHERITED)) {
-        return fma(a, b, c);
+        let r = fma(prepass_cf_checked(a), prepass_cf_checked(b), prepass_cf_checked(c));
+        return prepass_cf_checked(r);
     }
     return prepass_cf_mad(site, a, b, c);
 }
@@ -765,7 +797,7 @@ fn prepass_cf_mul_div(site: u32, a: f32, b: f32, c: f32) -> f32 {
 // fract(x) as inherited: x - floor(x).
 fn prepass_cf_fract(site: u32, x: f32) -> f32 {
     if (!prepass_cf_on(PREPASS_CF_INHERITED)) {
-        return fract(x);
+        return fract(prepass_cf_checked(x));
     }
     return prepass_cf_sub(site, x, floor(x));
 }
@@ -773,7 +805,8 @@ fn prepass_cf_fract(site: u32, x: f32) -> f32 {
 // mix(a, b, t) as inherited: a*(1 - t) + b*t.
 fn prepass_cf_mix(site: u32, a: f32, b: f32, t: f32) -> f32 {
     if (!prepass_cf_on(PREPASS_CF_INHERITED)) {
-        return mix(a, b, t);
+        let r = mix(prepass_cf_checked(a), prepass_cf_checked(b), prepass_cf_checked(t));
+        return prepass_cf_checked(r);
     }
     let left = prepass_cf_mul(site + 40u, a, prepass_cf_sub(site + 48u, 1.0, t));
     return prepass_cf_mad(site, b, t, left);
@@ -1013,9 +1046,11 @@ fn prepass_cf_pack2x16float(site: u32, v: vec2<f32>) -> u32 {
     return prepass_cf_f16_lane(site, v.x) | (prepass_cf_f16_lane(site + 8u, v.y) << 16u);
 }
 
-// unpack2x16float: exact, but an f16-subnormal lane may be flushed.
+// unpack2x16float: exact, but an f16-subnormal lane may be flushed. An infinite or NaN half
+// gives a run-time ±Inf or NaN: outside the domain.
 fn prepass_cf_unpack2x16float(site: u32, p: u32) -> vec2<f32> {
     let v = unpack2x16float(p);
+    prepass_cf_operand_if(!(prepass_cf_finite(v.x) && prepass_cf_finite(v.y)));
     if (!prepass_cf_on(PREPASS_CF_FLUSH)) {
         return v;
     }

@@ -212,7 +212,17 @@ impl<'g> EmulatedKernel<'g> {
     /// [`Policy::Searched`] the last three arguments are the direction table's halves and the
     /// mode ([`DirectionTable::args`], or columns of tables and [`super::search::TABLE_MODE`]).
     pub fn run(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<bool>), HarnessError> {
+        let (out, flags) = self.run_flags(args, n)?;
+        Ok((out, flags.into_iter().map(|w| w != 0).collect()))
+    }
+
+    /// [`EmulatedKernel::run`] with each evaluation's flag word as it is: bit 1 where an
+    /// arithmetic helper left the domain (a result not finite, a divisor or argument outside
+    /// its range), bit 2 where an operation no arithmetic helper sees (`min`, `max`, `clamp`,
+    /// `abs`, `floor`, comparisons, the identity's builtins) had a ±Inf or NaN
+    /// operand, or `unpack2x16float` gave one.
+    pub fn run_flags(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<u32>), HarnessError> {
         let (out, tail, _) = self.run_tail(args, n, 1)?;
-        Ok((out, tail.into_iter().map(|w| w != 0).collect()))
+        Ok((out, tail))
     }
 }

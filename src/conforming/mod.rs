@@ -150,7 +150,11 @@
 //! parameters, returns 1 when any operation of that evaluation left its domain), for a module
 //! used on its own: a check reports such inputs
 //! as "not defined by the spec" instead of failing them. Any result that is not finite, and any
-//! operation on a NaN or an infinity, raises the flag too (the spec's finite-math assumption).
+//! operation on a NaN or an infinity, raises the flag too (the spec's finite-math assumption):
+//! bit 1 of its word from the arithmetic helpers, bit 2 from the paths they do not see (`min`,
+//! `max`, `clamp`, `abs`, `floor`, comparisons, the builtins the
+//! identity policy calls unchanged, an infinite or NaN `unpack2x16float` half;
+//! [`crate::conforming::EmulatedKernel::run_flags`] gives the word).
 //! The flag is per evaluation, not per data dependency: an operation whose indeterminate result
 //! a `select` then discards (as `ld_near_over_far` discards `near / far` for an infinite far
 //! plane) still raises it, so the flag over-reports; the suites read values and flags apart.

@@ -125,6 +125,23 @@ fn componentwise_typed(plan: &mut Plan, core: &str, shapes: &[(Lanes, &str)], re
     name
 }
 
+/// WGSL statements that mark the evaluation outside the spec's domain where `var` (`lanes` f32
+/// lanes; a matrix of that many rows where `columns` > 0) holds a ±Inf or NaN: the identity's
+/// builtin paths below compute on their operands without the core helpers, which check them.
+fn check_stmts(var: &str, lanes: Lanes, columns: u8) -> String {
+    let checked = if lanes == 1 {
+        format!("{PREFIX}checked")
+    } else {
+        format!("{PREFIX}checked{lanes}")
+    };
+    if columns == 0 {
+        return format!("        _ = {checked}({var});\n");
+    }
+    (0..columns)
+        .map(|c| format!("        _ = {checked}({var}[{c}]);\n"))
+        .collect()
+}
+
 /// `m * v` (`vec_left` false) or `v * m` of an f32 matrix of `columns` × `rows`, as the spec
 /// defines them: each result lane a `dot` of a row (or a column) with the vector, so each inherits
 /// the freedoms of `dot`.
@@ -160,13 +177,15 @@ fn matrix_vector(plan: &mut Plan, columns: Lanes, rows: Lanes, vec_left: bool) -
             format!("{dot}(site + {}u, {a}, {b})", 8192 * u32::from(i))
         })
         .collect();
-    let (params, builtin) = if vec_left {
-        (format!("v: vec{rows}<f32>, m: {m}"), "v * m")
+    let (params, builtin, v_lanes) = if vec_left {
+        (format!("v: vec{rows}<f32>, m: {m}"), "v * m", rows)
     } else {
-        (format!("m: {m}, v: vec{columns}<f32>"), "m * v")
+        (format!("m: {m}, v: vec{columns}<f32>"), "m * v", columns)
     };
+    let checks = check_stmts("m", rows, columns) + &check_stmts("v", v_lanes, 0);
+    let r = check_stmts("r", outer, 0);
     let s = format!(
-        "fn {name}(site: u32, {params}) -> vec{outer}<f32> {{\n    if (!{p}on(PREPASS_CF_INHERITED)) {{\n        return {builtin};\n    }}\n    return vec{outer}<f32>({});\n}}\n",
+        "fn {name}(site: u32, {params}) -> vec{outer}<f32> {{\n    if (!{p}on(PREPASS_CF_INHERITED)) {{\n{checks}        let r = {builtin};\n{r}        return r;\n    }}\n    return vec{outer}<f32>({});\n}}\n",
         lanes.join(", ")
     );
     plan.wrappers.insert(name.clone(), s);
@@ -183,16 +202,25 @@ fn inherited(plan: &mut Plan, what: &str, n: Lanes) -> String {
     let t = ty_name(n);
     let p = PREFIX;
     let mut s = String::new();
-    let guard = |s: &mut String, builtin: &str| {
-        let _ = writeln!(
+    // The builtin where the identity leaves it: its operands (`n` lanes each) and result
+    // (`out` lanes) checked for the domain.
+    let guard = |s: &mut String, builtin: &str, operands: &[&str], out: Lanes| {
+        let checks: String = operands.iter().map(|o| check_stmts(o, n, 0)).collect();
+        let _ = write!(
             s,
-            "    if (!{p}on(PREPASS_CF_INHERITED)) {{\n        return {builtin};\n    }}"
+            "    if (!{p}on(PREPASS_CF_INHERITED)) {{\n{checks}        let r = {builtin};\n{}        return r;\n    }}\n",
+            check_stmts("r", out, 0)
         );
     };
     match what {
         "dot" => {
             let _ = writeln!(s, "fn {name}(site: u32, a: {t}, b: {t}) -> f32 {{");
-            guard(&mut s, if n == 1 { "a * b" } else { "dot(a, b)" });
+            guard(
+                &mut s,
+                if n == 1 { "a * b" } else { "dot(a, b)" },
+                &["a", "b"],
+                1,
+            );
             for k in 0..n {
                 let _ = writeln!(
                     s,
@@ -258,7 +286,7 @@ fn inherited(plan: &mut Plan, what: &str, n: Lanes) -> String {
         "length" => {
             let dot = inherited(plan, "dot", n);
             let _ = writeln!(s, "fn {name}(site: u32, v: {t}) -> f32 {{");
-            guard(&mut s, "length(v)");
+            guard(&mut s, "length(v)", &["v"], 1);
             let _ = writeln!(
                 s,
                 "    return {p}sqrt(site, {dot}(site + 8192u, v, v));\n}}"
@@ -268,21 +296,21 @@ fn inherited(plan: &mut Plan, what: &str, n: Lanes) -> String {
             let len = inherited(plan, "length", n);
             let sub = componentwise(plan, "sub", &[n, n]);
             let _ = writeln!(s, "fn {name}(site: u32, a: {t}, b: {t}) -> f32 {{");
-            guard(&mut s, "distance(a, b)");
+            guard(&mut s, "distance(a, b)", &["a", "b"], 1);
             let _ = writeln!(s, "    return {len}(site, {sub}(site + 16384u, a, b));\n}}");
         }
         "normalize" => {
             let len = inherited(plan, "length", n);
             let div = componentwise(plan, "div", &[n, 1]);
             let _ = writeln!(s, "fn {name}(site: u32, v: {t}) -> {t} {{");
-            guard(&mut s, "normalize(v)");
+            guard(&mut s, "normalize(v)", &["v"], n);
             let _ = writeln!(s, "    return {div}(site + 16384u, v, {len}(site, v));\n}}");
         }
         "reflect" => {
             let dot = inherited(plan, "dot", n);
             let nmad = componentwise(plan, "nmad", &[1, n, n]);
             let _ = writeln!(s, "fn {name}(site: u32, e1: {t}, e2: {t}) -> {t} {{");
-            guard(&mut s, "reflect(e1, e2)");
+            guard(&mut s, "reflect(e1, e2)", &["e1", "e2"], n);
             let _ = writeln!(
                 s,
                 "    let k = 2.0 * {dot}(site, e2, e1);\n    return {nmad}(site + 16384u, k, e2, e1);\n}}"
@@ -293,7 +321,7 @@ fn inherited(plan: &mut Plan, what: &str, n: Lanes) -> String {
                 s,
                 "fn {name}(site: u32, a: vec3<f32>, b: vec3<f32>) -> vec3<f32> {{"
             );
-            guard(&mut s, "cross(a, b)");
+            guard(&mut s, "cross(a, b)", &["a", "b"], 3);
             let _ = writeln!(
                 s,
                 "    return vec3<f32>(\n        \
@@ -332,8 +360,10 @@ fn matrix_matrix(plan: &mut Plan, c1: Lanes, r1: Lanes, c2: Lanes) -> String {
             format!("vec{r1}<f32>({})", lanes.join(", "))
         })
         .collect();
+    let checks = check_stmts("a", r1, c1) + &check_stmts("b", c1, c2);
+    let r = check_stmts("r", r1, c2);
     let s = format!(
-        "fn {name}(site: u32, a: mat{c1}x{r1}<f32>, b: mat{c2}x{c1}<f32>) -> mat{c2}x{r1}<f32> {{\n    if (!{p}on(PREPASS_CF_INHERITED)) {{\n        return a * b;\n    }}\n    return mat{c2}x{r1}<f32>({});\n}}\n",
+        "fn {name}(site: u32, a: mat{c1}x{r1}<f32>, b: mat{c2}x{c1}<f32>) -> mat{c2}x{r1}<f32> {{\n    if (!{p}on(PREPASS_CF_INHERITED)) {{\n{checks}        let r = a * b;\n{r}        return r;\n    }}\n    return mat{c2}x{r1}<f32>({});\n}}\n",
         columns.join(", ")
     );
     plan.wrappers.insert(name.clone(), s);

@@ -130,12 +130,31 @@ impl ReversedDepthConsts {
 /// `k = (n, n/f, (f − n)/f, ±n·(2^24 − 1))`, the sign bit of `k.w` set for a reversed
 /// projection.
 ///
-/// Only [`Projection::depth_uniform`] makes one, so the convention always travels with the
-/// constants: a reversed projection cannot hand a shader standard constants. Each entry is
-/// computed in f64 and rounded once; the WGSL reads the same values the per-convention
+/// [`Projection::depth_uniform`] makes one from a checked projection, so the convention travels
+/// with the constants: a reversed projection cannot hand a shader standard constants. Each entry
+/// is computed in f64 and rounded once; the WGSL reads the same values the per-convention
 /// `*_consts` functions read, so results (and error bounds, `linear_depth::bounds`) are those
 /// of `view_z_from_depth_consts` / `view_z_from_reversed_depth_consts` /
 /// `view_z_from_depth24_consts`, bit for bit.
+///
+/// The fields are public, and [`from_wgsl`](Self::from_wgsl) (or, with feature `bytemuck`, a
+/// cast from bytes) makes one from any four floats. Those promises hold for such a value only
+/// where it equals a `depth_uniform()` result: the convention is whatever the sign bit of `k.w`
+/// says; entries no projection can give (`n` or `|k.w|` not positive and finite, a ratio outside
+/// `[+0, 1]`) give the sky; other entries give the formula's value on them, with no bound.
+///
+/// ```
+/// use prepass::linear_depth::{SKY, view_z_from_depth_uniform as view_z};
+/// use prepass::projection::{DepthConvention, DepthUniform, Projection};
+/// let k = Projection::new(0.1, 100.0, DepthConvention::Standard)?.depth_uniform();
+/// assert_eq!(view_z(0.5, DepthUniform::from_wgsl(k.to_wgsl())), view_z(0.5, k));
+/// let flipped = DepthUniform { signed_near_times_max: -k.signed_near_times_max, ..k };
+/// assert_eq!(flipped.convention(), DepthConvention::Reversed); // the sign bit decides
+/// assert_ne!(view_z(0.25, flipped), view_z(0.25, k));
+/// assert_eq!(view_z(0.5, DepthUniform { near: -0.1, ..k }), SKY);
+/// assert_eq!(view_z(0.5, DepthUniform { near_over_far: 2.0, ..k }), SKY);
+/// # Ok::<(), prepass::projection::ProjectionError>(())
+/// ```
 ///
 /// [`Projection::depth_uniform`]: crate::projection::Projection::depth_uniform
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -120,8 +120,8 @@ struct Graph {
     uses: Vec<Vec<usize>>,
 }
 
-/// Cut once per process: the files are static, and a renderer (or the scene tests, 14,016
-/// times) may compose many scenes.
+/// Cut once per process: the files are static, and a renderer (or the scene tests, once per
+/// distinct root set) may compose many scenes.
 fn graph() -> &'static Graph {
     static GRAPH: OnceLock<Graph> = OnceLock::new();
     GRAPH.get_or_init(|| {

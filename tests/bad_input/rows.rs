@@ -130,6 +130,10 @@ pub enum V {
     Channel(ChannelError),
     /// A Rust-only result described in words (e.g. which field a builder rejects).
     Text(&'static str),
+    /// An expected result that the Rust twin defines and WGSL does not: a run-time ±∞ or NaN,
+    /// which WGSL's finite-math rule makes an indeterminate value. The twin must return the
+    /// inner value; the WGSL row still runs, and its value is not checked ([`wgsl_expect`]).
+    WgslIndeterminate(&'static V),
 }
 
 impl V {
@@ -232,7 +236,8 @@ pub struct Row {
     pub case: &'static str,
     /// The arguments.
     pub args: &'static [V],
-    /// What both sides must return (bit for bit; any NaN matches NaN).
+    /// What both sides must return (bit for bit; any NaN matches NaN), or
+    /// [`V::WgslIndeterminate`] where only the Rust twin's answer is defined.
     pub expect: V,
     /// Why, in a few words.
     pub why: &'static str,
@@ -298,8 +303,20 @@ pub fn rows() -> impl Iterator<Item = &'static Row> {
     TABLES.iter().flat_map(|t| t.rows)
 }
 
-/// Bit-for-bit equality; any NaN matches any NaN (payloads are not part of the contract).
+/// What a WGSL row must return, or `None` where WGSL leaves it indeterminate.
+pub fn wgsl_expect(expect: V) -> Option<V> {
+    match expect {
+        V::WgslIndeterminate(_) => None,
+        v => Some(v),
+    }
+}
+
+/// Bit-for-bit equality; any NaN matches any NaN (payloads are not part of the contract). An
+/// expected [`V::WgslIndeterminate`] compares its inner value (the Rust twin's answer).
 pub fn same(a: V, b: V) -> bool {
+    if let V::WgslIndeterminate(&b) = b {
+        return same(a, b);
+    }
     let f = |x: f32, y: f32| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
     match (a, b) {
         (V::F32(x), V::F32(y)) => f(x, y),
@@ -356,6 +373,7 @@ pub fn from_words(like: V, w: &[u32]) -> V {
         V::Vec3(_) => V::Vec3([f(0), f(1), f(2)]),
         V::Vec4(_) => V::Vec4([f(0), f(1), f(2), f(3)]),
         V::UVec2(_) => V::UVec2([w[0], w[1]]),
+        V::WgslIndeterminate(&v) => from_words(v, w),
         _ => panic!("{like:?} has no WGSL type"),
     }
 }
