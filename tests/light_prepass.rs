@@ -305,7 +305,24 @@ fn png_pixels(path: &std::path::Path) -> Vec<[u8; 3]> {
 /// Tint's backend compiles each entry point for the pipeline it serves.
 #[test]
 fn light_prepass_shaders_compile_with_tint() {
-    let mut modules = Vec::new();
+    let modules = every_layout(&[1, 4])
+        .into_iter()
+        .map(|cfg| {
+            let crate_wgsl = cfg.scene().wgsl().unwrap();
+            (
+                format!("{} msaa {}", cfg.layout_name(), cfg.msaa),
+                renderer::shaders::module(&cfg, &crate_wgsl),
+                pipeline_shapes(&cfg).iter().map(webgpu_pipeline).collect(),
+            )
+        })
+        .collect();
+    dawn::assert_pipelines(modules);
+}
+
+/// The small frame's configuration for every layout the report renders (the fat one and every
+/// diet layout, with one and with two light buffers), at each of `samples`.
+fn every_layout(samples: &[u32]) -> Vec<Config> {
+    let mut out = Vec::new();
     for lights in [
         prepass::scene::LightBuffers::One,
         prepass::scene::LightBuffers::Two,
@@ -313,23 +330,17 @@ fn light_prepass_shaders_compile_with_tint() {
         let mut layouts = vec![(Storage::Fat, lights)];
         layouts.extend(renderer::diet_layouts(lights));
         for (storage, lights_layout) in layouts {
-            for msaa in [1, 4] {
-                let cfg = Config {
+            for &msaa in samples {
+                out.push(Config {
                     storage,
                     lights_layout,
                     msaa,
                     ..small()
-                };
-                let crate_wgsl = cfg.scene().wgsl().unwrap();
-                modules.push((
-                    format!("{} msaa {msaa}", cfg.layout_name()),
-                    renderer::shaders::module(&cfg, &crate_wgsl),
-                    pipeline_shapes(&cfg).iter().map(webgpu_pipeline).collect(),
-                ));
+                });
             }
         }
     }
-    dawn::assert_pipelines(modules);
+    out
 }
 
 /// `p` as a WebGPU render pipeline descriptor in JSON, less the module and layout (the Dawn
@@ -500,33 +511,17 @@ fn light_prepass_shaders_are_covered_by_the_emulation() {
     use prepass::conforming::{Emulation, Policy, emulate};
     let emu = Emulation::new(Policy::Upper);
     let mut checked = 0;
-    for lights in [
-        prepass::scene::LightBuffers::One,
-        prepass::scene::LightBuffers::Two,
-    ] {
-        let mut layouts = vec![(Storage::Fat, lights)];
-        layouts.extend(renderer::diet_layouts(lights));
-        for (storage, lights_layout) in layouts {
-            {
-                let msaa = 1;
-                let cfg = Config {
-                    storage,
-                    lights_layout,
-                    msaa,
-                    ..small()
-                };
-                let src = renderer::shaders::module(&cfg, &cfg.scene().wgsl().unwrap());
-                let name = format!("{} msaa {msaa}", cfg.layout_name());
-                let e = emulate(&src, &emu).unwrap_or_else(|err| panic!("{name}: {err}"));
-                assert!(
-                    e.uncovered.is_empty(),
-                    "{name} uses operations the emulation leaves at the host's accuracy: {:?} \
-                     (emulate them in src/conforming, or change the shader)",
-                    e.uncovered
-                );
-                checked += 1;
-            }
-        }
+    for cfg in every_layout(&[1]) {
+        let src = renderer::shaders::module(&cfg, &cfg.scene().wgsl().unwrap());
+        let name = cfg.layout_name();
+        let e = emulate(&src, &emu).unwrap_or_else(|err| panic!("{name}: {err}"));
+        assert!(
+            e.uncovered.is_empty(),
+            "{name} uses operations the emulation leaves at the host's accuracy: {:?} \
+             (emulate them in src/conforming, or change the shader)",
+            e.uncovered
+        );
+        checked += 1;
     }
     eprintln!("coverage: {checked} light pre-pass modules, nothing left uncovered");
 }
