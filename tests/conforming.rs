@@ -147,6 +147,16 @@ fn run(
     (out.into_words(), flags)
 }
 
+/// Marsaglia's xorshift64 from `seed` (non-zero): the tests' reproducible random draws.
+fn xorshift64(mut s: u64) -> impl FnMut() -> u64 {
+    move || {
+        s ^= s << 13;
+        s ^= s >> 7;
+        s ^= s << 17;
+        s
+    }
+}
+
 /// The inputs a flushing adapter may see for x: x itself, and ±0 for a subnormal.
 fn flushed(x: f32) -> Vec<f32> {
     if x != 0.0 && x.abs() < f32::MIN_POSITIVE {
@@ -476,27 +486,18 @@ fn reassociation_reaches_every_grouping() {
         ),
     ];
     // Magnitudes spread over 2^±12 of either sign, so sums cancel and groupings differ.
-    let mut s = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = xorshift64(0x9e37_79b9_7f4a_7c15);
     let mut draw = || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
+        let s = next();
         let m = 1.0 + (s >> 40) as f32 / (1u64 << 24) as f32;
         let e = ((s >> 8) % 25) as i32 - 12;
         let sign = if s & 1 == 1 { -1.0 } else { 1.0 };
         sign * m * 2f32.powi(e)
     };
     let n = 4096;
-    let (xs, ys, zs): (Vec<f32>, Vec<f32>, Vec<f32>) =
-        (0..n).map(|_| (draw(), draw(), draw())).fold(
-            (vec![], vec![], vec![]),
-            |(mut x, mut y, mut z), (a, b, c)| {
-                x.push(a);
-                y.push(b);
-                z.push(c);
-                (x, y, z)
-            },
-        );
+    let v: Vec<[f32; 3]> = (0..n).map(|_| [draw(), draw(), draw()]).collect();
+    let col = |k: usize| v.iter().map(|x| x[k]).collect::<Vec<f32>>();
+    let (xs, ys, zs) = (col(0), col(1), col(2));
     let args = [Arg::column(&xs), Arg::column(&ys), Arg::column(&zs)];
     for (f, freedoms, groupings) in cases {
         let (up, _) = run(f, Policy::Upper, freedoms, &args, n);
@@ -554,11 +555,9 @@ fn reassociation_reaches_every_grouping() {
 #[test]
 fn matrix_products_round_each_way() {
     let n = 2048;
-    let mut s = 0x2545_f491_4f6c_dd1du64;
+    let mut next = xorshift64(0x2545_f491_4f6c_dd1d);
     let mut draw = || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
+        let s = next();
         (1.0 + (s >> 41) as f32 / (1u64 << 23) as f32) * if s & 1 == 1 { -1.0 } else { 1.0 }
     };
     let v: Vec<[f32; 3]> = (0..n).map(|_| [draw(), draw(), draw()]).collect();
@@ -1000,20 +999,14 @@ fn matrix_wrapper(module: &naga::Module, f: &naga::Function) -> Option<String> {
 
 /// Random inputs for a harness parameter type.
 fn column_for(ty: prepass::harness::ValueType, n: usize, seed: u64) -> Vec<u32> {
-    let mut s = seed | 1;
-    let mut next = move || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        s
-    };
+    let mut next = xorshift64(seed | 1);
     let specials = [0.0f32, -0.0, 1.0, -1.0, 0.5, 2.0, 1e-3, 1e3];
     (0..n * ty.words())
         .map(|_| {
             let r = next();
             match ty.scalar {
                 prepass::harness::Scalar::F32 => {
-                    let x = if r % 8 == 0 {
+                    let x = if r.is_multiple_of(8) {
                         specials[(r >> 8) as usize % specials.len()]
                     } else {
                         ((r >> 11) as f64 / (1u64 << 53) as f64 * 4.0 - 2.0) as f32
@@ -1021,7 +1014,7 @@ fn column_for(ty: prepass::harness::ValueType, n: usize, seed: u64) -> Vec<u32> 
                     x.to_bits()
                 }
                 _ => {
-                    if r % 4 == 0 {
+                    if r.is_multiple_of(4) {
                         (r >> 40) as u32 & 0xff
                     } else {
                         (r >> 32) as u32
@@ -1860,13 +1853,8 @@ fn the_emulation_covers_every_shipped_composed_and_example_module() {
 fn the_search_finds_what_the_greedy_policies_cancel() {
     use prepass::conforming::search::{SearchConfig, climb};
     const SRC: &str = "fn t_ratio(x: f32, y: f32, z: f32) -> f32 { return x / (y * z); }";
-    let mut s = 0x1234_5678u64;
-    let mut next = move || {
-        s ^= s << 13;
-        s ^= s >> 7;
-        s ^= s << 17;
-        1.0 + (s >> 11) as f32 / (1u64 << 53) as f32
-    };
+    let mut bits = xorshift64(0x1234_5678);
+    let mut next = move || 1.0 + (bits() >> 11) as f32 / (1u64 << 53) as f32;
     let n = 64;
     let cols: [Vec<f32>; 3] = std::array::from_fn(|_| (0..n).map(|_| next()).collect());
     let exact: Vec<f64> = (0..n)

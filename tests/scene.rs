@@ -191,10 +191,16 @@ fn root_sets_for_backends<'a>(by_roots: &BTreeSet<Vec<&'a str>>) -> Vec<Vec<&'a 
     sampled_root_sets(by_roots)
 }
 
-/// [`root_sets_for_backends`]' sample: every root alone, the largest set, every 16th set.
-fn sampled_root_sets<'a>(by_roots: &BTreeSet<Vec<&'a str>>) -> Vec<Vec<&'a str>> {
+/// Every root alone and the largest set: what each sample below starts from.
+fn roots_alone_and_largest<'a>(by_roots: &BTreeSet<Vec<&'a str>>) -> BTreeSet<Vec<&'a str>> {
     let mut picked: BTreeSet<Vec<&str>> = by_roots.iter().flatten().map(|r| vec![*r]).collect();
     picked.extend(by_roots.iter().max_by_key(|r| r.len()).cloned());
+    picked
+}
+
+/// [`root_sets_for_backends`]' sample: every root alone, the largest set, every 16th set.
+fn sampled_root_sets<'a>(by_roots: &BTreeSet<Vec<&'a str>>) -> Vec<Vec<&'a str>> {
+    let mut picked = roots_alone_and_largest(by_roots);
     picked.extend(by_roots.iter().step_by(16).cloned());
     picked.into_iter().collect()
 }
@@ -207,9 +213,7 @@ fn root_sets_for_compilers<'a>(by_roots: &BTreeSet<Vec<&'a str>>) -> Vec<Vec<&'a
     if common::full_strength() {
         return root_sets_for_backends(by_roots);
     }
-    let mut picked: BTreeSet<Vec<&str>> = by_roots.iter().flatten().map(|r| vec![*r]).collect();
-    picked.extend(by_roots.iter().max_by_key(|r| r.len()).cloned());
-    picked.into_iter().collect()
+    roots_alone_and_largest(by_roots).into_iter().collect()
 }
 
 /// Composed modules compile with AMD's ACO and Intel's brw on every target (`prepass::isa`,
