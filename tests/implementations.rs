@@ -413,7 +413,7 @@ fn normals(exec: &dyn Executor, out: &mut Vec<Figure>) {
             .filter(|(a, b)| a != b)
             .count();
         // The codecs that store z ≥ 0 only ("xyz8" stores the whole sphere).
-        let hemisphere = c.name.starts_with("hemioct") || c.name.starts_with("xy fp16");
+        let hemisphere = c.hemisphere;
         let (mut worst, mut differ, mut not_unit, mut ulps) = (0.0f64, 0usize, 0usize, 0u64);
         // The twin's codes decoded exactly (f64): the decoder's own turn adds to this.
         let mut exact_worst = 0.0f64;

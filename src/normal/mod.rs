@@ -4,7 +4,9 @@
 //!
 //! | encoding | bits | WGSL | twin |
 //! |---|---|---|---|
-//! | x, y, z as unorm8 (Resistance 2) | 24 (+8 free) | `wgsl/normal_xyz8.wgsl` | [`xyz8`] |
+//! | x, y, z as unorm8 (Resistance 2; Godot's best-fit decoder) | 24 (+8 free) | `wgsl/normal_xyz8.wgsl` | [`xyz8`] |
+//! | x, y, z as unorm10 in RGB10A2 (Unreal 5 GBufferA, Bevy's normal prepass) | 30 (+2 free) | `wgsl/normal_xyz10.wgsl` | [`xyz10`] |
+//! | x, y, z as snorm8 (Unity URP's default normal target) | 24 (+8 free) | `wgsl/normal_snorm8.wgsl` | [`snorm8`] |
 //! | view-space x, y as FP16 in RGBA8, z rebuilt (Killzone 2) | 32 | `wgsl/normal_xy_fp16.wgsl` | [`xy_fp16`] |
 //! | octahedral, precise and rounding encoders (Cigolle et al. 2014) | 16, 24, 32 | `wgsl/normal_oct.wgsl` | [`oct`] |
 //! | hemi-octahedral, view-space `z ≥ 0` only (for comparison) | 24 | `wgsl/normal_hemioct.wgsl` | [`hemioct`] |
@@ -46,7 +48,9 @@ pub const UNIT_TOLERANCE: f64 = 4.0 / 8_388_608.0;
 
 pub mod hemioct;
 pub mod oct;
+pub mod snorm8;
 pub mod xy_fp16;
+pub mod xyz10;
 pub mod xyz8;
 
 use glam::Vec3;

@@ -86,36 +86,32 @@ pub struct EmulatedCodec {
     pub max_code_step: u32,
 }
 
-/// The largest per-lane difference between two codes of `codec` (lanes: 3 bytes for 24-bit
-/// xyz8-style codes, else two halves of the code's bits).
+/// The largest per-lane difference between two codes of `codec`, over its [`Codec::lanes`].
 fn code_step(codec: &Codec, a: u32, b: u32) -> u32 {
-    let lanes: &[(u32, u32)] = if codec.name.starts_with("xyz8") {
-        &[(0, 8), (8, 8), (16, 8)]
-    } else {
-        match codec.bits {
-            16 => &[(0, 8), (8, 8)],
-            24 => &[(0, 12), (12, 12)],
-            _ => &[(0, 16), (16, 16)],
-        }
-    };
-    // f16 lanes are compared in their order (±0 one value), so a signed zero is no step.
-    let halves = codec.name.starts_with("xy");
-    let ordered = |h: u32| -> i64 {
-        if halves && h & 0x8000 != 0 {
-            -i64::from(h & 0x7fff)
-        } else {
-            i64::from(h)
-        }
-    };
-    lanes
+    use super::normal::LaneKind;
+    codec
+        .lanes
         .iter()
-        .map(|&(shift, width)| {
-            let m = (1u32 << width) - 1;
-            let (x, y) = (ordered((a >> shift) & m), ordered((b >> shift) & m));
+        .map(|lane| {
+            let m = (1u32 << lane.width) - 1;
+            let (x, y) = ((a >> lane.shift) & m, (b >> lane.shift) & m);
+            let value = |h: u32| -> i64 {
+                match lane.kind {
+                    LaneKind::Unsigned => i64::from(h),
+                    // Sign-extend the field.
+                    LaneKind::Signed => {
+                        i64::from(((h << (32 - lane.width)) as i32) >> (32 - lane.width))
+                    }
+                    // f16 lanes are compared in their order (±0 one value).
+                    LaneKind::F16 if h & 0x8000 != 0 => -i64::from(h & 0x7fff),
+                    LaneKind::F16 => i64::from(h),
+                }
+            };
+            let (x, y) = (value(x), value(y));
             // An adapter may flush an f16-subnormal lane to ±0 (WGSL: pack intermediates may be
             // flushed): a lane at most one step above the subnormals (|code| ≤ 0x400, 2^-14)
             // stored as zero is that freedom, counted as one step.
-            if halves && (x == 0 || y == 0) && x.abs().max(y.abs()) <= 0x400 {
+            if lane.kind == LaneKind::F16 && (x == 0 || y == 0) && x.abs().max(y.abs()) <= 0x400 {
                 return u32::from(x != y);
             }
             x.abs_diff(y) as u32
@@ -292,7 +288,7 @@ pub fn normal_figures_with(
     use crate::scene::{NormalChoice, NormalEncoding, Scene};
     let mut rows = Vec::new();
     for c in codecs {
-        let hemisphere = c.name.starts_with("hemioct") || c.name.starts_with("xy");
+        let hemisphere = c.hemisphere;
         let pick = |rt: &RoundTrip| {
             if hemisphere { rt.error_upper } else { rt.error }
         };

@@ -51,6 +51,12 @@ pub const LIGHT_VOLUME: &str = include_str!("../../wgsl/light_volume.wgsl");
 /// `wgsl/normal_xyz8.wgsl`: normal as x, y, z unorm8 (twin: [`crate::normal::xyz8`]).
 pub const NORMAL_XYZ8: &str = include_str!("../../wgsl/normal_xyz8.wgsl");
 
+/// `wgsl/normal_xyz10.wgsl`: normal as x, y, z unorm10 in RGB10A2 (twin: [`crate::normal::xyz10`]).
+pub const NORMAL_XYZ10: &str = include_str!("../../wgsl/normal_xyz10.wgsl");
+
+/// `wgsl/normal_snorm8.wgsl`: normal as x, y, z snorm8 (twin: [`crate::normal::snorm8`]).
+pub const NORMAL_SNORM8: &str = include_str!("../../wgsl/normal_snorm8.wgsl");
+
 /// `wgsl/normal_xy_fp16.wgsl`: view-space normal xy as two FP16 (twin: [`crate::normal::xy_fp16`]).
 pub const NORMAL_XY_FP16: &str = include_str!("../../wgsl/normal_xy_fp16.wgsl");
 
@@ -92,8 +98,16 @@ pub const FILES: &[WgslFile] = &[
         source: NORMAL_OCT,
     },
     WgslFile {
+        name: "normal_snorm8.wgsl",
+        source: NORMAL_SNORM8,
+    },
+    WgslFile {
         name: "normal_xy_fp16.wgsl",
         source: NORMAL_XY_FP16,
+    },
+    WgslFile {
+        name: "normal_xyz10.wgsl",
+        source: NORMAL_XYZ10,
     },
     WgslFile {
         name: "normal_xyz8.wgsl",

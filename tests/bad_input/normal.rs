@@ -4,8 +4,9 @@
 //! The rules every encoding's rows follow. Encoders: NaN, zero and all-subnormal vectors give the
 //! code of +z; infinities give the direction of their signs; subnormal components count as 0; any
 //! finite length is normalised. Decoders: every bit pattern gives a finite unit vector; unused
-//! high bits are ignored. Render-target forms: encoders write byte/255 (alpha 0 where free);
-//! decoders clamp each channel to [0, 1] (NaN counts as 0) and round it back to its byte.
+//! high bits are ignored. Render-target forms: encoders write byte/255 (k/1023 for RGB10A2, b/127
+//! for snorm8; alpha 0 where free); decoders clamp each channel to [0, 1] ([−1, 1] for snorm;
+//! NaN counts as 0) and round it back to its byte or code.
 
 use super::{Func, INF, NAN, Row, SUB_MAX, SUB_MIN, V};
 
@@ -15,6 +16,8 @@ pub(super) const B60: f32 = 60.0 / 255.0;
 pub(super) const B127: f32 = 127.0 / 255.0;
 pub(super) const B128: f32 = 128.0 / 255.0;
 pub(super) const B247: f32 = 247.0 / 255.0;
+/// The rgb10a2unorm channel of code 512, `512/1023`.
+pub(super) const K512: f32 = 512.0 / 1023.0;
 /// 1/√3 as decoders compute it, `255/√195075` with each step correctly rounded.
 pub(super) const R3: f32 = 0.577_350_26;
 /// 1/√2 as decoders compute it, `1/√2` with each step correctly rounded.

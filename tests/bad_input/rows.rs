@@ -97,7 +97,9 @@ mod lpp;
 mod normal;
 mod normal_hemioct;
 mod normal_oct;
+mod normal_snorm8;
 mod normal_xy_fp16;
+mod normal_xyz10;
 mod normal_xyz8;
 mod position;
 mod precision;
@@ -282,6 +284,8 @@ pub const TABLES: &[Table] = &[
     table!(aggregate_light),
     table!(light_volume),
     table!(normal_xyz8),
+    table!(normal_xyz10),
+    table!(normal_snorm8),
     table!(normal_xy_fp16),
     table!(normal_oct),
     table!(normal_hemioct),

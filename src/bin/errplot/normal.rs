@@ -82,7 +82,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     let mut csv = String::from("encoding,bits,directions,where,mean_deg,max_deg,rms_deg\n");
     let mut hist = Vec::new();
     for (codec, e, place) in &measured {
-        let upper_only = codec.name.contains("fp16") || codec.name.contains("hemi");
+        let upper_only = codec.hemisphere;
         let mut s = ErrorStats::default();
         for (i, (&err, d)) in e.iter().zip(&dirs).enumerate() {
             if !upper_only || d[2] >= 0.0 {
@@ -185,7 +185,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             continue;
         }
         let mut s = ErrorStats::default();
-        let upper_only = codec.name.contains("fp16") || codec.name.contains("hemi");
+        let upper_only = codec.hemisphere;
         for (i, (&err, d)) in e.iter().zip(&dirs).enumerate() {
             if !upper_only || d[2] >= 0.0 {
                 s.add(i as u64, err);

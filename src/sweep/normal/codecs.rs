@@ -1,9 +1,55 @@
 //! The encodings the normal sweeps measure: each one's WGSL functions, Rust twins and f64
 //! reference, in one table.
 
-use crate::normal::{hemioct, oct, xy_fp16, xyz8};
-use crate::wgsl::{NORMAL_HEMIOCT, NORMAL_OCT, NORMAL_XY_FP16, NORMAL_XYZ8};
+use crate::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
+use crate::wgsl::{
+    NORMAL_HEMIOCT, NORMAL_OCT, NORMAL_SNORM8, NORMAL_XY_FP16, NORMAL_XYZ8, NORMAL_XYZ10,
+};
 use glam::Vec3;
+
+/// How one field of a code counts its steps (see [`Codec::lanes`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LaneKind {
+    /// An unsigned integer (unorm channels, octahedral coordinates).
+    Unsigned,
+    /// A two's complement integer (snorm channels).
+    Signed,
+    /// An f16, stepped through its ordered values (`±0` one value).
+    F16,
+}
+
+/// One field of a code: `width` bits from bit `shift`, counted as `kind`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Lane {
+    /// The field's lowest bit.
+    pub shift: u32,
+    /// Its width in bits.
+    pub width: u32,
+    /// How a step is counted.
+    pub kind: LaneKind,
+}
+
+const fn lanes<const N: usize>(width: u32, kind: LaneKind) -> [Lane; N] {
+    let mut l = [Lane {
+        shift: 0,
+        width,
+        kind,
+    }; N];
+    let mut i = 0;
+    while i < N {
+        l[i].shift = i as u32 * width;
+        i += 1;
+    }
+    l
+}
+
+const UNORM8X3: [Lane; 3] = lanes(8, LaneKind::Unsigned);
+const UNORM10X3: [Lane; 3] = lanes(10, LaneKind::Unsigned);
+const SNORM8X3: [Lane; 3] = lanes(8, LaneKind::Signed);
+const F16X2: [Lane; 2] = lanes(16, LaneKind::F16);
+const OCT8: [Lane; 2] = lanes(8, LaneKind::Unsigned);
+const OCT12: [Lane; 2] = lanes(12, LaneKind::Unsigned);
+const OCT16: [Lane; 2] = lanes(16, LaneKind::Unsigned);
 
 /// One encoding: its WGSL functions, its Rust twins and its f64 reference encoder.
 #[derive(Clone, Copy)]
@@ -12,6 +58,11 @@ pub struct Codec {
     pub name: &'static str,
     /// Bits of the code.
     pub bits: u32,
+    /// The code's fields, for counting how many steps apart two codes are.
+    pub lanes: &'static [Lane],
+    /// Whether it encodes view-space normals of one hemisphere only (`z ≥ 0`): its errors are
+    /// measured over that hemisphere.
+    pub hemisphere: bool,
     /// The WGSL file holding both functions.
     pub source: &'static str,
     /// WGSL encoder `fn(n: vec3<f32>) -> u32`.
@@ -66,10 +117,12 @@ oct_refs!(12, oct24_ref_p, oct24_ref_r, oct24_ref_d);
 oct_refs!(16, oct32_ref_p, oct32_ref_r, oct32_ref_d);
 
 macro_rules! oct_codec {
-    ($name:literal, $bits:literal, $enc:ident, $dec:ident, $twin:path, $twin_dec:path, $r:ident, $d:ident, $t:expr) => {
+    ($name:literal, $bits:literal, $lanes:expr, $enc:ident, $dec:ident, $twin:path, $twin_dec:path, $r:ident, $d:ident, $t:expr) => {
         Codec {
             name: $name,
             bits: 2 * $bits,
+            lanes: $lanes,
+            hemisphere: false,
             source: NORMAL_OCT,
             encode: stringify!($enc),
             decode: stringify!($dec),
@@ -82,12 +135,15 @@ macro_rules! oct_codec {
     };
 }
 
-/// Every encoding: xyz8, xy FP16, octahedral 16/24/32 precise and fast, then hemi-octahedral 24
-/// precise and fast (errors of the hemisphere-only codes are measured over `z ≥ 0`).
-pub const CODECS: [Codec; 10] = [
+/// Every encoding: xyz8, xy FP16, octahedral 16/24/32 precise and fast, hemi-octahedral 24
+/// precise and fast (errors of the hemisphere-only codes are measured over `z ≥ 0`), then the
+/// engines' forms: xyz10 (RGB10A2) and snorm8 xyz.
+pub const CODECS: [Codec; 12] = [
     Codec {
         name: "xyz8",
         bits: 24,
+        lanes: &UNORM8X3,
+        hemisphere: false,
         source: NORMAL_XYZ8,
         encode: "encode_normal_xyz8",
         decode: "decode_normal_xyz8",
@@ -100,6 +156,8 @@ pub const CODECS: [Codec; 10] = [
     Codec {
         name: "xy fp16",
         bits: 32,
+        lanes: &F16X2,
+        hemisphere: true,
         source: NORMAL_XY_FP16,
         encode: "encode_normal_xy_fp16",
         decode: "decode_normal_xy_fp16",
@@ -112,6 +170,7 @@ pub const CODECS: [Codec; 10] = [
     oct_codec!(
         "oct16",
         8,
+        &OCT8,
         encode_normal_oct16,
         decode_normal_oct16,
         oct::encode_normal_oct16,
@@ -123,6 +182,7 @@ pub const CODECS: [Codec; 10] = [
     oct_codec!(
         "oct16 fast",
         8,
+        &OCT8,
         encode_normal_oct16_fast,
         decode_normal_oct16,
         oct::encode_normal_oct16_fast,
@@ -134,6 +194,7 @@ pub const CODECS: [Codec; 10] = [
     oct_codec!(
         "oct24",
         12,
+        &OCT12,
         encode_normal_oct24,
         decode_normal_oct24,
         oct::encode_normal_oct24,
@@ -145,6 +206,7 @@ pub const CODECS: [Codec; 10] = [
     oct_codec!(
         "oct24 fast",
         12,
+        &OCT12,
         encode_normal_oct24_fast,
         decode_normal_oct24,
         oct::encode_normal_oct24_fast,
@@ -156,6 +218,7 @@ pub const CODECS: [Codec; 10] = [
     oct_codec!(
         "oct32",
         16,
+        &OCT16,
         encode_normal_oct32,
         decode_normal_oct32,
         oct::encode_normal_oct32,
@@ -167,6 +230,7 @@ pub const CODECS: [Codec; 10] = [
     oct_codec!(
         "oct32 fast",
         16,
+        &OCT16,
         encode_normal_oct32_fast,
         decode_normal_oct32,
         oct::encode_normal_oct32_fast,
@@ -178,6 +242,8 @@ pub const CODECS: [Codec; 10] = [
     Codec {
         name: "hemioct24",
         bits: 24,
+        lanes: &OCT12,
+        hemisphere: true,
         source: NORMAL_HEMIOCT,
         encode: "encode_normal_hemioct24",
         decode: "decode_normal_hemioct24",
@@ -190,6 +256,8 @@ pub const CODECS: [Codec; 10] = [
     Codec {
         name: "hemioct24 fast",
         bits: 24,
+        lanes: &OCT12,
+        hemisphere: true,
         source: NORMAL_HEMIOCT,
         encode: "encode_normal_hemioct24_fast",
         decode: "decode_normal_hemioct24",
@@ -197,6 +265,34 @@ pub const CODECS: [Codec; 10] = [
         twin_decode: hemioct::decode_normal_hemioct24,
         reference_encode: hemioct::exact::encode_round,
         reference_decode: hemioct::exact::decode,
+        target: None,
+    },
+    Codec {
+        name: "xyz10",
+        bits: 30,
+        lanes: &UNORM10X3,
+        hemisphere: false,
+        source: NORMAL_XYZ10,
+        encode: "encode_normal_xyz10",
+        decode: "decode_normal_xyz10",
+        twin_encode: xyz10::encode_normal_xyz10,
+        twin_decode: xyz10::decode_normal_xyz10,
+        reference_encode: xyz10::exact::encode,
+        reference_decode: xyz10::exact::decode,
+        target: None,
+    },
+    Codec {
+        name: "snorm8",
+        bits: 24,
+        lanes: &SNORM8X3,
+        hemisphere: false,
+        source: NORMAL_SNORM8,
+        encode: "encode_normal_snorm8",
+        decode: "decode_normal_snorm8",
+        twin_encode: snorm8::encode_normal_snorm8,
+        twin_decode: snorm8::decode_normal_snorm8,
+        reference_encode: snorm8::exact::encode,
+        reference_decode: snorm8::exact::decode,
         target: None,
     },
 ];

@@ -10,6 +10,7 @@ mod codecs;
 mod decision;
 mod decoder;
 mod inputs;
+pub mod interop;
 mod myth;
 mod optimality;
 mod pool;
@@ -17,7 +18,7 @@ mod round_trip;
 mod searched;
 mod unorm;
 
-pub use codecs::{CODECS, Codec, codec};
+pub use codecs::{CODECS, Codec, Lane, LaneKind, codec};
 pub use decision::{
     DecisionInput, SCORES_FN, SearchedDecision, chain_choice, decision_inputs, scores_source,
     searched_decisions,
@@ -38,4 +39,4 @@ pub use round_trip::{
 pub use searched::{
     ROUND_TRIP_FN, SearchedRoundTrip, round_trip_parts, round_trip_source, searched_round_trip,
 };
-pub use unorm::{UnormForms, unorm_forms};
+pub use unorm::{RenderTarget, UnormForms, render_target_forms, unorm_forms};

@@ -60,3 +60,114 @@ pub fn unorm_forms(
     }
     Ok(f)
 }
+
+/// A render-target format of a three-channel normal code (the fourth channel is the renderer's).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RenderTarget {
+    /// `rgb10a2unorm`: x, y, z in 10-bit fields (bits 0–29), channel `k/1023`; alpha zero.
+    Rgb10a2Unorm,
+    /// `rgba8snorm`: x, y, z as two's complement bytes 0–2, channel `b/127`; alpha zero.
+    Rgba8Snorm,
+}
+
+impl RenderTarget {
+    /// The integer each of the first three channels holds, and the channel's scale.
+    fn fields(self, p: u32) -> ([i32; 3], f64) {
+        match self {
+            Self::Rgb10a2Unorm => ([p, p >> 10, p >> 20].map(|k| (k & 0x3ff) as i32), 1023.0),
+            Self::Rgba8Snorm => (
+                [p, p >> 8, p >> 16].map(|b| i32::from((b & 0xff) as u8 as i8)),
+                127.0,
+            ),
+        }
+    }
+
+    /// The channels a conforming write of code `p`'s form stores and a sampler returns exactly:
+    /// `field/scale` (correctly rounded), alpha 0.
+    pub fn channels(self, p: u32) -> [f32; 4] {
+        let (f, s) = self.fields(p);
+        [
+            (f64::from(f[0]) / s) as f32,
+            (f64::from(f[1]) / s) as f32,
+            (f64::from(f[2]) / s) as f32,
+            0.0,
+        ]
+    }
+
+    /// Channel `lane` of code `p` as a sampler might return it under `error` (a few ULPs, or an
+    /// offset in steps of this format), pushed down when `down`.
+    fn perturbed(
+        self,
+        p: u32,
+        lane: usize,
+        error: crate::precision::inputs::ChannelError,
+        down: bool,
+    ) -> f32 {
+        use crate::precision::inputs::ChannelError;
+        let (f, s) = self.fields(p);
+        let exact = self.channels(p)[lane];
+        match error {
+            ChannelError::Exact => exact,
+            ChannelError::Ulps(u) => crate::precision::metrics::step_ulps(
+                exact,
+                if down { -i64::from(u) } else { i64::from(u) },
+            ),
+            ChannelError::Offset(o) => {
+                let o = if down { -o } else { o };
+                ((f64::from(f[lane]) + o) / s) as f32
+            }
+        }
+    }
+}
+
+/// [`unorm_forms`] for the formats of [`RenderTarget`]: `encode_rt(n) -> vec4<f32>` must write
+/// exactly [`RenderTarget::channels`] of the Rust encoder's code, and `decode_rt(c: vec4<f32>)`
+/// must return the code path's decode bit for bit from exact channels, channels moved 3 ULPs and
+/// channels moved 0.45 of a step, each both ways.
+pub fn render_target_forms(
+    gpu: &Gpu,
+    codec: &Codec,
+    encode_rt: &str,
+    decode_rt: &str,
+    target: RenderTarget,
+    inputs: &[[f32; 3]],
+) -> Result<UnormForms, HarnessError> {
+    use crate::precision::inputs::sign_pattern;
+    let n = inputs.len() as u64;
+    let mut f = UnormForms::default();
+    let channels = gpu
+        .kernel(codec.source, encode_rt)?
+        .run(&[Arg::column(inputs)], n)?
+        .into_words();
+    let codes: Vec<u32> = inputs
+        .iter()
+        .map(|v| (codec.twin_encode)(Vec3::from(*v)))
+        .collect();
+    f.encode = Mismatches::count(&channels, |k| {
+        target.channels(codes[k / 4])[k % 4].to_bits()
+    });
+    let want = gpu
+        .kernel(codec.source, codec.decode)?
+        .run(&[Arg::column(&codes)], n)?
+        .into_words();
+    let dec = gpu.kernel(codec.source, decode_rt)?;
+    for (error, flip) in crate::sweep::depth24::RECOVERY_CASES {
+        let c: Vec<f32> = codes
+            .iter()
+            .flat_map(|&p| {
+                let signs = sign_pattern(p, flip);
+                (0..4).map(move |k| {
+                    if k == 3 {
+                        // The renderer's channel: anything.
+                        0.5
+                    } else {
+                        target.perturbed(p, k, error, (signs >> k) & 1 == 1)
+                    }
+                })
+            })
+            .collect();
+        let got = dec.run(&[Arg::column(&c)], n)?.into_words();
+        f.decode.merge(Mismatches::count(&got, |k| want[k]), 0);
+    }
+    Ok(f)
+}
