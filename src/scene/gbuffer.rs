@@ -16,6 +16,10 @@ pub enum TargetFormat {
     Rgba8Uint,
     /// `rg8unorm`: 2 × 8-bit unorm.
     Rg8Unorm,
+    /// `rgb10a2unorm`: 3 × 10-bit unorm and a 2-bit alpha.
+    Rgb10a2Unorm,
+    /// `rgba8snorm`: 4 × 8-bit snorm.
+    Rgba8Snorm,
     /// `r8unorm`: one byte.
     R8Unorm,
     /// `r32uint`: one 32-bit word.
@@ -36,6 +40,8 @@ impl TargetFormat {
             Self::Rg8Unorm => 2,
             Self::Rgba8Unorm
             | Self::Rgba8Uint
+            | Self::Rgb10a2Unorm
+            | Self::Rgba8Snorm
             | Self::R32Uint
             | Self::Depth32Float
             | Self::Depth24PlusStencil8 => 4,
@@ -52,6 +58,8 @@ impl TargetFormat {
             Self::Rgba8Unorm => T::Rgba8Unorm,
             Self::Rgba8Uint => T::Rgba8Uint,
             Self::Rg8Unorm => T::Rg8Unorm,
+            Self::Rgb10a2Unorm => T::Rgb10a2Unorm,
+            Self::Rgba8Snorm => T::Rgba8Snorm,
             Self::R8Unorm => T::R8Unorm,
             Self::R32Uint => T::R32Uint,
             Self::Rgba16Float => T::Rgba16Float,
@@ -179,6 +187,14 @@ impl Scene {
                 NormalEncoding::Hemioct24 => (
                     TargetFormat::Rgba8Unorm,
                     format!("rgb: hemi-octahedral u, v (12 bits each), {a}"),
+                ),
+                NormalEncoding::Xyz10 => (
+                    TargetFormat::Rgb10a2Unorm,
+                    "rgb: normal xyz10 (10 bits each), a: 2 bits free".into(),
+                ),
+                NormalEncoding::Snorm8 => (
+                    TargetFormat::Rgba8Snorm,
+                    "rgb: normal snorm8, a: free (snorm material)".into(),
                 ),
             };
             targets.push(Target {

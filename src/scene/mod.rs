@@ -94,22 +94,28 @@ pub enum NormalEncoding {
     Oct32,
     /// Hemi-octahedral (view-space, z ≥ 0), 2×12 bits, alpha free.
     Hemioct24,
+    /// x, y, z as unorm10 in RGB10A2 (Unreal 5's GBufferA, Bevy's normal prepass), 2 bits free.
+    Xyz10,
+    /// x, y, z as snorm8 (Unity URP's default normal target), alpha free.
+    Snorm8,
 }
 
 impl NormalEncoding {
     /// Every encoding.
-    pub const ALL: [NormalEncoding; 6] = [
+    pub const ALL: [NormalEncoding; 8] = [
         Self::Xyz8,
         Self::XyFp16,
         Self::Oct16,
         Self::Oct24,
         Self::Oct32,
         Self::Hemioct24,
+        Self::Xyz10,
+        Self::Snorm8,
     ];
 
     /// Whether a cheaper rounding encoder (`_fast`) exists beside the precise one.
     pub fn has_fast_encoder(self) -> bool {
-        !matches!(self, Self::Xyz8 | Self::XyFp16)
+        !matches!(self, Self::Xyz8 | Self::XyFp16 | Self::Xyz10 | Self::Snorm8)
     }
 }
 

@@ -53,6 +53,20 @@ fn normal_roots(e: NormalEncoding, fast: bool) -> [&'static str; 4] {
             "encode_normal_hemioct24_unorm",
             "decode_normal_hemioct24_unorm",
         ),
+        NormalEncoding::Xyz10 => (
+            "encode_normal_xyz10",
+            "encode_normal_xyz10",
+            "decode_normal_xyz10",
+            "encode_normal_xyz10_unorm",
+            "decode_normal_xyz10_unorm",
+        ),
+        NormalEncoding::Snorm8 => (
+            "encode_normal_snorm8",
+            "encode_normal_snorm8",
+            "decode_normal_snorm8",
+            "encode_normal_snorm8_snorm",
+            "decode_normal_snorm8_snorm",
+        ),
     };
     [if fast { enc_fast } else { enc }, dec, enc_unorm, dec_unorm]
 }

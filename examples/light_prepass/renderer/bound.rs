@@ -89,6 +89,8 @@ pub fn normal_angle_at(e: NormalEncoding, z: f64) -> f64 {
     };
     let a = match e {
         NormalEncoding::Xyz8 => (3f64.sqrt() / 255.0).asin(),
+        NormalEncoding::Xyz10 => (3f64.sqrt() / 1023.0).asin(),
+        NormalEncoding::Snorm8 => (3f64.sqrt() / 254.0).asin(),
         NormalEncoding::Oct16 => oct(8),
         NormalEncoding::Oct24 | NormalEncoding::Hemioct24 => oct(12),
         NormalEncoding::Oct32 => oct(16),
@@ -389,7 +391,7 @@ pub fn gbuffer_error(
     fat: &FatGBuffer,
     scene: &super::scene::SceneData,
 ) -> Result<GBufferError, String> {
-    use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
+    use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
     use prepass::projection::{DepthConvention, Projection};
     let diet = row
         .output
@@ -430,6 +432,9 @@ pub fn gbuffer_error(
             NormalEncoding::Oct16 => oct::decode_normal_oct16(p),
             NormalEncoding::Oct24 => oct::decode_normal_oct24(p),
             NormalEncoding::Oct32 => oct::decode_normal_oct32(p),
+            // The texel's bits are the code (rgb10a2 packs x low; snorm bytes are the code's).
+            NormalEncoding::Xyz10 => xyz10::decode_normal_xyz10(p),
+            NormalEncoding::Snorm8 => snorm8::decode_normal_snorm8(p),
         };
         let code = if free {
             u32::from(b[3])

@@ -212,6 +212,8 @@ pub fn encoding_name(e: NormalEncoding) -> &'static str {
         NormalEncoding::Oct24 => "oct24",
         NormalEncoding::Oct32 => "oct32",
         NormalEncoding::Hemioct24 => "hemioct24",
+        NormalEncoding::Xyz10 => "xyz10",
+        NormalEncoding::Snorm8 => "snorm8",
     }
 }
 

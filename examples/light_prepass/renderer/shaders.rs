@@ -14,16 +14,28 @@ pub fn alpha_free(e: NormalEncoding) -> bool {
     )
 }
 
-/// The stem of the encoding's WGSL functions (`encode_normal_{stem}_unorm`).
+/// The stem of the encoding's WGSL functions (`encode_normal_{stem}_unorm`; `_snorm` for snorm8).
 pub fn stem(e: NormalEncoding) -> &'static str {
     match e {
         NormalEncoding::Xyz8 => "xyz8",
+        NormalEncoding::Xyz10 => "xyz10",
+        NormalEncoding::Snorm8 => "snorm8",
         NormalEncoding::XyFp16 => "xy_fp16",
         NormalEncoding::Oct16 => "oct16",
         NormalEncoding::Oct24 => "oct24",
         NormalEncoding::Oct32 => "oct32",
         NormalEncoding::Hemioct24 => "hemioct24",
     }
+}
+
+/// [`stem`] with its render-target suffix: the name tail of the `_unorm` (or `_snorm`) forms.
+fn rt_stem(e: NormalEncoding) -> String {
+    let format = if e == NormalEncoding::Snorm8 {
+        "snorm"
+    } else {
+        "unorm"
+    };
+    format!("{}_{format}", stem(e))
 }
 
 const COMMON: &str = r#"
@@ -224,20 +236,20 @@ pub fn module(cfg: &Config, crate_wgsl: &str) -> String {
             ));
         }
         Storage::Diet { normal, depth } => {
-            let st = stem(normal);
+            let st = rt_stem(normal);
             let oct16 = normal == NormalEncoding::Oct16;
             let free = alpha_free(normal);
             gout.push_str("    @location(0) normal: vec4<f32>,\n");
             if oct16 {
                 gbody.push_str(&format!(
-                    "    o.normal = vec4<f32>(encode_normal_{st}_unorm(n), 0.0, 0.0);\n"
+                    "    o.normal = vec4<f32>(encode_normal_{st}(n), 0.0, 0.0);\n"
                 ));
             } else if free {
                 gbody.push_str(&format!(
-                    "    o.normal = vec4<f32>(encode_normal_{st}_unorm(n).xyz, f32(code) / 255.0);\n"
+                    "    o.normal = vec4<f32>(encode_normal_{st}(n).xyz, f32(code) / 255.0);\n"
                 ));
             } else {
-                gbody.push_str(&format!("    o.normal = encode_normal_{st}_unorm(n);\n"));
+                gbody.push_str(&format!("    o.normal = encode_normal_{st}(n);\n"));
             }
             bindings.push_str(&format!("@group(1) @binding(0) var g_normal: {tex};\n"));
             let mut loc = 1;
@@ -281,7 +293,7 @@ pub fn module(cfg: &Config, crate_wgsl: &str) -> String {
             let arg = if oct16 { "t.xy" } else { "t" };
             read_normal.push_str(&format!(
                 "    let t = textureLoad(g_normal, px, {s_arg});\n    \
-                 let n = decode_normal_{st}_unorm({arg});\n"
+                 let n = decode_normal_{st}({arg});\n"
             ));
             if free {
                 read_normal.push_str("    let code = u32(round(clamp(t.a, 0.0, 1.0) * 255.0));\n");
