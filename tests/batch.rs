@@ -15,10 +15,10 @@ mod common;
 use glam::Vec3;
 use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br};
 use prepass::depth24 as d24;
-use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
+use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
 use prepass::precision::inputs::{ChannelError, sign_pattern, unorm8_channel};
 use prepass::sweep::normal::{
-    adversarial_directions, bad_inputs, fibonacci_directions, stratified_codes32,
+    RenderTarget, adversarial_directions, bad_inputs, fibonacci_directions, stratified_codes32,
 };
 use std::fmt::Debug;
 use std::sync::OnceLock;
@@ -206,6 +206,35 @@ fn codes24() -> Vec<u32> {
         .collect()
 }
 
+/// 2^24 of the 2^30 xyz10 codes (an odd stride through all of them), the alpha bits varied.
+fn codes30() -> Vec<u32> {
+    (0..1u32 << 24)
+        .map(|i| i.wrapping_mul(0x2f_f8a5) & 0x3fff_ffff | (sign_pattern(i, false) << 30))
+        .collect()
+}
+
+/// Sampled channels of `codes` in `target`'s format: exact or ±3 ULP (as [`unorm_channels`]),
+/// alpha anything, then the special values.
+fn target_channels(codes: &[u32], target: RenderTarget) -> Vec<[f32; 4]> {
+    let mut v = Vec::with_capacity(codes.len() + 64);
+    for &p in codes {
+        let error = if p.wrapping_mul(0x9e37_79b9) >> 31 == 0 {
+            ChannelError::Exact
+        } else {
+            ChannelError::Ulps(3)
+        };
+        let s = sign_pattern(p, false);
+        let c = [0, 1, 2].map(|k| target.perturbed(p, k, error, s >> k & 1 == 1));
+        v.push([c[0], c[1], c[2], 0.25]);
+    }
+    let s = special_components();
+    for (i, &x) in s.iter().enumerate() {
+        v.push([x, s[(i + 1) % s.len()], s[(i + 5) % s.len()], 1.5]);
+        v.push([0.5, x, -0.25, x]);
+    }
+    v
+}
+
 fn stratified() -> &'static [u32] {
     static S: OnceLock<Vec<u32>> = OnceLock::new();
     S.get_or_init(stratified_codes32)
@@ -313,6 +342,18 @@ fn normal_decoders_every_24_bit_code() {
     );
     check!(
         &codes,
+        snorm8::decode_normal_snorm8,
+        bn::decode_normal_snorm8,
+        decode_normal_snorm8_with
+    );
+    check!(
+        &codes30(),
+        xyz10::decode_normal_xyz10,
+        bn::decode_normal_xyz10,
+        decode_normal_xyz10_with
+    );
+    check!(
+        &codes,
         oct::decode_normal_oct16,
         bn::decode_normal_oct16,
         decode_normal_oct16_with
@@ -346,6 +387,23 @@ fn normal_decoders_every_24_bit_code() {
 
 #[test]
 fn normal_unorm_decoders_every_24_bit_code() {
+    let snorm = target_channels(
+        &(0..1u32 << 24).collect::<Vec<_>>(),
+        RenderTarget::Rgba8Snorm,
+    );
+    check!(
+        &snorm,
+        snorm8::decode_normal_snorm8_snorm,
+        bn::decode_normal_snorm8_snorm,
+        decode_normal_snorm8_snorm_with
+    );
+    let rgb10 = target_channels(&codes30(), RenderTarget::Rgb10a2Unorm);
+    check!(
+        &rgb10,
+        xyz10::decode_normal_xyz10_unorm,
+        bn::decode_normal_xyz10_unorm,
+        decode_normal_xyz10_unorm_with
+    );
     let ch = unorm_channels(&(0..1u32 << 24).collect::<Vec<_>>());
     check!(
         &ch,
@@ -444,6 +502,18 @@ fn normal_rounding_encoders() {
     );
     check!(
         v,
+        xyz10::encode_normal_xyz10,
+        bn::encode_normal_xyz10,
+        encode_normal_xyz10_with
+    );
+    check!(
+        v,
+        snorm8::encode_normal_snorm8,
+        bn::encode_normal_snorm8,
+        encode_normal_snorm8_with
+    );
+    check!(
+        v,
         xy_fp16::encode_normal_xy_fp16,
         bn::encode_normal_xy_fp16,
         encode_normal_xy_fp16_with
@@ -486,6 +556,18 @@ fn normal_unorm_and_generic_encoders() {
         xyz8::encode_normal_xyz8_unorm,
         bn::encode_normal_xyz8_unorm,
         encode_normal_xyz8_unorm_with
+    );
+    check!(
+        v,
+        xyz10::encode_normal_xyz10_unorm,
+        bn::encode_normal_xyz10_unorm,
+        encode_normal_xyz10_unorm_with
+    );
+    check!(
+        v,
+        snorm8::encode_normal_snorm8_snorm,
+        bn::encode_normal_snorm8_snorm,
+        encode_normal_snorm8_snorm_with
     );
     check!(
         v,

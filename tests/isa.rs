@@ -172,68 +172,8 @@ fn every_shipped_file_compiles_whole_on_every_target() {
 /// uniform as a renderer feeds them.
 #[test]
 fn readme_cost_table_on_real_instruction_sets() {
-    let normals = [
-        (
-            "xyz8",
-            "normal_xyz8",
-            "encode_normal_xyz8",
-            "decode_normal_xyz8",
-        ),
-        (
-            "xy fp16",
-            "normal_xy_fp16",
-            "encode_normal_xy_fp16",
-            "decode_normal_xy_fp16",
-        ),
-        (
-            "oct16",
-            "normal_oct",
-            "encode_normal_oct16",
-            "decode_normal_oct16",
-        ),
-        (
-            "oct16 fast",
-            "normal_oct",
-            "encode_normal_oct16_fast",
-            "decode_normal_oct16",
-        ),
-        (
-            "oct24",
-            "normal_oct",
-            "encode_normal_oct24",
-            "decode_normal_oct24",
-        ),
-        (
-            "oct24 fast",
-            "normal_oct",
-            "encode_normal_oct24_fast",
-            "decode_normal_oct24",
-        ),
-        (
-            "oct32",
-            "normal_oct",
-            "encode_normal_oct32",
-            "decode_normal_oct32",
-        ),
-        (
-            "oct32 fast",
-            "normal_oct",
-            "encode_normal_oct32_fast",
-            "decode_normal_oct32",
-        ),
-        (
-            "hemioct24",
-            "normal_hemioct",
-            "encode_normal_hemioct24",
-            "decode_normal_hemioct24",
-        ),
-        (
-            "hemioct24 fast",
-            "normal_hemioct",
-            "encode_normal_hemioct24_fast",
-            "decode_normal_hemioct24",
-        ),
-    ];
+    // Every encoding of the sweeps' table, in its order.
+    let normals = &prepass::sweep::normal::CODECS;
     let others = [
         ("linear_depth", "view_z_from_depth24"),
         ("linear_depth", "view_z_from_depth24_consts"),
@@ -254,8 +194,7 @@ fn readme_cost_table_on_real_instruction_sets() {
             .unwrap()
             .source
     };
-    let function = |stem: &str, name: &str| {
-        let src = source(stem);
+    let function = |src: &str, name: &str| {
         let sig = Signature::read(src, name).unwrap();
         let feeds: Vec<prepass::harness::Feed> = (0..sig.params.len())
             .map(|k| {
@@ -269,12 +208,12 @@ fn readme_cost_table_on_real_instruction_sets() {
         Function::new(src, name).with_feeds(&feeds)
     };
     let mut list = Vec::new();
-    for (_, stem, enc, dec) in normals {
-        list.push(function(stem, enc));
-        list.push(function(stem, dec));
+    for c in normals {
+        list.push(function(c.source, c.encode));
+        list.push(function(c.source, c.decode));
     }
     for (stem, name) in others {
-        list.push(function(stem, name));
+        list.push(function(source(stem), name));
     }
     let shown = [Target::Rdna2, Target::XeHpg];
     let report = Costing::new().targets(&shown).cost(&list).unwrap();
@@ -292,7 +231,7 @@ fn readme_cost_table_on_real_instruction_sets() {
     let mut body = String::from(
         "| encoding | SPIR-V encode / decode | RDNA2 instructions encode / decode | RDNA2 inverse throughput encode / decode | Xe-HPG cycles encode / decode |\n|---|---|---|---|---|\n",
     );
-    for (i, (name, ..)) in normals.iter().enumerate() {
+    for (i, name) in normals.iter().map(|c| c.name).enumerate() {
         let (e, d) = (2 * i, 2 * i + 1);
         let (re, rd) = (get(Target::Rdna2, e).net, get(Target::Rdna2, d).net);
         let (xe, xd) = (get(Target::XeHpg, e).net, get(Target::XeHpg, d).net);

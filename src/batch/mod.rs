@@ -5,7 +5,7 @@
 //!
 //! | family | batch twins | scalar twins |
 //! |---|---|---|
-//! | normals: xyz8, xy FP16, oct16/24/32 (precise, rounding), hemioct24, `_unorm` forms | [`normal`] | [`crate::normal`] |
+//! | normals: xyz8, xyz10, snorm8, xy FP16, oct16/24/32 (precise, rounding), hemioct24, `_unorm` forms | [`normal`] | [`crate::normal`] |
 //! | 24-bit depth: pack, recover (packed, RGB8), hyperbolic depth, `unpack4x8unorm` | [`depth24`] | [`crate::depth24`] |
 //! | log-range roughness: encode, decode | [`roughness`] | [`crate::roughness`] |
 //!

@@ -1,4 +1,4 @@
-//! Batch twins of the normal encodings ([`crate::normal`]): xyz8, xy FP16, octahedral 16/24/32
+//! Batch twins of the normal encodings ([`crate::normal`]): xyz8, xyz10, snorm8, xy FP16, octahedral 16/24/32
 //! (precise and rounding encoders, and the generic `bits` forms), hemi-octahedral 24, and every
 //! `_unorm` render-target form. Names, the slice contract and the vectorisation: [`crate::batch`].
 //!
@@ -12,7 +12,7 @@
 //! encoder's arithmetic.
 
 use super::{batch_fn, round_even_small};
-use crate::normal::{hemioct, oct, xy_fp16, xyz8};
+use crate::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
 use glam::{Vec2, Vec3};
 
 // ---------------------------------------------------------------------------------------------
@@ -289,6 +289,52 @@ fn xyz8_decode_lane(p: u32) -> Vec3 {
     normalize(Vec3::new(c(p), c(p >> 8), c(p >> 16)))
 }
 
+#[inline(always)]
+fn xyz10_encode_lane(n: Vec3) -> u32 {
+    let s = sanitize_or_z(n);
+    let u = s / ((s.x * s.x + s.y * s.y) + s.z * s.z).sqrt();
+    let c = (u * 0.5 + 0.5).clamp(Vec3::ZERO, Vec3::ONE) * 1023.0;
+    round_even_small(c.x) | (round_even_small(c.y) << 10) | (round_even_small(c.z) << 20)
+}
+
+#[inline(always)]
+fn xyz10_decode_lane(p: u32) -> Vec3 {
+    let c = |k: u32| (((k & 0x3ff) << 1) as i32).wrapping_sub(1023) as f32;
+    normalize(Vec3::new(c(p), c(p >> 10), c(p >> 20)))
+}
+
+/// `round_ties_even(127·x)` as a two's complement byte, for `|x| ≤ 1` (rounding is symmetric,
+/// so the magnitude is rounded and the sign put back).
+#[inline(always)]
+fn snorm_byte_lane(x: f32) -> u32 {
+    let r = round_even_small((x * 127.0).abs());
+    sel(x < 0.0, r.wrapping_neg(), r) & 0xff
+}
+
+#[inline(always)]
+fn snorm8_encode_lane(n: Vec3) -> u32 {
+    let s = sanitize_or_z(n);
+    let u = (s / ((s.x * s.x + s.y * s.y) + s.z * s.z).sqrt()).clamp(Vec3::NEG_ONE, Vec3::ONE);
+    snorm_byte_lane(u.x) | (snorm_byte_lane(u.y) << 8) | (snorm_byte_lane(u.z) << 16)
+}
+
+/// The integer a snorm8 byte stands for, `max(b, −127)`.
+#[inline(always)]
+fn snorm_value_lane(b: u32) -> i32 {
+    (((b & 0xff) << 24) as i32 >> 24).max(-127)
+}
+
+#[inline(always)]
+fn snorm8_decode_lane(p: u32) -> Vec3 {
+    let (x, y, z) = (
+        snorm_value_lane(p),
+        snorm_value_lane(p >> 8),
+        snorm_value_lane(p >> 16),
+    );
+    let zero = (x | y | z) == 0;
+    normalize(Vec3::new(x as f32, y as f32, (z + i32::from(zero)) as f32))
+}
+
 /// f32 → f16 bits, round to nearest even, for `|x| ≤ 1` (all the encoder passes it; any f32
 /// there, subnormals and ±0 included): the normal-half range by integer rounding of the
 /// dropped 13 mantissa bits (a carry moves into the exponent field correctly), the
@@ -383,6 +429,43 @@ fn xyz8_decode_unorm(c: [f32; 4]) -> Vec3 {
     xyz8_decode_lane(unorm_bytes_lane(c))
 }
 #[inline(always)]
+fn xyz10_encode_unorm(n: Vec3) -> [f32; 4] {
+    let p = xyz10_encode_lane(n);
+    let c = |k: u32| (k & 0x3ff) as f32 / 1023.0;
+    [c(p), c(p >> 10), c(p >> 20), 0.0]
+}
+#[inline(always)]
+fn xyz10_decode_unorm(c: [f32; 4]) -> Vec3 {
+    // From the bits, as the scalar twin: NaN, negatives and −0 → 0, 1 up to +∞ → 1.
+    let k = |x: f32| {
+        let b = x.to_bits();
+        let b = sel(b > 0x7f80_0000, 0, sel(b >= 0x3f80_0000, 0x3f80_0000, b));
+        round_even_small(f32::from_bits(b) * 1023.0)
+    };
+    xyz10_decode_lane(k(c[0]) | (k(c[1]) << 10) | (k(c[2]) << 20))
+}
+#[inline(always)]
+fn snorm8_encode_snorm(n: Vec3) -> [f32; 4] {
+    let p = snorm8_encode_lane(n);
+    let c = |b: u32| ((((b & 0xff) << 24) as i32) >> 24) as f32 / 127.0;
+    [c(p), c(p >> 8), c(p >> 16), 0.0]
+}
+#[inline(always)]
+fn snorm8_decode_snorm(c: [f32; 4]) -> Vec3 {
+    // From the bits, as the scalar twin: NaN → 0, magnitudes from 1 up to ∞ → ±1.
+    let b = |x: f32| {
+        let bits = x.to_bits();
+        let mag = bits & 0x7fff_ffff;
+        let v = sel(
+            mag > 0x7f80_0000,
+            0,
+            sel(mag >= 0x3f80_0000, (bits & 0x8000_0000) | 0x3f80_0000, bits),
+        );
+        snorm_byte_lane(f32::from_bits(v))
+    };
+    snorm8_decode_lane(b(c[0]) | (b(c[1]) << 8) | (b(c[2]) << 16))
+}
+#[inline(always)]
 fn xy_fp16_encode_unorm(n: Vec3) -> [f32; 4] {
     unpack4x8unorm_lane(xy_fp16_encode_lane(n))
 }
@@ -429,6 +512,64 @@ batch_fn!(
     (), [f32; 4] => Vec3,
     scalar: xyz8::decode_normal_xyz8_unorm,
     lane: xyz8_decode_unorm,
+);
+
+batch_fn!(
+    /// Batch [`xyz10::encode_normal_xyz10`].
+    encode_normal_xyz10, encode_normal_xyz10_with, "normal::encode_normal_xyz10",
+    (), Vec3 => u32,
+    scalar: xyz10::encode_normal_xyz10,
+    lane: xyz10_encode_lane,
+);
+batch_fn!(
+    /// Batch [`xyz10::decode_normal_xyz10`].
+    decode_normal_xyz10, decode_normal_xyz10_with, "normal::decode_normal_xyz10",
+    (), u32 => Vec3,
+    scalar: xyz10::decode_normal_xyz10,
+    lane: xyz10_decode_lane,
+);
+batch_fn!(
+    /// Batch [`xyz10::encode_normal_xyz10_unorm`].
+    encode_normal_xyz10_unorm, encode_normal_xyz10_unorm_with, "normal::encode_normal_xyz10_unorm",
+    (), Vec3 => [f32; 4],
+    scalar: xyz10::encode_normal_xyz10_unorm,
+    lane: xyz10_encode_unorm,
+);
+batch_fn!(
+    /// Batch [`xyz10::decode_normal_xyz10_unorm`].
+    decode_normal_xyz10_unorm, decode_normal_xyz10_unorm_with, "normal::decode_normal_xyz10_unorm",
+    (), [f32; 4] => Vec3,
+    scalar: xyz10::decode_normal_xyz10_unorm,
+    lane: xyz10_decode_unorm,
+);
+
+batch_fn!(
+    /// Batch [`snorm8::encode_normal_snorm8`].
+    encode_normal_snorm8, encode_normal_snorm8_with, "normal::encode_normal_snorm8",
+    (), Vec3 => u32,
+    scalar: snorm8::encode_normal_snorm8,
+    lane: snorm8_encode_lane,
+);
+batch_fn!(
+    /// Batch [`snorm8::decode_normal_snorm8`].
+    decode_normal_snorm8, decode_normal_snorm8_with, "normal::decode_normal_snorm8",
+    (), u32 => Vec3,
+    scalar: snorm8::decode_normal_snorm8,
+    lane: snorm8_decode_lane,
+);
+batch_fn!(
+    /// Batch [`snorm8::encode_normal_snorm8_snorm`].
+    encode_normal_snorm8_snorm, encode_normal_snorm8_snorm_with, "normal::encode_normal_snorm8_snorm",
+    (), Vec3 => [f32; 4],
+    scalar: snorm8::encode_normal_snorm8_snorm,
+    lane: snorm8_encode_snorm,
+);
+batch_fn!(
+    /// Batch [`snorm8::decode_normal_snorm8_snorm`].
+    decode_normal_snorm8_snorm, decode_normal_snorm8_snorm_with, "normal::decode_normal_snorm8_snorm",
+    (), [f32; 4] => Vec3,
+    scalar: snorm8::decode_normal_snorm8_snorm,
+    lane: snorm8_decode_snorm,
 );
 
 batch_fn!(

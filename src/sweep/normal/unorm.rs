@@ -94,9 +94,9 @@ impl RenderTarget {
         ]
     }
 
-    /// Channel `lane` of code `p` as a sampler might return it under `error` (a few ULPs, or an
-    /// offset in steps of this format), pushed down when `down`.
-    fn perturbed(
+    /// Channel `lane` (0–2) of code `p` as a sampler might return it under `error` (a few ULPs,
+    /// or an offset in steps of this format), pushed down when `down`.
+    pub fn perturbed(
         self,
         p: u32,
         lane: usize,
