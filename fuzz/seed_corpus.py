@@ -139,3 +139,16 @@ for (n, fa) in PROJ:
                     (f(5.0), f(-1.0)), (0x7F7FFFFF, 0x7F7FFFFF)]:
         for conv in (0, 1):
             write("lighting", 17, words(cz, r, n, fa) + bytes([conv]) + words(0x80000000))
+
+# decoders (appended): 19 decode_normal_xyz10, 20 _xyz10_unorm, 21 decode_normal_snorm8,
+# 22 _snorm8_snorm. encoders (appended): 23 encode_normal_xyz10, 24 _xyz10_unorm,
+# 25 encode_normal_snorm8, 26 _snorm8_snorm.
+for c in NCODES + [0x3FFFFFFF, 0xC0000000, 0x808080, 0x80, 0x7F7F7F]:
+    for e in (19, 21):
+        write("decoders", e, words(c))
+for ch in CHANNELS + [(NINF, NZ, NSUB, INF), (f(-0.999), f(-1.5), f(126.51 / 127), PZ)]:
+    for e in (20, 22):
+        write("decoders", e, words(*ch))
+for v in VECS:
+    for e in (23, 24, 25, 26):
+        write("encoders", e, words(*v))

@@ -11,7 +11,7 @@ use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br};
 use prepass::depth24 as d24;
-use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
+use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
 use prepass::roughness as r;
 
 /// A value compared by its bits.
@@ -342,4 +342,52 @@ pub const BATCH: &[Entry] = &[
         roughness, Input::f32),
     entry!(u32, r::decode_log_roughness, br::decode_log_roughness, decode_log_roughness_with;
         roughness, Input::f32),
+    entry!(
+        Vec3,
+        xyz10::encode_normal_xyz10,
+        bn::encode_normal_xyz10,
+        encode_normal_xyz10_with
+    ),
+    entry!(
+        u32,
+        xyz10::decode_normal_xyz10,
+        bn::decode_normal_xyz10,
+        decode_normal_xyz10_with
+    ),
+    entry!(
+        Vec3,
+        xyz10::encode_normal_xyz10_unorm,
+        bn::encode_normal_xyz10_unorm,
+        encode_normal_xyz10_unorm_with
+    ),
+    entry!(
+        [f32; 4],
+        xyz10::decode_normal_xyz10_unorm,
+        bn::decode_normal_xyz10_unorm,
+        decode_normal_xyz10_unorm_with
+    ),
+    entry!(
+        Vec3,
+        snorm8::encode_normal_snorm8,
+        bn::encode_normal_snorm8,
+        encode_normal_snorm8_with
+    ),
+    entry!(
+        u32,
+        snorm8::decode_normal_snorm8,
+        bn::decode_normal_snorm8,
+        decode_normal_snorm8_with
+    ),
+    entry!(
+        Vec3,
+        snorm8::encode_normal_snorm8_snorm,
+        bn::encode_normal_snorm8_snorm,
+        encode_normal_snorm8_snorm_with
+    ),
+    entry!(
+        [f32; 4],
+        snorm8::decode_normal_snorm8_snorm,
+        bn::decode_normal_snorm8_snorm,
+        decode_normal_snorm8_snorm_with
+    ),
 ];

@@ -1,12 +1,12 @@
 //! [`DECODERS`]: any bytes in, a valid result out — depth codes, normal codes (every encoding,
 //! bit size and render-target form), log roughness.
 
-use crate::normal::{assert_unit, codec, oct_bits, unorm_bytes};
+use crate::normal::{assert_unit, codec, oct_bits, rgb10a2_code, snorm8_code, unorm_bytes};
 use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::assert_within_abs;
 use prepass::depth24::{self, DEPTH24_MAX};
-use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
+use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
 use prepass::roughness;
 
 /// The documented per-channel rule of `depth24_from_rgb8`, stated independently: NaN → 0,
@@ -167,6 +167,59 @@ pub const DECODERS: &[Entry] = &[
                 t & 0xff_ffff
             );
             assert_eq!(roughness::log_roughness_code_from_texel(t), t >> 24);
+        },
+    },
+    Entry {
+        name: "normal::xyz10::decode_normal_xyz10",
+        check: |i| {
+            let p = i.u32();
+            let v = xyz10::decode_normal_xyz10(p);
+            assert_unit(v, format_args!("{p:#x}"));
+            assert_eq!(
+                v,
+                xyz10::decode_normal_xyz10(p & 0x3fff_ffff),
+                "{p:#x}: alpha ignored"
+            );
+        },
+    },
+    Entry {
+        name: "normal::xyz10::decode_normal_xyz10_unorm",
+        check: |i| {
+            let c = [i.f32(), i.f32(), i.f32(), i.f32()];
+            let v = xyz10::decode_normal_xyz10_unorm(c);
+            assert_unit(v, format_args!("{c:?}"));
+            assert_eq!(v, xyz10::decode_normal_xyz10(rgb10a2_code(c)), "{c:?}");
+        },
+    },
+    Entry {
+        name: "normal::snorm8::decode_normal_snorm8",
+        check: |i| {
+            let p = i.u32();
+            let v = snorm8::decode_normal_snorm8(p);
+            assert_unit(v, format_args!("{p:#x}"));
+            assert_eq!(
+                v,
+                snorm8::decode_normal_snorm8(p & 0xff_ffff),
+                "{p:#x}: byte 3 ignored"
+            );
+            // −128 reads as −127.
+            let q = (0..3).fold(p & 0xff_ffff, |q, k| {
+                if (q >> (8 * k)) & 0xff == 0x80 {
+                    q + (1 << (8 * k))
+                } else {
+                    q
+                }
+            });
+            assert_eq!(v, snorm8::decode_normal_snorm8(q), "{p:#x}: −128 as −127");
+        },
+    },
+    Entry {
+        name: "normal::snorm8::decode_normal_snorm8_snorm",
+        check: |i| {
+            let c = [i.f32(), i.f32(), i.f32(), i.f32()];
+            let v = snorm8::decode_normal_snorm8_snorm(c);
+            assert_unit(v, format_args!("{c:?}"));
+            assert_eq!(v, snorm8::decode_normal_snorm8(snorm8_code(c)), "{c:?}");
         },
     },
 ];

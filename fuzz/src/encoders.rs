@@ -2,12 +2,12 @@
 //! documented output — depth codes, normal codes (every encoding and bit size, precise and
 //! rounding, render-target forms), log roughness.
 
-use crate::normal::{check_encoder, codec, oct_bits};
+use crate::normal::{check_encoder, codec, oct_bits, rgb10a2_channels, snorm8_channels};
 use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::assert_within_abs;
 use prepass::depth24::{self, DEPTH24_MAX};
-use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
+use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
 use prepass::roughness;
 
 /// Encoders: any bit patterns in, no panic, the documented output.
@@ -147,6 +147,32 @@ pub const ENCODERS: &[Entry] = &[
                 normal & 0xff_ffff
             );
             assert_eq!(roughness::log_roughness_code_from_texel(t), code.min(255));
+        },
+    },
+    codec!(encoder; xyz10::encode_normal_xyz10, 30),
+    Entry {
+        name: "normal::xyz10::encode_normal_xyz10_unorm",
+        check: |i| {
+            let n = i.vec3();
+            let c = xyz10::encode_normal_xyz10_unorm(n);
+            assert_eq!(c, rgb10a2_channels(xyz10::encode_normal_xyz10(n)), "{n:?}");
+        },
+    },
+    codec!(encoder; snorm8::encode_normal_snorm8, 24),
+    Entry {
+        name: "normal::snorm8::encode_normal_snorm8_snorm",
+        check: |i| {
+            let n = i.vec3();
+            let p = snorm8::encode_normal_snorm8(n);
+            assert_eq!(
+                snorm8::encode_normal_snorm8_snorm(n),
+                snorm8_channels(p),
+                "{n:?}"
+            );
+            assert!(
+                p.to_le_bytes()[..3].iter().all(|&b| b != 0x80),
+                "{n:?}: −128 written"
+            );
         },
     },
 ];

@@ -31,6 +31,44 @@ pub fn unorm_bytes(c: [f32; 4]) -> u32 {
     })
 }
 
+/// The rgb10a2unorm channels the xyz10 render-target encoder documents writing: `k/1023` for the
+/// fields at bits 0, 10, 20, alpha 0.
+pub fn rgb10a2_channels(p: u32) -> [f32; 4] {
+    let k = |s: u32| ((p >> s) & 0x3ff) as f32 / 1023.0;
+    [k(0), k(10), k(20), 0.0]
+}
+
+/// The code the xyz10 render-target decoder documents reading: each of x, y, z taken to
+/// `[0, 1]` (NaN, negative values and −0 as 0, 1 up to +∞ as 1), `round(1023·c)` (ties to even).
+pub fn rgb10a2_code(c: [f32; 4]) -> u32 {
+    (0..3).fold(0, |acc, k| {
+        let x = c[k];
+        let x = if x.is_nan() || x.is_sign_negative() {
+            0.0
+        } else {
+            x.min(1.0)
+        };
+        acc | (((x * 1023.0).round_ties_even() as u32) << (10 * k))
+    })
+}
+
+/// The rgba8snorm channels the snorm8 render-target encoder documents writing: `b/127` for the
+/// signed bytes 0–2, alpha 0.
+pub fn snorm8_channels(p: u32) -> [f32; 4] {
+    let b = |s: u32| f32::from((p >> s) as u8 as i8) / 127.0;
+    [b(0), b(8), b(16), 0.0]
+}
+
+/// The code the snorm8 render-target decoder documents reading: each of x, y, z taken to
+/// `[−1, 1]` (NaN as 0), `round(127·c)` (ties to even) as a two's complement byte.
+pub fn snorm8_code(c: [f32; 4]) -> u32 {
+    (0..3).fold(0, |acc, k| {
+        let x = c[k];
+        let x = if x.is_nan() { 0.0 } else { x.clamp(-1.0, 1.0) };
+        acc | ((((x * 127.0).round_ties_even() as i32 as u32) & 0xff) << (8 * k))
+    })
+}
+
 /// The vector an input with infinite components stands for: `±1` where infinite, signed zero
 /// elsewhere (`prepass::normal::sanitize`'s rule).
 pub fn signs(n: Vec3) -> Vec3 {
