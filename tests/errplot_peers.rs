@@ -22,17 +22,31 @@ use prepass::wgsl::spirv_instruction_count;
 const DOMINATED: &[(&str, &[&str], &str)] = &[
     (
         "encode_normal_xyz8",
-        &[BEVY_OCT24, MESHOPT_K12],
-        "kept as Resistance 2's layout: the components are stored linearly, so filtering, MSAA \
-         resolve and blending of the stored normal stay meaningful (no octahedral code has \
-         that), and its decoder (the cheapest) is not dominated; for accuracy at 24 bits use oct24",
+        &[BEVY_OCT24, MESHOPT_K12, URP_SNORM8],
+        "kept as Resistance 2's layout and Godot's (its best-fit normals decode with this \
+         decoder): the components are stored linearly, so filtering, MSAA resolve and blending \
+         of the stored normal stay meaningful (no octahedral code has that); URP's snorm8 is a \
+         different 24-bit lattice (with 0 and ±1), lower in max error on these directions, and \
+         its encoder skips the bad-input contract; for accuracy at 24 bits use oct24",
+    ),
+    (
+        "decode_normal_xyz8",
+        &[URP_SNORM8],
+        "the same cost (one normalise of an integer vector); the decode row carries its format's \
+         round-trip error, and URP's snorm8 lattice measures lower on these directions: a \
+         different format, not a better reader of these bytes",
     ),
     (
         "encode_normal_xy_fp16",
-        &[BEVY_OCT24, MESHOPT_K8, MESHOPT_K12, MESHOPT_K16],
+        &[BEVY_OCT24, MESHOPT_K8, MESHOPT_K12, MESHOPT_K16, UNREAL_XYZ10, URP_SNORM8],
         "kept as Killzone 2's layout (view-space x, y in FP16, z rebuilt), for comparison with \
-         the talks; its decoder is not dominated; for new G-buffers an octahedral code is more \
-         accurate per bit",
+         the talks; for new G-buffers an octahedral code is more accurate per bit",
+    ),
+    (
+        "decode_normal_xy_fp16",
+        &[UNREAL_XYZ10, URP_SNORM8],
+        "as its encoder: Killzone 2's layout, kept for comparison; its z rebuilt near the \
+         horizon is what the engines' linear formats avoid",
     ),
     (
         "encode_normal_oct24_fast",
@@ -40,6 +54,31 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
         "the same 4095-step grid as Bevy's, max error larger in the sixth digit; the extra instructions \
          are the bad-input contract (NaN → +z, infinities, subnormals, any finite length without \
          overflow): NaN gives an undefined code in both peers, and the zero vector in Bevy's",
+    ),
+    (
+        "encode_normal_xyz10",
+        &[BEVY_OCT24, MESHOPT_K12, UNREAL_XYZ10],
+        "kept as Unreal's and Bevy's RGB10A2 layout (a linear format: filtering and blending \
+         stay meaningful); oct24 is more accurate in fewer bits. Against the engines' own \
+         n·0.5 + 0.5: the same codes for unit inputs away from a rounding tie \
+         (tests/normal_xyz10.rs), the extra instructions are the bad-input contract and the \
+         renormalisation (the engines' formula takes a unit normal on trust), and the max error \
+         differs in the seventh digit",
+    ),
+    (
+        "decode_normal_xyz10",
+        &[UNREAL_XYZ10],
+        "the same directions (either decoder reads either's bytes, tests/normal_xyz10.rs), one \
+         SPIR-V instruction more: this one builds the odd-integer vector 2k − 1023 exactly, the \
+         engines' rounds k/1023·2 − 1; the max error differs in the seventh digit, through the \
+         encoder",
+    ),
+    (
+        "encode_normal_snorm8",
+        &[BEVY_OCT24, MESHOPT_K12],
+        "kept as URP's snorm8 layout (linear: filtering and blending stay meaningful); an \
+         octahedral code is more accurate in the same bits. Against URP's own write it is not \
+         dominated on these directions",
     ),
     (
         "view_z_from_reversed_depth",
@@ -62,6 +101,8 @@ const BEVY_DEPTH: &str = "peer:bevy −near/d (negated)";
 const MESHOPT_K8: &str = "peer:meshopt oct K=8";
 const MESHOPT_K12: &str = "peer:meshopt oct K=12";
 const MESHOPT_K16: &str = "peer:meshopt oct K=16";
+const UNREAL_XYZ10: &str = "peer:unreal/bevy xyz10 (n·0.5 + 0.5)";
+const URP_SNORM8: &str = "peer:urp snorm8";
 
 fn spirv(source: &str, function: &str) -> f64 {
     spirv_instruction_count(source, function)
@@ -245,13 +286,27 @@ fn peers_dominate_only_the_listed_functions_on_spirv_count() {
          DOMINATED (with the reason each is kept) and run `bash .ci/docs`"
     );
     let shipped = points.iter().filter(|p| peers::is_shipped(&p.name)).count();
-    let point = |name: &str| {
-        let p = points.iter().find(|p| p.name == name).expect("measured");
+    // A peer's row in the family of the shipped function it is compared with (a peer codec has
+    // an encode and a decode row under one name).
+    let point = |name: &str, family: &str| {
+        let p = points
+            .iter()
+            .find(|p| p.name == name && p.family == family)
+            .expect("measured");
         format!("max {:.4e}, SPIR-V {}", p.max_error, p.cost)
+    };
+    let family_of = |f: &str| {
+        points
+            .iter()
+            .find(|p| p.name == f)
+            .expect("measured")
+            .family
+            .clone()
     };
     let mut body = format!(
         "Peers: Bevy's G-buffer oct24 and `−near/d`, meshoptimizer's octahedral filter (K = 8, \
-         12, 16), the JCGT survey's precise encoder (f32 dot), LYGIA's `linearizeDepth` and \
+         12, 16), the JCGT survey's precise encoder (f32 dot), Unreal's and Bevy's RGB10A2 \
+         `n·0.5 + 0.5`, URP's snorm8 target, LYGIA's `linearizeDepth` and \
          `depth2viewZ`, re-implemented in WGSL (`tests/baselines/peer_*.wgsl`) and measured on \
          errplot's quick inputs (2^16 Fibonacci directions, every 24-bit depth code, 2^20 \
          reversed float depths) on {}. On (max error, SPIR-V count), with no more stored bits, {} of \
@@ -260,13 +315,17 @@ fn peers_dominate_only_the_listed_functions_on_spirv_count() {
         DOMINATED.len()
     );
     for (f, by, why) in DOMINATED {
+        let family = family_of(f);
         let by: Vec<String> = by
             .iter()
-            .map(|b| format!("{} ({})", b.trim_start_matches(peers::PREFIX), point(b)))
+            .map(|b| {
+                let name = b.trim_start_matches(peers::PREFIX);
+                format!("{name} ({})", point(b, &family))
+            })
             .collect();
         body.push_str(&format!(
             "- `{f}` ({}), by {}: {why}.\n",
-            point(f),
+            point(f, &family),
             by.join("; ")
         ));
     }

@@ -17,6 +17,10 @@ pub const BEVY: &str = include_str!("../../../tests/baselines/peer_bevy.wgsl");
 pub const MESHOPT: &str = include_str!("../../../tests/baselines/peer_meshopt.wgsl");
 /// The JCGT 2014 survey's precise encoder as published (largest f32 dot) and its snorm decode.
 pub const SURVEY: &str = include_str!("../../../tests/baselines/peer_survey.wgsl");
+/// Unreal 5's GBufferA normal (`n·0.5 + 0.5` in RGB10A2), which Bevy's normal prepass stores too.
+pub const UNREAL: &str = include_str!("../../../tests/baselines/peer_unreal.wgsl");
+/// Unity URP's default normal target (xyz in RGBA8 snorm).
+pub const URP: &str = include_str!("../../../tests/baselines/peer_urp.wgsl");
 /// LYGIA's `linearizeDepth` and `depth2viewZ` (OpenGL conventions, finite far).
 pub const LYGIA: &str = include_str!("../../../tests/baselines/peer_lygia.wgsl");
 
@@ -38,7 +42,7 @@ pub struct NormalPeer {
 }
 
 /// The normal-codec peers.
-pub const NORMAL_PEERS: [NormalPeer; 7] = [
+pub const NORMAL_PEERS: [NormalPeer; 9] = [
     NormalPeer {
         name: "bevy gbuffer oct24 (×4095)",
         bits: 24,
@@ -87,6 +91,20 @@ pub const NORMAL_PEERS: [NormalPeer; 7] = [
         source: SURVEY,
         encode: "peer_survey_precise32_encode",
         decode: "peer_survey_precise32_decode",
+    },
+    NormalPeer {
+        name: "unreal/bevy xyz10 (n·0.5 + 0.5)",
+        bits: 30,
+        source: UNREAL,
+        encode: "peer_unreal_gbuffer_normal_encode",
+        decode: "peer_unreal_gbuffer_normal_decode",
+    },
+    NormalPeer {
+        name: "urp snorm8",
+        bits: 24,
+        source: URP,
+        encode: "peer_urp_normal_encode",
+        decode: "peer_urp_normal_decode",
     },
 ];
 
