@@ -60,6 +60,9 @@ pub struct Codec {
     pub bits: u32,
     /// The code's fields, for counting how many steps apart two codes are.
     pub lanes: &'static [Lane],
+    /// The engines (and talks) that store this form, for the README's table (`—`: none found in
+    /// `research/engines.md`'s survey).
+    pub stored_by: &'static str,
     /// Whether it encodes view-space normals of one hemisphere only (`z ≥ 0`): its errors are
     /// measured over that hemisphere.
     pub hemisphere: bool,
@@ -117,9 +120,10 @@ oct_refs!(12, oct24_ref_p, oct24_ref_r, oct24_ref_d);
 oct_refs!(16, oct32_ref_p, oct32_ref_r, oct32_ref_d);
 
 macro_rules! oct_codec {
-    ($name:literal, $bits:literal, $lanes:expr, $enc:ident, $dec:ident, $twin:path, $twin_dec:path, $r:ident, $d:ident, $t:expr) => {
+    ($name:literal, $stored:literal, $bits:literal, $lanes:expr, $enc:ident, $dec:ident, $twin:path, $twin_dec:path, $r:ident, $d:ident, $t:expr) => {
         Codec {
             name: $name,
+            stored_by: $stored,
             bits: 2 * $bits,
             lanes: $lanes,
             hemisphere: false,
@@ -141,6 +145,7 @@ macro_rules! oct_codec {
 pub const CODECS: [Codec; 12] = [
     Codec {
         name: "xyz8",
+        stored_by: "Resistance 2; Godot 4 (its best-fit encoder, this decoder)",
         bits: 24,
         lanes: &UNORM8X3,
         hemisphere: false,
@@ -155,6 +160,7 @@ pub const CODECS: [Codec; 12] = [
     },
     Codec {
         name: "xy fp16",
+        stored_by: "Killzone 2",
         bits: 32,
         lanes: &F16X2,
         hemisphere: true,
@@ -169,6 +175,7 @@ pub const CODECS: [Codec; 12] = [
     },
     oct_codec!(
         "oct16",
+        "Unreal 5 mobile deferred (8:8)",
         8,
         &OCT8,
         encode_normal_oct16,
@@ -181,6 +188,7 @@ pub const CODECS: [Codec; 12] = [
     ),
     oct_codec!(
         "oct16 fast",
+        "Unreal 5 mobile deferred (8:8)",
         8,
         &OCT8,
         encode_normal_oct16_fast,
@@ -193,6 +201,7 @@ pub const CODECS: [Codec; 12] = [
     ),
     oct_codec!(
         "oct24",
+        "Bevy deferred (the same word)",
         12,
         &OCT12,
         encode_normal_oct24,
@@ -205,6 +214,7 @@ pub const CODECS: [Codec; 12] = [
     ),
     oct_codec!(
         "oct24 fast",
+        "Bevy deferred (the same word)",
         12,
         &OCT12,
         encode_normal_oct24_fast,
@@ -217,6 +227,7 @@ pub const CODECS: [Codec; 12] = [
     ),
     oct_codec!(
         "oct32",
+        "—",
         16,
         &OCT16,
         encode_normal_oct32,
@@ -229,6 +240,7 @@ pub const CODECS: [Codec; 12] = [
     ),
     oct_codec!(
         "oct32 fast",
+        "—",
         16,
         &OCT16,
         encode_normal_oct32_fast,
@@ -241,6 +253,7 @@ pub const CODECS: [Codec; 12] = [
     ),
     Codec {
         name: "hemioct24",
+        stored_by: "—",
         bits: 24,
         lanes: &OCT12,
         hemisphere: true,
@@ -255,6 +268,7 @@ pub const CODECS: [Codec; 12] = [
     },
     Codec {
         name: "hemioct24 fast",
+        stored_by: "—",
         bits: 24,
         lanes: &OCT12,
         hemisphere: true,
@@ -269,6 +283,7 @@ pub const CODECS: [Codec; 12] = [
     },
     Codec {
         name: "xyz10",
+        stored_by: "Unreal 5 GBufferA; Bevy normal prepass",
         bits: 30,
         lanes: &UNORM10X3,
         hemisphere: false,
@@ -283,6 +298,7 @@ pub const CODECS: [Codec; 12] = [
     },
     Codec {
         name: "snorm8",
+        stored_by: "Unity URP (default target)",
         bits: 24,
         lanes: &SNORM8X3,
         hemisphere: false,
