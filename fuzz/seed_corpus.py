@@ -152,3 +152,12 @@ for ch in CHANNELS + [(NINF, NZ, NSUB, INF), (f(-0.999), f(-1.5), f(126.51 / 127
 for v in VECS:
     for e in (23, 24, 25, 26):
         write("encoders", e, words(*v))
+# decoders (appended): 23 decode_normal_oct24_unity, 24 _unity_unorm. encoders (appended):
+# 27 encode_normal_oct24_unity, 28 _unity_fast, 29 _unity_unorm.
+for c in NCODES + [0x77FFFF, 0x880000]:
+    write("decoders", 23, words(c))
+for ch in CHANNELS:
+    write("decoders", 24, words(*ch))
+for v in VECS:
+    for e in (27, 28, 29):
+        write("encoders", e, words(*v))

@@ -263,6 +263,7 @@ const NON_FINITE_OPERANDS: &[&str] = &[
     "bad_input_lpp_cosines",
     "decode_normal_hemioct24_unorm",
     "decode_normal_oct16_unorm",
+    "decode_normal_oct24_unity_unorm",
     "decode_normal_oct24_unorm",
     "decode_normal_oct32_unorm",
     "decode_normal_xy_fp16",

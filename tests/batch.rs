@@ -342,6 +342,12 @@ fn normal_decoders_every_24_bit_code() {
     );
     check!(
         &codes,
+        oct::decode_normal_oct24_unity,
+        bn::decode_normal_oct24_unity,
+        decode_normal_oct24_unity_with
+    );
+    check!(
+        &codes,
         snorm8::decode_normal_snorm8,
         bn::decode_normal_snorm8,
         decode_normal_snorm8_with
@@ -405,6 +411,12 @@ fn normal_unorm_decoders_every_24_bit_code() {
         decode_normal_xyz10_unorm_with
     );
     let ch = unorm_channels(&(0..1u32 << 24).collect::<Vec<_>>());
+    check!(
+        &ch,
+        oct::decode_normal_oct24_unity_unorm,
+        bn::decode_normal_oct24_unity_unorm,
+        decode_normal_oct24_unity_unorm_with
+    );
     check!(
         &ch,
         xyz8::decode_normal_xyz8_unorm,
@@ -508,6 +520,12 @@ fn normal_rounding_encoders() {
     );
     check!(
         v,
+        oct::encode_normal_oct24_unity_fast,
+        bn::encode_normal_oct24_unity_fast,
+        encode_normal_oct24_unity_fast_with
+    );
+    check!(
+        v,
         snorm8::encode_normal_snorm8,
         bn::encode_normal_snorm8,
         encode_normal_snorm8_with
@@ -556,6 +574,18 @@ fn normal_unorm_and_generic_encoders() {
         xyz8::encode_normal_xyz8_unorm,
         bn::encode_normal_xyz8_unorm,
         encode_normal_xyz8_unorm_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct24_unity,
+        bn::encode_normal_oct24_unity,
+        encode_normal_oct24_unity_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct24_unity_unorm,
+        bn::encode_normal_oct24_unity_unorm,
+        encode_normal_oct24_unity_unorm_with
     );
     check!(
         v,

@@ -398,3 +398,128 @@ fn straight_line_precise_encoder_equals_the_loop_it_replaced() {
         }
     }
 }
+
+/// Unity's layout is oct24's grid in other bytes: on the adapter, the Unity encoders write
+/// `unity_bytes` of the oct24 encoders' codes bit for bit (precise and rounding, over 2^20
+/// Fibonacci directions, the adversarial set and the bad inputs), the Unity decoder reads every
+/// 2^24 code exactly as `decode_normal_oct24` reads its `unity_word`, and the Rust twins agree —
+/// so every oct24 figure and bound holds for the Unity forms.
+#[test]
+fn unity_layout_is_oct24_in_unitys_bytes() {
+    use prepass::harness::Arg;
+    use prepass::wgsl::NORMAL_OCT;
+    let inputs: Vec<[f32; 3]> = fibonacci()[..1 << 20]
+        .iter()
+        .copied()
+        .chain(adversarial_directions())
+        .chain(bad_inputs().into_iter().map(|c| c.0))
+        .collect();
+    let n = inputs.len() as u64;
+    for (unity, plain, twin) in [
+        (
+            "encode_normal_oct24_unity",
+            "encode_normal_oct24",
+            oct::encode_normal_oct24_unity as fn(glam::Vec3) -> u32,
+        ),
+        (
+            "encode_normal_oct24_unity_fast",
+            "encode_normal_oct24_fast",
+            oct::encode_normal_oct24_unity_fast,
+        ),
+    ] {
+        let got = common::run_kernel(NORMAL_OCT, unity, &[Arg::column(&inputs)], n).into_words();
+        let want = common::run_kernel(NORMAL_OCT, plain, &[Arg::column(&inputs)], n).into_words();
+        for (i, v) in inputs.iter().enumerate() {
+            assert_eq!(got[i], oct::unity_bytes(want[i]), "{unity} at {v:?}");
+            if common::evaluates_like_the_twins() {
+                assert_eq!(got[i], twin(glam::Vec3::from(*v)), "{unity}: twin at {v:?}");
+            }
+        }
+    }
+    let codes: Vec<u32> = (0..1u32 << 24).map(|p| p | (p << 24)).collect();
+    let words: Vec<u32> = codes.iter().map(|&p| oct::unity_word(p)).collect();
+    let m = codes.len() as u64;
+    let got = common::run_kernel(
+        NORMAL_OCT,
+        "decode_normal_oct24_unity",
+        &[Arg::column(&codes)],
+        m,
+    );
+    let want = common::run_kernel(NORMAL_OCT, "decode_normal_oct24", &[Arg::column(&words)], m);
+    let bits = |v: &[f32; 3]| v.map(f32::to_bits);
+    let differ = (0..codes.len()).find(|&i| bits(&got.as_vec3()[i]) != bits(&want.as_vec3()[i]));
+    assert!(
+        differ.is_none(),
+        "decode_normal_oct24_unity differs at {differ:?}"
+    );
+    for p in (0..1u32 << 24).step_by(97) {
+        assert_eq!(
+            oct::decode_normal_oct24_unity(p),
+            oct::decode_normal_oct24(oct::unity_word(p))
+        );
+        assert_eq!(oct::unity_word(oct::unity_bytes(p)), p, "{p:#x}");
+    }
+}
+
+/// Unity's writer as its HLSL computes it (`PackNormalOctQuadEncode`: `n·rcp(max(‖n‖₁, 1e-6))`,
+/// the lower half folded by `t = saturate(−z)`; `saturate(o·0.5 + 0.5)`; `PackFloat2To888`'s
+/// `u32(f·4095.5)`), `rcp` taken as a correctly rounded `1/x`, in f32: the engine's own
+/// encoder, for comparison.
+fn unity_engine_encode(n: [f32; 3]) -> u32 {
+    let r = 1.0 / (n[0].abs() + n[1].abs() + n[2].abs()).max(1e-6);
+    let m = n.map(|c| c * r);
+    let t = (-m[2]).clamp(0.0, 1.0);
+    let fold = |a: f32| a + if a >= 0.0 { t } else { -t };
+    let f = [fold(m[0]), fold(m[1])].map(|o| (o * 0.5 + 0.5).clamp(0.0, 1.0));
+    let i = f.map(|x| (x * 4095.5) as u32);
+    oct::unity_bytes(i[0] | (i[1] << 12))
+}
+
+/// Interop with Unity's normal buffer: (1) every one of the 2^24 byte triples reads, with
+/// prepass, in the direction Unity's `Unpack888ToFloat2` + `UnpackNormalOctQuadEncode` gives it
+/// (f64, to the angle's own rounding); (2) bytes prepass's precise encoder writes, read by
+/// Unity's decoder, stay within oct24's stated round-trip bound; (3) on the same directions,
+/// Unity's own writer errs more than prepass's precise and rounding encoders (the figures are
+/// printed).
+#[test]
+fn reads_and_writes_unitys_normal_buffer() {
+    use prepass::precision::metrics::angle_degrees;
+    let worst_read = (0..1u32 << 24)
+        .map(|p| {
+            angle_degrees(
+                oct::exact::decode(oct::unity_word(p), 12),
+                oct::exact::unity_decode(p),
+            )
+        })
+        .fold(0f64, f64::max);
+    assert_within!(
+        worst_read,
+        1e-12,
+        "the f64 angle's own rounding (about 1e-15°), as in sweep::normal::decode_angle_deg",
+        "angle between prepass's and Unity's reading of the same bytes, degrees"
+    );
+    let dirs = &fibonacci()[..1 << 20];
+    let err = |enc: &dyn Fn([f32; 3]) -> u32| {
+        dirs.iter()
+            .map(|&v| angle_degrees(v.map(f64::from), oct::exact::unity_decode(enc(v))))
+            .fold(0f64, f64::max)
+    };
+    let precise = err(&|v| oct::encode_normal_oct24_unity(glam::Vec3::from(v)));
+    let fast = err(&|v| oct::encode_normal_oct24_unity_fast(glam::Vec3::from(v)));
+    let unity = err(&unity_engine_encode);
+    eprintln!(
+        "Unity 12:12 layout, 2^20 directions read by Unity's decoder: prepass precise max \
+         {precise:.6}°, rounding {fast:.6}°, Unity's writer (×4095.5) {unity:.6}°"
+    );
+    let (_, max_t) = codec("oct24").target.unwrap();
+    assert_within!(
+        precise,
+        max_t * 1.02,
+        "Codec::target of oct24: within 2% of the f64 reproduction",
+        "prepass's precise bytes read by Unity's decoder, max degrees"
+    );
+    assert!(
+        precise < unity && fast < unity,
+        "prepass's encoders ({precise}°, {fast}°) should err less than Unity's writer ({unity}°)"
+    );
+}

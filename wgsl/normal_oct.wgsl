@@ -275,3 +275,48 @@ fn encode_normal_oct32_unorm(n: vec3<f32>) -> vec4<f32> {
 fn decode_normal_oct32_unorm(c: vec4<f32>) -> vec3<f32> {
     return oct_decode(oct_unorm_bytes(c), 16u);
 }
+
+// ---- 2 x 12 bits in Unity's bytes (HDRP's normal buffer, URP's accurate G-buffer normals) ----
+// Unity (com.unity.render-pipelines.core, ShaderLibrary/Packing.hlsl: PackFloat2To888 and
+// Unpack888ToFloat2 around PackNormalOctQuadEncode) stores oct24's grid -- code k stands for
+// k/4095 in [0, 1], read back as k/4095 * 2 - 1 -- in other bytes: byte 0 the low 8 bits of u,
+// byte 1 the low 8 bits of v, byte 2 the high 4 bits of u | the high 4 bits of v << 4. These
+// functions are oct24's with that byte order; byte 3 is left zero (HDRP keeps the perceptual
+// smoothness there) and ignored. Unity's own quantiser, u32(f * 4095.5), is neither round nor
+// floor; the encoders here write the closest code (or the rounded one, _fast).
+
+// oct24's word (u in bits 0-11, v in 12-23) in Unity's byte order.
+fn oct_unity_bytes(p: u32) -> u32 {
+    let u = p & 0xfffu;
+    let v = (p >> 12u) & 0xfffu;
+    return (u & 0xffu) | ((v & 0xffu) << 8u) | ((u >> 8u) << 16u) | ((v >> 8u) << 20u);
+}
+
+// Unity's bytes as oct24's word; byte 3 ignored.
+fn oct_unity_word(p: u32) -> u32 {
+    let u = (p & 0xffu) | (((p >> 16u) & 0xfu) << 8u);
+    let v = ((p >> 8u) & 0xffu) | (((p >> 20u) & 0xfu) << 8u);
+    return u | (v << 12u);
+}
+
+// The 2x12-bit code whose direction is closest to n, in Unity's bytes.
+fn encode_normal_oct24_unity(n: vec3<f32>) -> u32 {
+    return oct_unity_bytes(encode_normal_oct24(n));
+}
+// The 2x12-bit code by rounding each axis, in Unity's bytes.
+fn encode_normal_oct24_unity_fast(n: vec3<f32>) -> u32 {
+    return oct_unity_bytes(encode_normal_oct24_fast(n));
+}
+// The unit vector of a 2x12-bit code in Unity's bytes; byte 3 is ignored.
+fn decode_normal_oct24_unity(p: u32) -> vec3<f32> {
+    return decode_normal_oct24(oct_unity_word(p));
+}
+// Render-target form: the rgba8unorm channels to write (alpha 0: Unity's smoothness goes there).
+fn encode_normal_oct24_unity_unorm(n: vec3<f32>) -> vec4<f32> {
+    return unpack4x8unorm(encode_normal_oct24_unity(n));
+}
+// The unit vector from sampled rgba8unorm channels in Unity's bytes (bytes rounded back; alpha
+// ignored).
+fn decode_normal_oct24_unity_unorm(c: vec4<f32>) -> vec3<f32> {
+    return decode_normal_oct24_unity(oct_unorm_bytes(c));
+}

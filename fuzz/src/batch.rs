@@ -390,4 +390,34 @@ pub const BATCH: &[Entry] = &[
         bn::decode_normal_snorm8_snorm,
         decode_normal_snorm8_snorm_with
     ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct24_unity,
+        bn::encode_normal_oct24_unity,
+        encode_normal_oct24_unity_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct24_unity_fast,
+        bn::encode_normal_oct24_unity_fast,
+        encode_normal_oct24_unity_fast_with
+    ),
+    entry!(
+        u32,
+        oct::decode_normal_oct24_unity,
+        bn::decode_normal_oct24_unity,
+        decode_normal_oct24_unity_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct24_unity_unorm,
+        bn::encode_normal_oct24_unity_unorm,
+        encode_normal_oct24_unity_unorm_with
+    ),
+    entry!(
+        [f32; 4],
+        oct::decode_normal_oct24_unity_unorm,
+        bn::decode_normal_oct24_unity_unorm,
+        decode_normal_oct24_unity_unorm_with
+    ),
 ];

@@ -222,6 +222,20 @@ pub const DECODERS: &[Entry] = &[
             assert_eq!(v, snorm8::decode_normal_snorm8(snorm8_code(c)), "{c:?}");
         },
     },
+    Entry {
+        name: "normal::oct::decode_normal_oct24_unity",
+        check: |i| {
+            let p = i.u32();
+            let v = oct::decode_normal_oct24_unity(p);
+            assert_unit(v, format_args!("{p:#x}"));
+            assert_eq!(
+                v,
+                oct::decode_normal_oct24(oct::unity_word(p)),
+                "{p:#x}: oct24's word"
+            );
+        },
+    },
+    codec!(unorm_decoder; oct::decode_normal_oct24_unity_unorm, oct::decode_normal_oct24_unity),
 ];
 
 /// A code decoder with `bits` bits of code: a finite unit vector for every pattern, the bits

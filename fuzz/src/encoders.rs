@@ -175,6 +175,9 @@ pub const ENCODERS: &[Entry] = &[
             );
         },
     },
+    codec!(encoder; oct::encode_normal_oct24_unity, 24),
+    codec!(encoder; oct::encode_normal_oct24_unity_fast, 24),
+    codec!(unorm_form; oct::encode_normal_oct24_unity_unorm, oct::encode_normal_oct24_unity),
 ];
 
 /// A fixed-size encoder ([`check_encoder`]) on a direction read from the input.

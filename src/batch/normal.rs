@@ -1,4 +1,4 @@
-//! Batch twins of the normal encodings ([`crate::normal`]): xyz8, xyz10, snorm8, xy FP16, octahedral 16/24/32
+//! Batch twins of the normal encodings ([`crate::normal`]): xyz8, xyz10, snorm8, xy FP16, octahedral 16/24/32 (24 also in Unity's byte order)
 //! (precise and rounding encoders, and the generic `bits` forms), hemi-octahedral 24, and every
 //! `_unorm` render-target form. Names, the slice contract and the vectorisation: [`crate::batch`].
 //!
@@ -429,6 +429,35 @@ fn xyz8_decode_unorm(c: [f32; 4]) -> Vec3 {
     xyz8_decode_lane(unorm_bytes_lane(c))
 }
 #[inline(always)]
+fn unity_bytes_lane(p: u32) -> u32 {
+    let (u, v) = (p & 0xfff, (p >> 12) & 0xfff);
+    (u & 0xff) | ((v & 0xff) << 8) | ((u >> 8) << 16) | ((v >> 8) << 20)
+}
+#[inline(always)]
+fn unity_word_lane(p: u32) -> u32 {
+    ((p & 0xff) | (((p >> 16) & 0xf) << 8)) | ((((p >> 8) & 0xff) | (((p >> 20) & 0xf) << 8)) << 12)
+}
+#[inline(always)]
+fn oct24_unity_precise(n: Vec3) -> u32 {
+    unity_bytes_lane(oct_precise_fixed::<12>(n))
+}
+#[inline(always)]
+fn oct24_unity_round(n: Vec3) -> u32 {
+    unity_bytes_lane(oct_round_fixed::<12>(n))
+}
+#[inline(always)]
+fn oct24_unity_decode(p: u32) -> Vec3 {
+    oct_decode_fixed::<12>(unity_word_lane(p))
+}
+#[inline(always)]
+fn oct24_unity_encode_unorm(n: Vec3) -> [f32; 4] {
+    unpack4x8unorm_lane(oct24_unity_precise(n))
+}
+#[inline(always)]
+fn oct24_unity_decode_unorm(c: [f32; 4]) -> Vec3 {
+    oct24_unity_decode(unorm_bytes_lane(c))
+}
+#[inline(always)]
 fn xyz10_encode_unorm(n: Vec3) -> [f32; 4] {
     let p = xyz10_encode_lane(n);
     let c = |k: u32| (k & 0x3ff) as f32 / 1023.0;
@@ -512,6 +541,45 @@ batch_fn!(
     (), [f32; 4] => Vec3,
     scalar: xyz8::decode_normal_xyz8_unorm,
     lane: xyz8_decode_unorm,
+);
+
+batch_fn!(
+    /// Batch [`oct::encode_normal_oct24_unity`].
+    encode_normal_oct24_unity, encode_normal_oct24_unity_with, "normal::encode_normal_oct24_unity",
+    (), Vec3 => u32,
+    scalar: oct::encode_normal_oct24_unity,
+    lane: oct24_unity_precise,
+);
+batch_fn!(
+    /// Batch [`oct::encode_normal_oct24_unity_fast`].
+    encode_normal_oct24_unity_fast, encode_normal_oct24_unity_fast_with,
+    "normal::encode_normal_oct24_unity_fast",
+    (), Vec3 => u32,
+    scalar: oct::encode_normal_oct24_unity_fast,
+    lane: oct24_unity_round,
+);
+batch_fn!(
+    /// Batch [`oct::decode_normal_oct24_unity`].
+    decode_normal_oct24_unity, decode_normal_oct24_unity_with, "normal::decode_normal_oct24_unity",
+    (), u32 => Vec3,
+    scalar: oct::decode_normal_oct24_unity,
+    lane: oct24_unity_decode,
+);
+batch_fn!(
+    /// Batch [`oct::encode_normal_oct24_unity_unorm`].
+    encode_normal_oct24_unity_unorm, encode_normal_oct24_unity_unorm_with,
+    "normal::encode_normal_oct24_unity_unorm",
+    (), Vec3 => [f32; 4],
+    scalar: oct::encode_normal_oct24_unity_unorm,
+    lane: oct24_unity_encode_unorm,
+);
+batch_fn!(
+    /// Batch [`oct::decode_normal_oct24_unity_unorm`].
+    decode_normal_oct24_unity_unorm, decode_normal_oct24_unity_unorm_with,
+    "normal::decode_normal_oct24_unity_unorm",
+    (), [f32; 4] => Vec3,
+    scalar: oct::decode_normal_oct24_unity_unorm,
+    lane: oct24_unity_decode_unorm,
 );
 
 batch_fn!(

@@ -191,9 +191,69 @@ oct_size!(
     "2×16 bits (all of RGBA8, or RG16)"
 );
 
+/// oct24's word (u in bits 0–11, v in 12–23) in Unity's byte order: byte 0 the low 8 bits of u,
+/// byte 1 the low 8 bits of v, byte 2 the high 4 bits of u | the high 4 bits of v << 4 (Unity's
+/// `PackFloat2To888`, `com.unity.render-pipelines.core/ShaderLibrary/Packing.hlsl`). Bits 24–31
+/// of `p` are dropped.
+pub fn unity_bytes(p: u32) -> u32 {
+    let (u, v) = (p & 0xfff, (p >> 12) & 0xfff);
+    (u & 0xff) | ((v & 0xff) << 8) | ((u >> 8) << 16) | ((v >> 8) << 20)
+}
+
+/// Unity's bytes as oct24's word, the inverse of [`unity_bytes`]; byte 3 ignored.
+pub fn unity_word(p: u32) -> u32 {
+    let u = (p & 0xff) | (((p >> 16) & 0xf) << 8);
+    let v = ((p >> 8) & 0xff) | (((p >> 20) & 0xf) << 8);
+    u | (v << 12)
+}
+
+/// [`encode_normal_oct24`] in Unity's bytes ([`unity_bytes`]): the 2×12-bit code whose direction
+/// is closest to `n`, as HDRP's normal buffer and URP's accurate G-buffer normals lay it out
+/// (the same 4095-step grid, read back by Unity as `k/4095·2 − 1`). Error bound and bad input:
+/// [`encode_normal_oct24`]'s.
+pub fn encode_normal_oct24_unity(n: Vec3) -> u32 {
+    unity_bytes(encode_normal_oct24(n))
+}
+
+/// [`encode_normal_oct24_fast`] in Unity's bytes.
+pub fn encode_normal_oct24_unity_fast(n: Vec3) -> u32 {
+    unity_bytes(encode_normal_oct24_fast(n))
+}
+
+/// Decode a 2×12-bit code in Unity's bytes (byte 3 ignored): [`decode_normal_oct24`] of
+/// [`unity_word`]`(p)`, the direction Unity's `UnpackNormalOctQuadEncode` gives the same bytes.
+pub fn decode_normal_oct24_unity(p: u32) -> Vec3 {
+    decode_normal_oct24(unity_word(p))
+}
+
+/// Render-target form of [`encode_normal_oct24_unity`]: the unorm8 channels `byte/255`, alpha 0.
+pub fn encode_normal_oct24_unity_unorm(n: Vec3) -> [f32; 4] {
+    crate::depth24::unpack4x8unorm(encode_normal_oct24_unity(n))
+}
+
+/// Decode sampled unorm8 channels in Unity's bytes: bytes rounded back
+/// (`round(255·clamp(c, 0, 1))`, NaN → 0), then [`decode_normal_oct24_unity`].
+pub fn decode_normal_oct24_unity_unorm(c: [f32; 4]) -> Vec3 {
+    decode_normal_oct24_unity(super::xyz8::unorm_bytes(c))
+}
+
 /// Exact references: the survey's algorithms in f64.
 pub mod exact {
     use super::max_code;
+
+    /// The direction Unity's reader gives bytes `p` in its layout, in f64: `Unpack888ToFloat2`
+    /// (`k/4095`), `·2 − 1`, then `UnpackNormalOctQuadEncode` (`z = 1 − |x| − |y|`, `t =
+    /// max(−z, 0)`, `x −= t` where `x ≥ 0` else `+= t`, likewise `y`; normalised). The interop
+    /// reference for [`super::decode_normal_oct24_unity`].
+    pub fn unity_decode(p: u32) -> [f64; 3] {
+        let w = super::unity_word(p);
+        let f = |k: u32| f64::from(k) / 4095.0 * 2.0 - 1.0;
+        let (x, y) = (f(w & 0xfff), f(w >> 12));
+        let z = 1.0 - x.abs() - y.abs();
+        let t = (-z).max(0.0);
+        let unfold = |a: f64| if a >= 0.0 { a - t } else { a + t };
+        crate::normal::exact::unit([unfold(x), unfold(y), z]).expect("never the zero vector")
+    }
 
     /// The direction code `p` stands for, in f64.
     pub fn decode(p: u32, bits: u32) -> [f64; 3] {

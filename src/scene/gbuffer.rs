@@ -154,7 +154,12 @@ impl Scene {
         let rough = self.roughness == RoughnessChoice::Log8;
         let alpha_free = matches!(
             self.normal.encoding,
-            Some(NormalEncoding::Xyz8 | NormalEncoding::Oct24 | NormalEncoding::Hemioct24)
+            Some(
+                NormalEncoding::Xyz8
+                    | NormalEncoding::Oct24
+                    | NormalEncoding::Hemioct24
+                    | NormalEncoding::Oct24Unity
+            )
         );
         if let Some(e) = self.normal.encoding {
             let a = if rough && alpha_free {
@@ -191,6 +196,12 @@ impl Scene {
                 NormalEncoding::Xyz10 => (
                     TargetFormat::Rgb10a2Unorm,
                     "rgb: normal xyz10 (10 bits each), a: 2 bits free".into(),
+                ),
+                NormalEncoding::Oct24Unity => (
+                    TargetFormat::Rgba8Unorm,
+                    format!(
+                        "rg: low 8 bits of octahedral u, v; b: their high 4 bits (Unity's order), {a}"
+                    ),
                 ),
                 NormalEncoding::Snorm8 => (
                     TargetFormat::Rgba8Snorm,

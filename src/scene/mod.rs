@@ -98,11 +98,14 @@ pub enum NormalEncoding {
     Xyz10,
     /// x, y, z as snorm8 (Unity URP's default normal target), alpha free.
     Snorm8,
+    /// Octahedral 2×12 bits in Unity's byte order (HDRP's normal buffer, URP's accurate
+    /// G-buffer normals): oct24's grid, alpha free.
+    Oct24Unity,
 }
 
 impl NormalEncoding {
     /// Every encoding.
-    pub const ALL: [NormalEncoding; 8] = [
+    pub const ALL: [NormalEncoding; 9] = [
         Self::Xyz8,
         Self::XyFp16,
         Self::Oct16,
@@ -111,6 +114,7 @@ impl NormalEncoding {
         Self::Hemioct24,
         Self::Xyz10,
         Self::Snorm8,
+        Self::Oct24Unity,
     ];
 
     /// Whether a cheaper rounding encoder (`_fast`) exists beside the precise one.

@@ -60,6 +60,13 @@ fn normal_roots(e: NormalEncoding, fast: bool) -> [&'static str; 4] {
             "encode_normal_xyz10_unorm",
             "decode_normal_xyz10_unorm",
         ),
+        NormalEncoding::Oct24Unity => (
+            "encode_normal_oct24_unity",
+            "encode_normal_oct24_unity_fast",
+            "decode_normal_oct24_unity",
+            "encode_normal_oct24_unity_unorm",
+            "decode_normal_oct24_unity_unorm",
+        ),
         NormalEncoding::Snorm8 => (
             "encode_normal_snorm8",
             "encode_normal_snorm8",

@@ -1,7 +1,10 @@
-//! `wgsl/normal_oct.wgsl` and `normal::oct`: octahedral normals in 16, 24 and 32 bits, and the
-//! generic Rust-only octahedral functions.
+//! `wgsl/normal_oct.wgsl` and `normal::oct`: octahedral normals in 16, 24 and 32 bits (24 also in
+//! Unity's byte order), and the generic Rust-only octahedral functions.
 
 use super::normal::{B127, B247};
+
+/// The unorm8 channel of byte 0x77, `119/255` (byte 2 of +z in Unity's order).
+const B119: f32 = 119.0 / 255.0;
 use super::{Func, INF, NAN, NEG_NAN, Row, SNAN, SUB_MAX, SUB_MIN, V};
 use prepass::normal::oct;
 
@@ -39,6 +42,11 @@ pub const FUNCS: &[Func] = &[
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct24(u32) -> Vec3),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24_unorm(vec3) -> Vec4),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct24_unorm(rgba) -> Vec3),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24_unity(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24_unity_fast(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct24_unity(u32) -> Vec3),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24_unity_unorm(vec3) -> Vec4),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct24_unity_unorm(rgba) -> Vec3),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct32(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct32_fast(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct32(u32) -> Vec3),
@@ -67,6 +75,14 @@ pub const FUNCS: &[Func] = &[
 ];
 
 pub const WGSL_HELPERS: &[(&str, &str)] = &[
+    (
+        "oct_unity_bytes",
+        "private to normal_oct.wgsl: oct24's word in Unity's byte order, behind every Unity encoder row",
+    ),
+    (
+        "oct_unity_word",
+        "private to normal_oct.wgsl: Unity's bytes as oct24's word, behind every Unity decoder row",
+    ),
     (
         "oct_sanitize",
         "private to normal_oct.wgsl: NaN/Inf/subnormal handling, exercised by every encoder row",
@@ -203,6 +219,19 @@ pub const ROWS: &[Row] = &[
     Row { func: "encode_normal_oct24_unorm", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::Vec4([1.0, B247, B127, 0.0]), why: "+z" },
     Row { func: "decode_normal_oct24_unorm", case: "NaN", args: &[V::Vec4([NAN, NAN, NAN, NAN])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "bytes 0: corner (0, 0) = −z" },
     Row { func: "decode_normal_oct24_unorm", case: "+Inf (alpha set)", args: &[V::Vec4([INF, INF, INF, INF])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "alpha ignored; corner (M, M) = −z" },
+    // Unity's byte order of the same codes (+z 0x7ff7ff → 0x77ffff, the rounding +z 0x800800 →
+    // 0x880000; +x and −z read the same in both orders).
+    Row { func: "encode_normal_oct24_unity", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x0077_ffff), why: "NaN anywhere → code of +z, Unity's bytes" },
+    Row { func: "encode_normal_oct24_unity", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x007f_ffff), why: "infinities win: code of +x" },
+    Row { func: "encode_normal_oct24_unity", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x0077_ffff), why: "code of +z" },
+    Row { func: "encode_normal_oct24_unity_fast", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x0088_0000), why: "NaN anywhere → code of +z, Unity's bytes" },
+    Row { func: "encode_normal_oct24_unity_fast", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0x00ff_ffff), why: "infinities win: code of −z" },
+    Row { func: "decode_normal_oct24_unity", case: "all ones (byte 3 set)", args: &[V::U32(u32::MAX)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "byte 3 ignored; corner (M, M) = −z" },
+    Row { func: "decode_normal_oct24_unity", case: "byte 3 only", args: &[V::U32(0xab00_0000)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "byte 3 ignored; corner (0, 0) = −z" },
+    Row { func: "encode_normal_oct24_unity_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec4([1.0, 1.0, B119, 0.0]), why: "+z: bytes (0xff, 0xff, 0x77), alpha 0" },
+    Row { func: "encode_normal_oct24_unity_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec4([1.0, 1.0, B127, 0.0]), why: "+x: bytes (0xff, 0xff, 0x7f)" },
+    Row { func: "decode_normal_oct24_unity_unorm", case: "NaN", args: &[V::Vec4([NAN, NAN, NAN, NAN])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "bytes 0: corner (0, 0) = −z" },
+    Row { func: "decode_normal_oct24_unity_unorm", case: "+Inf (alpha set)", args: &[V::Vec4([INF, INF, INF, INF])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "alpha ignored; corner (M, M) = −z" },
     Row { func: "encode_normal_oct32_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec4([1.0, B127, 1.0, B127]), why: "+z: code 0x7fff7fff" },
     Row { func: "encode_normal_oct32_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec4([1.0, 1.0, 1.0, B127]), why: "+x: code 0x7fffffff" },
     Row { func: "encode_normal_oct32_unorm", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::Vec4([1.0, B127, 1.0, B127]), why: "+z" },

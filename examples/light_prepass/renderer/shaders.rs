@@ -10,7 +10,10 @@ use prepass::scene::{DepthStorage, LightBuffers, NormalEncoding};
 pub fn alpha_free(e: NormalEncoding) -> bool {
     matches!(
         e,
-        NormalEncoding::Xyz8 | NormalEncoding::Oct24 | NormalEncoding::Hemioct24
+        NormalEncoding::Xyz8
+            | NormalEncoding::Oct24
+            | NormalEncoding::Hemioct24
+            | NormalEncoding::Oct24Unity
     )
 }
 
@@ -20,6 +23,7 @@ pub fn stem(e: NormalEncoding) -> &'static str {
         NormalEncoding::Xyz8 => "xyz8",
         NormalEncoding::Xyz10 => "xyz10",
         NormalEncoding::Snorm8 => "snorm8",
+        NormalEncoding::Oct24Unity => "oct24_unity",
         NormalEncoding::XyFp16 => "xy_fp16",
         NormalEncoding::Oct16 => "oct16",
         NormalEncoding::Oct24 => "oct24",

@@ -19,6 +19,8 @@ pub const MESHOPT: &str = include_str!("../../../tests/baselines/peer_meshopt.wg
 pub const SURVEY: &str = include_str!("../../../tests/baselines/peer_survey.wgsl");
 /// Unreal 5's GBufferA normal (`n·0.5 + 0.5` in RGB10A2), which Bevy's normal prepass stores too.
 pub const UNREAL: &str = include_str!("../../../tests/baselines/peer_unreal.wgsl");
+/// Unity HDRP's normal buffer: octahedral 12:12 in three bytes (`u32(f·4095.5)`).
+pub const UNITY: &str = include_str!("../../../tests/baselines/peer_unity.wgsl");
 /// Unity URP's default normal target (xyz in RGBA8 snorm).
 pub const URP: &str = include_str!("../../../tests/baselines/peer_urp.wgsl");
 /// LYGIA's `linearizeDepth` and `depth2viewZ` (OpenGL conventions, finite far).
@@ -42,7 +44,7 @@ pub struct NormalPeer {
 }
 
 /// The normal-codec peers.
-pub const NORMAL_PEERS: [NormalPeer; 9] = [
+pub const NORMAL_PEERS: [NormalPeer; 10] = [
     NormalPeer {
         name: "bevy gbuffer oct24 (×4095)",
         bits: 24,
@@ -105,6 +107,13 @@ pub const NORMAL_PEERS: [NormalPeer; 9] = [
         source: URP,
         encode: "peer_urp_normal_encode",
         decode: "peer_urp_normal_decode",
+    },
+    NormalPeer {
+        name: "unity hdrp oct 12:12 (×4095.5)",
+        bits: 24,
+        source: UNITY,
+        encode: "peer_unity_normal_encode",
+        decode: "peer_unity_normal_decode",
     },
 ];
 
