@@ -2,10 +2,6 @@
 //! the snorm8 format reads them.
 
 use super::normal::R3;
-
-/// 1/√2 as the snorm8 decoder computes it: `127/√32258`, each step correctly rounded (one ULP
-/// above the xyz8 decoders' `R2`).
-const S2: f32 = 0.707_106_8;
 use super::{Func, INF, NAN, NEG_NAN, Row, SNAN, SUB_MAX, SUB_MIN, V};
 
 pub const FUNCS: &[Func] = &[
@@ -46,6 +42,7 @@ pub const ROWS: &[Row] = &[
     Row { func: "encode_normal_snorm8_snorm", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::Vec4([0.0, 0.0, -1.0, 0.0]), why: "−z: bytes (0, 0, −127)" },
     Row { func: "encode_normal_snorm8_snorm", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::Vec4([0.0, 0.0, 1.0, 0.0]), why: "+z" },
     Row { func: "decode_normal_snorm8_snorm", case: "NaN", args: &[V::Vec4([NAN, NAN, NAN, NAN])], expect: V::Vec3([0.0, 0.0, 1.0]), why: "NaN counts as 0: the zero vector reads +z" },
-    Row { func: "decode_normal_snorm8_snorm", case: "out of range, ±Inf, NaN", args: &[V::Vec4([2.0, -INF, NAN, INF])], expect: V::Vec3([S2, -S2, 0.0]), why: "bytes (127, −127, 0): (1, −1, 0)/√2, rounded" },
+    Row { func: "decode_normal_snorm8_snorm", case: "out of range, +Inf, NaN", args: &[V::Vec4([2.0, NAN, -0.0, INF])], expect: V::Vec3([1.0, 0.0, 0.0]), why: "bytes (127, 0, 0): +x" },
+    Row { func: "decode_normal_snorm8_snorm", case: "−Inf, out of range", args: &[V::Vec4([NAN, -INF, -0.5e-3, 7.0])], expect: V::Vec3([0.0, -1.0, 0.0]), why: "bytes (0, −127, 0): −y" },
     Row { func: "decode_normal_snorm8_snorm", case: "±Inf", args: &[V::Vec4([INF, -INF, -INF, NAN])], expect: V::Vec3([R3, -R3, -R3]), why: "taken as ±1: (1, −1, −1)/√3, rounded" },
 ];
