@@ -103,6 +103,7 @@ mod position;
 mod precision;
 mod projection;
 mod roughness;
+mod roughness_ggx;
 
 /// A value in the table: an argument or a result.
 #[derive(Clone, Copy, Debug)]
@@ -278,6 +279,7 @@ pub const TABLES: &[Table] = &[
     table!(position),
     table!(precision),
     table!(roughness),
+    table!(roughness_ggx),
     table!(lpp),
     table!(aggregate_light),
     table!(light_volume),
