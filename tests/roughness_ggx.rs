@@ -771,3 +771,84 @@ fn ggx_error_table() {
     eprintln!("{body}");
     common::publish("docs/figures.md", "roughness-ggx", &body);
 }
+
+/// The promise on every conforming adapter, under the emulated worst adapter
+/// (`prepass::conforming`, `Policy::WORST`: upper, lower and three seeds): the encoders' codes
+/// are the twin's exact codes (every operation that decides them is exact; see the twin's
+/// "Exact encoders"), the log decoders are bit-identical (integer table constructions), and the
+/// linear and Godot decoders stay within WGSL's 2.5-ULP division (Godot: its three operations,
+/// `bounds::GODOT_DECODE` widened by the division's and the constant's allowances). Inputs: every
+/// boundary neighbourhood and every 977th `f32` of [`encoder_inputs`]; every code.
+#[test]
+fn promises_hold_on_the_emulated_worst_conforming_adapter() {
+    use prepass::conforming::{EmulatedKernel, Emulation, Policy};
+    let all = encoder_inputs();
+    let grid = (0x3f80_0000usize / 61) + 1;
+    let rs: Vec<f32> = all[..grid]
+        .iter()
+        .step_by(977)
+        .chain(&all[grid..])
+        .copied()
+        .collect();
+    let codes = all_codes();
+    let gpu = common::gpu();
+    for policy in Policy::WORST {
+        let emu = Emulation::new(policy);
+        let run = |name: &str, args: &[Arg<'_>], n: usize| {
+            let k = EmulatedKernel::new(gpu, ROUGHNESS_GGX, name, &emu)
+                .unwrap_or_else(|e| panic!("{name}: {e}"));
+            let (out, flags) = k.run(args, n as u64).unwrap();
+            assert!(
+                flags.iter().all(|f| !f),
+                "{name} {policy}: an operation left the spec's domain"
+            );
+            out
+        };
+        let encoders: [(&str, fn(f32) -> u32); 2] = [
+            ("encode_roughness_ggx8", ggx::encode_roughness_ggx8),
+            ("encode_roughness_ggx8_log", ggx::encode_roughness_ggx8_log),
+        ];
+        for (name, twin) in encoders {
+            let got = run(name, &[Arg::column(&rs)], rs.len());
+            for (&r, &c) in rs.iter().zip(got.as_u32()) {
+                assert_eq!(c, twin(r), "{name}({r:e}) under {policy}");
+            }
+        }
+        let got = run(
+            "encode_roughness_godot8",
+            &[Arg::column(&rs), Arg::splat_u32(1)],
+            rs.len(),
+        );
+        for (&r, &c) in rs.iter().zip(got.as_u32()) {
+            assert_eq!(c, ggx::encode_roughness_godot8(r, 1), "godot8({r:e}) under {policy}");
+        }
+        let decoders: [(&str, fn(u32) -> f32, f64); 4] = [
+            ("decode_roughness_ggx8_log", ggx::decode_roughness_ggx8_log, 0.0),
+            (
+                "decode_roughness_ggx8_log_alpha",
+                ggx::decode_roughness_ggx8_log_alpha,
+                0.0,
+            ),
+            // WGSL's / is 2.5 ULP: of a value ≤ 1, 2.5·2^-23 absolute.
+            ("decode_roughness_ggx8", ggx::decode_roughness_ggx8, 5.0 * U),
+            // Godot: 2.5 ULP for each division (c, and the quotient ≤ 1) where the twin has
+            // 0.5, both carried to the result (the first through 1 − c and /(127/255)).
+            (
+                "decode_roughness_godot8",
+                ggx::decode_roughness_godot8,
+                bounds::GODOT_DECODE + 2.0 * 2.0 * U * 255.0 / 127.0 + 2.0 * 2.0 * U,
+            ),
+        ];
+        for (name, twin, tol) in decoders {
+            let got = run(name, &[Arg::column(&codes)], codes.len());
+            for (&c, &v) in codes.iter().zip(got.as_f32()) {
+                assert_within!(
+                    (f64::from(v) - f64::from(twin(c))).abs(),
+                    tol,
+                    "0 for the table decoders; WGSL's 2.5-ULP division otherwise (comment above)",
+                    "{name}({c}) under {policy}"
+                );
+            }
+        }
+    }
+}
