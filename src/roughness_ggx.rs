@@ -70,7 +70,7 @@ pub const GODOT_CODE_MAX: u32 = 127;
 fn linear_code(r: f32, scale: f32) -> u32 {
     let b = r.to_bits();
     let n = scale - 1.0;
-    if (b & 0x7fff_ffff) > 0x7f80_0000 || (b < 0x8000_0000 && b >= 0x3f80_0000) {
+    if (b & 0x7fff_ffff) > 0x7f80_0000 || (0x3f80_0000..0x8000_0000).contains(&b) {
         return n as u32;
     }
     if b >= 0x8000_0000 {
@@ -215,7 +215,7 @@ const LOG_MIN_BITS: u32 = 0x3c80_0000;
 /// `≤ 2^-6` → 0.
 pub fn encode_roughness_ggx8_log(r: f32) -> u32 {
     let b = r.to_bits();
-    if (b & 0x7fff_ffff) > 0x7f80_0000 || (b < 0x8000_0000 && b >= 0x3f80_0000) {
+    if (b & 0x7fff_ffff) > 0x7f80_0000 || (0x3f80_0000..0x8000_0000).contains(&b) {
         return CODE_MAX;
     }
     if b >= 0x8000_0000 || b <= LOG_MIN_BITS {
@@ -231,9 +231,7 @@ pub fn encode_roughness_ggx8_log(r: f32) -> u32 {
 /// **Bad input:** codes above 255 decode as 255 (`r = 1`).
 pub fn decode_roughness_ggx8_log(p: u32) -> f32 {
     let n = p.min(CODE_MAX) * 6;
-    f32::from_bits(
-        crate::roughness::EXP2_STEPS[(n % 255) as usize] + ((n / 255) << 23) - (6 << 23),
-    )
+    f32::from_bits(crate::roughness::EXP2_STEPS[(n % 255) as usize] + ((n / 255) << 23) - (6 << 23))
 }
 
 /// GGX `α = 2^(12k/255 − 12)` of log code `k`, correctly rounded (from the table, not by

@@ -17,16 +17,30 @@ use prepass::{assert_at_least, assert_within};
 const ENGINES: &str = include_str!("baselines/roughness_ggx_engines.wgsl");
 const U: f64 = 1.0 / 16_777_216.0; // 2^-24, unit roundoff of f32
 
+/// A WGSL function's name and its twin.
+type Decoder = (&'static str, fn(u32) -> f32);
+type Encoder = (&'static str, fn(f32) -> u32);
+/// A decoder and how far from its twin it may land.
+type DecoderWithin = (&'static str, fn(u32) -> f32, f64);
+/// A render-target function's name, its twin, and the byte form it writes or reads.
+type UnormEncoder = (&'static str, fn(f32) -> f32, fn(f32) -> u32);
+type UnormDecoder = (&'static str, fn(f32) -> f32, fn(u32) -> f32);
+
 /// Codes a decoder is run on: every byte, then out-of-range codes.
 fn all_codes() -> Vec<u32> {
-    (0..=255u32).chain([256, 257, 1000, 1 << 31, u32::MAX]).collect()
+    (0..=255u32)
+        .chain([256, 257, 1000, 1 << 31, u32::MAX])
+        .collect()
 }
 
 /// Encoder inputs: every 61st `f32` in `[0, 1]` (odd stride: every code, at many significands),
 /// every `f32` within 64 ULP of every boundary of the three curves (where an encoder can go
 /// wrong), and the bad inputs.
 fn encoder_inputs() -> Vec<f32> {
-    let mut v: Vec<f32> = (0..=0x3f80_0000u32).step_by(61).map(f32::from_bits).collect();
+    let mut v: Vec<f32> = (0..=0x3f80_0000u32)
+        .step_by(61)
+        .map(f32::from_bits)
+        .collect();
     let mut near = |b: f64| {
         let c = (b as f32).to_bits() as i64;
         for d in -64..=64 {
@@ -113,9 +127,12 @@ fn every_code_decodes_like_the_twin_and_the_exact_value() {
     let codes = all_codes();
     let n = codes.len() as u64;
     let run = |f: &str| run_kernel(ROUGHNESS_GGX, f, &[Arg::column(&codes)], n);
-    let twins: [(&str, fn(u32) -> f32); 5] = [
+    let twins: [Decoder; 5] = [
         ("decode_roughness_ggx8", ggx::decode_roughness_ggx8),
-        ("decode_roughness_ggx8_alpha", ggx::decode_roughness_ggx8_alpha),
+        (
+            "decode_roughness_ggx8_alpha",
+            ggx::decode_roughness_ggx8_alpha,
+        ),
         ("decode_roughness_godot8", ggx::decode_roughness_godot8),
         ("decode_roughness_ggx8_log", ggx::decode_roughness_ggx8_log),
         (
@@ -198,14 +215,22 @@ fn encoders_give_the_exact_code_on_the_adapter_and_every_f32_in_the_twin() {
         );
         for (i, &r) in rs.iter().enumerate() {
             let want = ggx::encode_roughness_godot8(r, flag);
-            assert_eq!(got.as_u32()[i], want, "encode_roughness_godot8({r:e}, {flag})");
+            assert_eq!(
+                got.as_u32()[i],
+                want,
+                "encode_roughness_godot8({r:e}, {flag})"
+            );
             let k = exact::linear_code(f64::from(r), 127);
             assert_eq!(want, if flag != 0 { 255 - k } else { k }, "r {r:e}");
         }
     }
     // The references agree with each other where both are cheap.
     for &r in rs.iter().step_by(97) {
-        assert_eq!(exact::log_code(f64::from(r)), log_code_fast(&lb, r), "r {r:e}");
+        assert_eq!(
+            exact::log_code(f64::from(r)),
+            log_code_fast(&lb, r),
+            "r {r:e}"
+        );
     }
     // Every f32 in [0, 1] on the CPU.
     let mut wrong = 0u64;
@@ -228,7 +253,7 @@ fn encoders_give_the_exact_code_on_the_adapter_and_every_f32_in_the_twin() {
 fn render_target_forms_round_trip_on_the_adapter() {
     let rs: Vec<f32> = encoder_inputs().into_iter().step_by(16).collect();
     let n = rs.len() as u64;
-    let enc: [(&str, fn(f32) -> f32, fn(f32) -> u32); 2] = [
+    let enc: [UnormEncoder; 2] = [
         (
             "encode_roughness_ggx8_unorm",
             ggx::encode_roughness_ggx8_unorm,
@@ -264,7 +289,10 @@ fn render_target_forms_round_trip_on_the_adapter() {
         for (&r, &c) in rs.iter().zip(got.as_f32()) {
             let b = ggx::encode_roughness_godot8(r, flag);
             assert_eq!((c * 255.0).round() as u32, b, "godot8_unorm({r:e}, {flag})");
-            assert_eq!(ggx::encode_roughness_godot8_unorm(r, flag), b as f32 / 255.0);
+            assert_eq!(
+                ggx::encode_roughness_godot8_unorm(r, flag),
+                b as f32 / 255.0
+            );
         }
     }
     // Sampled channels: each byte's value, ±0.49/255, and ±3 ULP.
@@ -284,7 +312,7 @@ fn render_target_forms_round_trip_on_the_adapter() {
         }
     }
     let n = cs.len() as u64;
-    let dec: [(&str, fn(f32) -> f32, fn(u32) -> f32); 3] = [
+    let dec: [UnormDecoder; 3] = [
         (
             "decode_roughness_ggx8_unorm",
             ggx::decode_roughness_ggx8_unorm,
@@ -328,15 +356,34 @@ fn engines_bytes_and_prepass_bytes_interoperate() {
     let channels: Vec<f32> = bytes.iter().map(|&b| b as f32 / 255.0).collect();
     let nb = bytes.len() as u64;
     // Decoders, byte by byte.
-    let bevy = run_kernel(&src, "engine_bevy_roughness_read", &[Arg::column(&bytes)], nb);
-    let target = run_kernel(&src, "engine_unorm8_target_read", &[Arg::column(&bytes)], nb);
-    let godot = run_kernel(&src, "engine_godot_roughness_read", &[Arg::column(&channels)], nb);
+    let bevy = run_kernel(
+        &src,
+        "engine_bevy_roughness_read",
+        &[Arg::column(&bytes)],
+        nb,
+    );
+    let target = run_kernel(
+        &src,
+        "engine_unorm8_target_read",
+        &[Arg::column(&bytes)],
+        nb,
+    );
+    let godot = run_kernel(
+        &src,
+        "engine_godot_roughness_read",
+        &[Arg::column(&channels)],
+        nb,
+    );
     let ours = run_kernel(&src, "decode_roughness_ggx8", &[Arg::column(&bytes)], nb);
     let ours_godot = run_kernel(&src, "decode_roughness_godot8", &[Arg::column(&bytes)], nb);
     let mut unpack_differs = 0;
-    for b in 0..256usize {
+    for (b, &channel) in channels.iter().enumerate() {
         let mine = ours.as_f32()[b];
-        assert_eq!(mine.to_bits(), bevy.as_f32()[b].to_bits(), "Bevy's read of byte {b}");
+        assert_eq!(
+            mine.to_bits(),
+            bevy.as_f32()[b].to_bits(),
+            "Bevy's read of byte {b}"
+        );
         assert_eq!(
             mine,
             (b as f64 / 255.0) as f32,
@@ -357,13 +404,16 @@ fn engines_bytes_and_prepass_bytes_interoperate() {
         );
         assert_eq!(
             ggx::roughness_godot8_is_dynamic(b as u32) == 1,
-            channels[b] > 0.5,
+            channel > 0.5,
             "Godot's flag test (c > 0.5) on byte {b}"
         );
     }
     eprintln!("unpack4x8unorm differs from b/255 on {unpack_differs} of 256 bytes here");
     // Encoders over the grid.
-    let rs: Vec<f32> = (0..=0x3f80_0000u32).step_by(61).map(f32::from_bits).collect();
+    let rs: Vec<f32> = (0..=0x3f80_0000u32)
+        .step_by(61)
+        .map(f32::from_bits)
+        .collect();
     let n = rs.len() as u64;
     let bevy_w = run_kernel(&src, "engine_bevy_roughness_write", &[Arg::column(&rs)], n);
     let target_w = run_kernel(&src, "engine_unorm8_target_write", &[Arg::column(&rs)], n);
@@ -408,7 +458,11 @@ fn engines_bytes_and_prepass_bytes_interoperate() {
                 "bounds::linear_half_step(127) = 1/254 + bounds::GODOT_DECODE",
                 "Godot's decoder on prepass's byte for r = {r:e}, flag {flag}"
             );
-            assert_eq!(channels[b as usize] > 0.5, flag != 0, "flag survives, r = {r:e}");
+            assert_eq!(
+                channels[b as usize] > 0.5,
+                flag != 0,
+                "flag survives, r = {r:e}"
+            );
         }
     }
     eprintln!(
@@ -428,7 +482,9 @@ struct Curve {
 impl Curve {
     fn power(gamma: f64) -> Self {
         Curve {
-            value: (0..=255).map(|k| (f64::from(k) / 255.0).powf(gamma)).collect(),
+            value: (0..=255)
+                .map(|k| (f64::from(k) / 255.0).powf(gamma))
+                .collect(),
             bound: (0..255)
                 .map(|k| ((f64::from(k) + 0.5) / 255.0).powf(gamma))
                 .collect(),
@@ -436,7 +492,9 @@ impl Curve {
     }
     fn log(lo: f64) -> Self {
         Curve {
-            value: (0..=255).map(|k| lo.powf(1.0 - f64::from(k) / 255.0)).collect(),
+            value: (0..=255)
+                .map(|k| lo.powf(1.0 - f64::from(k) / 255.0))
+                .collect(),
             bound: (0..255)
                 .map(|k| lo.powf(1.0 - (f64::from(k) + 0.5) / 255.0))
                 .collect(),
@@ -552,7 +610,9 @@ fn ggx_error_table() {
         let linear_bound = |h: f64| (r_min / (r_min - h - U)).powi(4) - 1.0;
         // (b) Godot, 7 bits (static byte; the dynamic byte decodes within GODOT_DECODE of it).
         let godot = exhaustive(r_min, |r| {
-            f64::from(ggx::decode_roughness_godot8(ggx::encode_roughness_godot8(r, 0)))
+            f64::from(ggx::decode_roughness_godot8(ggx::encode_roughness_godot8(
+                r, 0,
+            )))
         });
         // (c) prepass's log-range specular power mapped to α.
         let power = exhaustive(r_min, log_range_power_round_trip);
@@ -570,9 +630,9 @@ fn ggx_error_table() {
         let power_bound = (13.0f64 / 510.0).exp2() * (1.0 + 4.0 * U) - 1.0;
         // (d) the log-r curve (shipped).
         let log = exhaustive(r_min, |r| {
-            f64::from(ggx::decode_roughness_ggx8_log(ggx::encode_roughness_ggx8_log(
-                r,
-            )))
+            f64::from(ggx::decode_roughness_ggx8_log(
+                ggx::encode_roughness_ggx8_log(r),
+            ))
         });
         let log_bound = (1.0 + bounds::log_relative()).powi(4) * (1.0 + 4.0 * U) - 1.0;
         let rows = [
@@ -734,7 +794,11 @@ fn ggx_error_table() {
                 format!("γ = {:.2}", best_power.0),
                 best_power.1,
             ),
-            ("α linear: r = (k/255)^(1/2)", "γ = 1/2".into(), alpha_linear),
+            (
+                "α linear: r = (k/255)^(1/2)",
+                "γ = 1/2".into(),
+                alpha_linear,
+            ),
             (
                 "log r, r ∈ [2^-L, 1]",
                 format!("L = {:.2} (r_lo = {:.4})", best_log.0, (-best_log.0).exp2()),
@@ -804,7 +868,7 @@ fn promises_hold_on_the_emulated_worst_conforming_adapter() {
             );
             out
         };
-        let encoders: [(&str, fn(f32) -> u32); 2] = [
+        let encoders: [Encoder; 2] = [
             ("encode_roughness_ggx8", ggx::encode_roughness_ggx8),
             ("encode_roughness_ggx8_log", ggx::encode_roughness_ggx8_log),
         ];
@@ -820,10 +884,18 @@ fn promises_hold_on_the_emulated_worst_conforming_adapter() {
             rs.len(),
         );
         for (&r, &c) in rs.iter().zip(got.as_u32()) {
-            assert_eq!(c, ggx::encode_roughness_godot8(r, 1), "godot8({r:e}) under {policy}");
+            assert_eq!(
+                c,
+                ggx::encode_roughness_godot8(r, 1),
+                "godot8({r:e}) under {policy}"
+            );
         }
-        let decoders: [(&str, fn(u32) -> f32, f64); 4] = [
-            ("decode_roughness_ggx8_log", ggx::decode_roughness_ggx8_log, 0.0),
+        let decoders: [DecoderWithin; 4] = [
+            (
+                "decode_roughness_ggx8_log",
+                ggx::decode_roughness_ggx8_log,
+                0.0,
+            ),
             (
                 "decode_roughness_ggx8_log_alpha",
                 ggx::decode_roughness_ggx8_log_alpha,

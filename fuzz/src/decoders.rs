@@ -177,19 +177,53 @@ pub const DECODERS: &[Entry] = &[
             let b = p.min(255);
             for (name, v, lo) in [
                 ("decode_roughness_ggx8", ggx::decode_roughness_ggx8(p), 0.0),
-                ("decode_roughness_ggx8_alpha", ggx::decode_roughness_ggx8_alpha(p), 0.0),
-                ("decode_roughness_godot8", ggx::decode_roughness_godot8(p), 0.0),
-                ("decode_roughness_ggx8_log", ggx::decode_roughness_ggx8_log(p), 1.0 / 64.0),
-                ("decode_roughness_ggx8_log_alpha", ggx::decode_roughness_ggx8_log_alpha(p), 1.0 / 4096.0),
-                ("decode_roughness_ggx8_unorm", ggx::decode_roughness_ggx8_unorm(c), 0.0),
-                ("decode_roughness_godot8_unorm", ggx::decode_roughness_godot8_unorm(c), 0.0),
-                ("decode_roughness_ggx8_log_unorm", ggx::decode_roughness_ggx8_log_unorm(c), 1.0 / 64.0),
+                (
+                    "decode_roughness_ggx8_alpha",
+                    ggx::decode_roughness_ggx8_alpha(p),
+                    0.0,
+                ),
+                (
+                    "decode_roughness_godot8",
+                    ggx::decode_roughness_godot8(p),
+                    0.0,
+                ),
+                (
+                    "decode_roughness_ggx8_log",
+                    ggx::decode_roughness_ggx8_log(p),
+                    1.0 / 64.0,
+                ),
+                (
+                    "decode_roughness_ggx8_log_alpha",
+                    ggx::decode_roughness_ggx8_log_alpha(p),
+                    1.0 / 4096.0,
+                ),
+                (
+                    "decode_roughness_ggx8_unorm",
+                    ggx::decode_roughness_ggx8_unorm(c),
+                    0.0,
+                ),
+                (
+                    "decode_roughness_godot8_unorm",
+                    ggx::decode_roughness_godot8_unorm(c),
+                    0.0,
+                ),
+                (
+                    "decode_roughness_ggx8_log_unorm",
+                    ggx::decode_roughness_ggx8_log_unorm(c),
+                    1.0 / 64.0,
+                ),
             ] {
                 assert!((lo..=1.0).contains(&v), "{name}: {p:#x}, {c:?} → {v:?}");
             }
             assert_eq!(ggx::decode_roughness_ggx8(p), ggx::decode_roughness_ggx8(b));
-            assert_eq!(ggx::decode_roughness_godot8(p), ggx::decode_roughness_godot8(b));
-            assert_eq!(ggx::decode_roughness_ggx8_log(p), ggx::decode_roughness_ggx8_log(b));
+            assert_eq!(
+                ggx::decode_roughness_godot8(p),
+                ggx::decode_roughness_godot8(b)
+            );
+            assert_eq!(
+                ggx::decode_roughness_ggx8_log(p),
+                ggx::decode_roughness_ggx8_log(b)
+            );
             assert_eq!(ggx::roughness_godot8_is_dynamic(p), b >> 7);
         },
     },
