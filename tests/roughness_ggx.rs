@@ -831,7 +831,60 @@ fn ggx_error_table() {
             spirv("decode_roughness_ggx8"),
         ));
     }
-    let body = format!("{table}{search}\n{}.\n", winners.join(".\n"));
+    // The engines' own encoders against prepass's exact one, in f32 as the engines write them
+    // (no fusion: a GPU may fuse 255·r + ½, which moves a code only at these same near-ties).
+    let unorm8 = |w: f32| (w.clamp(0.0, 1.0) * 255.0 + 0.5).floor() as u32;
+    let godot_write = |r: f32, dynamic: bool| {
+        let w = r * (127.0f32 / 255.0);
+        unorm8(if dynamic { 1.0 - w } else { w })
+    };
+    let mut engines = String::from(
+        "\n| encoder | codes ≠ prepass's exact code (of every 7th `f32` in [0, 1]) | max abs error in r: the engine's encoder | prepass's encoder |\n|---|---|---|---|\n",
+    );
+    let (mut n, mut bevy_diff, mut godot_diff) = (0u64, 0u64, 0u64);
+    let (mut bevy_max, mut ours_max, mut godot_max, mut ours_godot_max) = (0f64, 0f64, 0f64, 0f64);
+    for bits in (0..=0x3f80_0000u32).step_by(7) {
+        let r = f32::from_bits(bits);
+        let x = f64::from(r);
+        n += 1;
+        let (e, o) = (unorm8(r), ggx::encode_roughness_ggx8(r));
+        bevy_diff += u64::from(e != o);
+        bevy_max = bevy_max.max((f64::from(e) / 255.0 - x).abs());
+        ours_max = ours_max.max((f64::from(o) / 255.0 - x).abs());
+        for dynamic in [false, true] {
+            let (e, o) = (
+                godot_write(r, dynamic),
+                ggx::encode_roughness_godot8(r, u32::from(dynamic)),
+            );
+            godot_diff += u64::from(e != o);
+            let k = |b: u32| f64::from(if b > 127 { 255 - b } else { b }) / 127.0;
+            godot_max = godot_max.max((k(e) - x).abs());
+            ours_godot_max = ours_godot_max.max((k(o) - x).abs());
+        }
+    }
+    assert_within!(
+        ours_max,
+        bounds::linear_half_step(255),
+        "bounds::linear_half_step(255): the exact nearest code",
+        "prepass's 8-bit encoder"
+    );
+    assert_within!(
+        ours_godot_max,
+        bounds::linear_half_step(127),
+        "bounds::linear_half_step(127): the exact nearest code",
+        "prepass's Godot encoder"
+    );
+    assert!(ours_max <= bevy_max && ours_godot_max <= godot_max);
+    let _ = writeln!(
+        engines,
+        "| Bevy `u32(saturate(r)·255 + 0.5)`, a unorm8 target's `⌊255·r + ½⌋` (Unreal, HDRP, URP) | {bevy_diff} of {n} | {bevy_max:.6e} | {ours_max:.6e} |"
+    );
+    let _ = writeln!(
+        engines,
+        "| Godot `r·(127/255)`, `1 − w` if dynamic, to unorm8 (both flags) | {godot_diff} of {} | {godot_max:.6e} | {ours_godot_max:.6e} |",
+        2 * n
+    );
+    let body = format!("{table}{search}\n{}.\n{engines}", winners.join(".\n"));
     eprintln!("{body}");
     common::publish("docs/figures.md", "roughness-ggx", &body);
 }
