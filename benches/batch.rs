@@ -154,9 +154,10 @@ fn criterion_groups(c: &mut Criterion) {
 }
 
 /// The other batch families at the detected level beside [`Level::Scalar`] (the scalar twin per
-/// element): roughness at the tests' range 8192, and 24-bit depth recovery from RGB8 channels.
+/// element): roughness at the tests' range 8192, GGX roughness (linear r and the log curve), and
+/// 24-bit depth recovery from RGB8 channels.
 fn criterion_others(c: &mut Criterion) {
-    use prepass::batch::{depth24 as bd, roughness as br};
+    use prepass::batch::{depth24 as bd, roughness as br, roughness_ggx as bg};
     let level = Level::detected();
     let powers: Vec<f32> = (0..N)
         .map(|i| (i as f32 / N as f32 * 13.0).exp2())
@@ -171,6 +172,7 @@ fn criterion_others(c: &mut Criterion) {
             Vec3::new(r, g, b)
         })
         .collect();
+    let rough: Vec<f32> = (0..N).map(|i| i as f32 / N as f32).collect();
     let (mut out_u32, mut out_f32) = (vec![0u32; N], vec![0f32; N]);
     let mut g = c.benchmark_group("batch_others");
     g.throughput(Throughput::Elements(N as u64));
@@ -180,6 +182,15 @@ fn criterion_others(c: &mut Criterion) {
         });
         g.bench_function(format!("roughness decode (max 8192, {l})"), |b| {
             b.iter(|| br::decode_log_roughness_with(l, 8192.0, black_box(&codes), &mut out_f32))
+        });
+        g.bench_function(format!("GGX roughness encode, linear r ({l})"), |b| {
+            b.iter(|| bg::encode_roughness_ggx8_with(l, black_box(&rough), &mut out_u32))
+        });
+        g.bench_function(format!("GGX roughness encode, log r ({l})"), |b| {
+            b.iter(|| bg::encode_roughness_ggx8_log_with(l, black_box(&rough), &mut out_u32))
+        });
+        g.bench_function(format!("GGX roughness decode, log r ({l})"), |b| {
+            b.iter(|| bg::decode_roughness_ggx8_log_with(l, black_box(&codes), &mut out_f32))
         });
         g.bench_function(format!("depth24_from_rgb8 ({l})"), |b| {
             b.iter(|| bd::depth24_from_rgb8_with(l, black_box(&rgb), &mut out_u32))

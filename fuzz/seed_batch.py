@@ -8,9 +8,10 @@ after adding an entry: python3 fuzz/seed_batch.py."""
 import hashlib, os, struct
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ENTRIES = 38  # len(BATCH)
+ENTRIES = 57  # len(BATCH)
 GENERIC = {33, 34, 35}  # bits byte first
 ROUGHNESS = {36, 37}  # max_power f32 first
+FLAGGED = {56}  # a u32 dynamic-object flag first
 WORDS = [0x7FC00000, 0xFFC00001, 0x7F800001, 0x7F800000, 0xFF800000, 0, 0x80000000, 1, 0x80000001,
          0x007FFFFF, 0x00800000, 0x3F800000, 0xBF800000, 0x7F7FFFFF, 0xFF7FFFFF, 0x3F000001,
          0x00FFFFFF, 0x01000000, 0xFFFFFFFF, 0xFF123456, 0x0000FFFF, 0x00007FFF, 0x3F3504F3]
@@ -28,6 +29,8 @@ for e in range(ENTRIES):
         params = [bytes([b - 1]) for b in (8, 12, 16, 1, 13)]
     if e in ROUGHNESS:
         params = [struct.pack("<f", m) for m in (8192.0, 1000.0, 2.0, float("inf"), 1.0)] + [struct.pack("<I", 0x7FC00000)]
+    if e in FLAGGED:
+        params = [struct.pack("<I", flag) for flag in (0, 1, 0xFFFFFFFF)]
     for p in params:
         for n in (0, 20, 62):  # lengths 1, 21, 63
             write(bytes([e]) + p + bytes([n]) + payload)

@@ -100,6 +100,14 @@ for (p, m) in [(NAN, f(8192.0)), (INF, f(1000.0)), (f(-100.0), f(8192.0)), (SUB,
     write("encoders", 21, words(p, f(2.0), m))
 for (n, c) in [(0xFF123456, 0x3E7), (0x80, 0xFFFFFFFF), (0, 0), (0xFFFFFFFF, 255)]:
     write("encoders", 22, words(n, c))
+# decoders 25: the roughness_ggx decoders (code, channel); encoders 30: the roughness_ggx
+# encoders (r, s, dynamic flag)
+for c in (0, 127, 128, 255, 256, 0xFFFFFFFF):
+    for ch in (NAN, INF, NINF, SUB, f(0.49 / 255), f(2.0), f(-1.0), f(0.5)):
+        write("decoders", 25, words(c, ch))
+for r in FLOATS + [f(1.0 / 64.0), f(0.01), f(1.0 / 510.0), f(0.089), f(0.02)]:
+    for flag in (0, 1, 0xFFFFFFFF):
+        write("encoders", 30, words(r, f(1.0), flag))
 # lighting (fuzz/src/lighting.rs order): 0 lpp_direction, 1 lpp_pow_cosine, 2 point attenuation,
 # 3 spot attenuation, 4 lpp_cosines, 5 blinn-phong light, 6 phong light, 7 point light, 8 spot
 # light, 9 two-buffer specular, 10 reconstruct specular, 11 clamp colour, 12 combine / luminance,

@@ -13,6 +13,7 @@
 //! | [`position`] | `wgsl/position.wgsl` | frustum rays, view/world/camera-relative position rebuild |
 //! | [`scene`] | composed | scene declaration → minimal WGSL module + G-buffer layout |
 //! | [`roughness`] | `wgsl/roughness.wgsl` | specular exponent in log range, 8 bits; normal + roughness RGBA8 texel |
+//! | [`roughness_ggx`] | `wgsl/roughness_ggx.wgsl` | GGX perceptual roughness in 8 bits: linear as the engines store it, Godot's 7 bits + flag, a log curve |
 //! | [`lighting`] (`lpp`, `aggregate_light`, `light_volume`) | `wgsl/lpp.wgsl`, `wgsl/aggregate_light.wgsl`, `wgsl/light_volume.wgsl` | light pre-pass P/C and specular reconstruction, aggregate vertex lights, light volumes and depth bounds; each twin has its WGSL function's name |
 //! | [`normal`] | `wgsl/normal_*.wgsl` | normal encodings: xyz8, xy FP16, octahedral 16/24/32, hemi-octahedral 24 |
 //! | [`batch`] | — | every normal, depth24 and roughness encoder and decoder over slices, SIMD (SSE2, AVX2 at run time, NEON), bit-identical to the scalar twins; feature `rayon` splits long batches |
@@ -54,6 +55,7 @@ pub mod position;
 pub mod precision;
 pub mod projection;
 pub mod roughness;
+pub mod roughness_ggx;
 pub mod scene;
 #[cfg(feature = "harness")]
 #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]

@@ -735,3 +735,68 @@ fn roughness_encode() {
         );
     }
 }
+
+/// GGX roughness (`prepass::batch::roughness_ggx`): every code and the stratified 32-bit sample
+/// through the decoders; every `f32` in `[0, 1]` with a stride of 7 (every code at many
+/// significands), every `f32` within 64 ULP of each linear code boundary (where the exact
+/// quantiser's boundary test decides), and the stratified sample (NaNs, infinities, negatives,
+/// subnormals, huge values) through the encoders, Godot's with both flags.
+#[test]
+fn roughness_ggx_encoders_and_decoders() {
+    use prepass::batch::roughness_ggx as bg;
+    use prepass::roughness_ggx as g;
+    let codes: Vec<u32> = (0..1024)
+        .chain(stratified().iter().step_by(16).copied())
+        .collect();
+    check!(
+        &codes,
+        g::decode_roughness_ggx8,
+        bg::decode_roughness_ggx8,
+        decode_roughness_ggx8_with
+    );
+    check!(
+        &codes,
+        g::decode_roughness_godot8,
+        bg::decode_roughness_godot8,
+        decode_roughness_godot8_with
+    );
+    check!(
+        &codes,
+        g::decode_roughness_ggx8_log,
+        bg::decode_roughness_ggx8_log,
+        decode_roughness_ggx8_log_with
+    );
+    let mut rs: Vec<f32> = (0..=0x3f80_0000u32)
+        .step_by(7)
+        .map(f32::from_bits)
+        .collect();
+    for n in [127.0f64, 255.0] {
+        for j in 0..n as u32 {
+            let c = (((f64::from(j) + 0.5) / n) as f32).to_bits();
+            rs.extend((c - 64..=c + 64).map(f32::from_bits));
+        }
+    }
+    rs.extend(stratified().iter().step_by(16).map(|&b| f32::from_bits(b)));
+    check!(
+        &rs,
+        g::encode_roughness_ggx8,
+        bg::encode_roughness_ggx8,
+        encode_roughness_ggx8_with
+    );
+    for flag in [0u32, 1, u32::MAX] {
+        check(
+            &format!("roughness_ggx::encode_roughness_godot8(flag {flag:#x})"),
+            &rs,
+            |r| g::encode_roughness_godot8(r, flag),
+            |l, s, d| bg::encode_roughness_godot8_with(l, flag, s, d),
+            |s, d| bg::encode_roughness_godot8(flag, s, d),
+        );
+    }
+    let sparse: Vec<f32> = rs.iter().step_by(5).copied().collect();
+    check!(
+        &sparse,
+        g::encode_roughness_ggx8_log,
+        bg::encode_roughness_ggx8_log,
+        encode_roughness_ggx8_log_with
+    );
+}

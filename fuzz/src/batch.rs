@@ -9,10 +9,11 @@
 use crate::normal::oct_bits;
 use crate::{Entry, Input};
 use glam::Vec3;
-use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br};
+use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br, roughness_ggx as bg};
 use prepass::depth24 as d24;
 use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
 use prepass::roughness as r;
+use prepass::roughness_ggx as g;
 
 /// A value compared by its bits.
 trait Bits: Copy + Default + std::fmt::Debug {
@@ -420,4 +421,40 @@ pub const BATCH: &[Entry] = &[
         bn::decode_normal_oct24_unity_unorm,
         decode_normal_oct24_unity_unorm_with
     ),
+        f32,
+        g::encode_roughness_ggx8,
+        bg::encode_roughness_ggx8,
+        encode_roughness_ggx8_with
+    ),
+    entry!(
+        u32,
+        g::decode_roughness_ggx8,
+        bg::decode_roughness_ggx8,
+        decode_roughness_ggx8_with
+    ),
+    entry!(
+        u32,
+        g::decode_roughness_godot8,
+        bg::decode_roughness_godot8,
+        decode_roughness_godot8_with
+    ),
+    entry!(
+        f32,
+        g::encode_roughness_ggx8_log,
+        bg::encode_roughness_ggx8_log,
+        encode_roughness_ggx8_log_with
+    ),
+    entry!(
+        u32,
+        g::decode_roughness_ggx8_log,
+        bg::decode_roughness_ggx8_log,
+        decode_roughness_ggx8_log_with
+    ),
+    entry!(f32, flagged_godot8, bg::encode_roughness_godot8, encode_roughness_godot8_with;
+        roughness_ggx, Input::u32),
 ];
+
+/// [`g::encode_roughness_godot8`] with the flag last, as the parameterised entries call it.
+fn flagged_godot8(r: f32, dynamic_object: u32) -> u32 {
+    g::encode_roughness_godot8(r, dynamic_object)
+}

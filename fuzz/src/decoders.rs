@@ -8,6 +8,7 @@ use prepass::assert_within_abs;
 use prepass::depth24::{self, DEPTH24_MAX};
 use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
 use prepass::roughness;
+use prepass::roughness_ggx as ggx;
 
 /// The documented per-channel rule of `depth24_from_rgb8`, stated independently: NaN → 0,
 /// otherwise a byte nearest `255·clamp(c, 0, 1)`. The function rounds the f32 product, which is
@@ -236,6 +237,62 @@ pub const DECODERS: &[Entry] = &[
         },
     },
     codec!(unorm_decoder; oct::decode_normal_oct24_unity_unorm, oct::decode_normal_oct24_unity),
+        name: "roughness_ggx decoders (code, channel)",
+        check: |i| {
+            let (p, c) = (i.u32(), i.f32());
+            let b = p.min(255);
+            for (name, v, lo) in [
+                ("decode_roughness_ggx8", ggx::decode_roughness_ggx8(p), 0.0),
+                (
+                    "decode_roughness_ggx8_alpha",
+                    ggx::decode_roughness_ggx8_alpha(p),
+                    0.0,
+                ),
+                (
+                    "decode_roughness_godot8",
+                    ggx::decode_roughness_godot8(p),
+                    0.0,
+                ),
+                (
+                    "decode_roughness_ggx8_log",
+                    ggx::decode_roughness_ggx8_log(p),
+                    1.0 / 64.0,
+                ),
+                (
+                    "decode_roughness_ggx8_log_alpha",
+                    ggx::decode_roughness_ggx8_log_alpha(p),
+                    1.0 / 4096.0,
+                ),
+                (
+                    "decode_roughness_ggx8_unorm",
+                    ggx::decode_roughness_ggx8_unorm(c),
+                    0.0,
+                ),
+                (
+                    "decode_roughness_godot8_unorm",
+                    ggx::decode_roughness_godot8_unorm(c),
+                    0.0,
+                ),
+                (
+                    "decode_roughness_ggx8_log_unorm",
+                    ggx::decode_roughness_ggx8_log_unorm(c),
+                    1.0 / 64.0,
+                ),
+            ] {
+                assert!((lo..=1.0).contains(&v), "{name}: {p:#x}, {c:?} → {v:?}");
+            }
+            assert_eq!(ggx::decode_roughness_ggx8(p), ggx::decode_roughness_ggx8(b));
+            assert_eq!(
+                ggx::decode_roughness_godot8(p),
+                ggx::decode_roughness_godot8(b)
+            );
+            assert_eq!(
+                ggx::decode_roughness_ggx8_log(p),
+                ggx::decode_roughness_ggx8_log(b)
+            );
+            assert_eq!(ggx::roughness_godot8_is_dynamic(p), b >> 7);
+        },
+    },
 ];
 
 /// A code decoder with `bits` bits of code: a finite unit vector for every pattern, the bits

@@ -1,6 +1,6 @@
 //! [`ENCODERS`]: any bit patterns in (NaN, infinities, subnormals included), no panic, the
 //! documented output — depth codes, normal codes (every encoding and bit size, precise and
-//! rounding, render-target forms), log roughness.
+//! rounding, render-target forms), log roughness, GGX roughness.
 
 use crate::normal::{check_encoder, codec, oct_bits, rgb10a2_channels, snorm8_channels};
 use crate::{Entry, Input};
@@ -9,6 +9,7 @@ use prepass::assert_within_abs;
 use prepass::depth24::{self, DEPTH24_MAX};
 use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
 use prepass::roughness;
+use prepass::roughness_ggx as ggx;
 
 /// Encoders: any bit patterns in, no panic, the documented output.
 pub const ENCODERS: &[Entry] = &[
@@ -178,6 +179,38 @@ pub const ENCODERS: &[Entry] = &[
     codec!(encoder; oct::encode_normal_oct24_unity, 24),
     codec!(encoder; oct::encode_normal_oct24_unity_fast, 24),
     codec!(unorm_form; oct::encode_normal_oct24_unity_unorm, oct::encode_normal_oct24_unity),
+    Entry {
+        name: "roughness_ggx::{encode_roughness_ggx8, encode_roughness_godot8, encode_roughness_ggx8_log} (+ _unorm)",
+        check: |i| {
+            let (r, s, flag) = (i.f32(), i.f32(), i.u32());
+            let x = f64::from(r);
+            // Exact nearest codes for every bit pattern (NaN → the roughest code).
+            let lin = ggx::encode_roughness_ggx8(r);
+            assert_eq!(lin, ggx::exact::linear_code(x, 255), "{r:?}");
+            let k = ggx::exact::linear_code(x, 127);
+            let g = ggx::encode_roughness_godot8(r, flag);
+            assert_eq!(g, if flag != 0 { 255 - k } else { k }, "{r:?}, {flag:#x}");
+            assert_eq!(ggx::roughness_godot8_is_dynamic(g), u32::from(flag != 0));
+            let log = ggx::encode_roughness_ggx8_log(r);
+            assert_eq!(log, ggx::exact::log_code(x), "{r:?}");
+            // The render-target forms write exactly those bytes.
+            for (c, b) in [
+                (ggx::encode_roughness_ggx8_unorm(r), lin),
+                (ggx::encode_roughness_godot8_unorm(r, flag), g),
+                (ggx::encode_roughness_ggx8_log_unorm(r), log),
+            ] {
+                assert!((0.0..=1.0).contains(&c), "{r:?} → channel {c:?}");
+                assert_eq!((c * 255.0).round() as u32, b, "{r:?}");
+            }
+            // Monotonic in r.
+            if !r.is_nan() && !s.is_nan() {
+                let (lo, hi) = if r <= s { (r, s) } else { (s, r) };
+                assert!(ggx::encode_roughness_ggx8(lo) <= ggx::encode_roughness_ggx8(hi));
+                assert!(ggx::encode_roughness_godot8(lo, 0) <= ggx::encode_roughness_godot8(hi, 0));
+                assert!(ggx::encode_roughness_ggx8_log(lo) <= ggx::encode_roughness_ggx8_log(hi));
+            }
+        },
+    },
 ];
 
 /// A fixed-size encoder ([`check_encoder`]) on a direction read from the input.

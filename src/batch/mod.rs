@@ -1,5 +1,5 @@
-//! Batch twins: every encoder and decoder of [`crate::normal`], [`crate::depth24`] and
-//! [`crate::roughness`] over slices, vectorised, **bit-identical to the scalar twins for every
+//! Batch twins: every encoder and decoder of [`crate::normal`], [`crate::depth24`],
+//! [`crate::roughness`] and the byte forms of [`crate::roughness_ggx`] over slices, vectorised, **bit-identical to the scalar twins for every
 //! input** (NaN, infinities, subnormals and out-of-range codes included), so data encoded here
 //! decodes exactly like the WGSL's on a correctly rounded adapter.
 //!
@@ -8,6 +8,7 @@
 //! | normals: xyz8, xyz10, snorm8, xy FP16, oct16/24/32 (precise, rounding), hemioct24, `_unorm` forms | [`normal`] | [`crate::normal`] |
 //! | 24-bit depth: pack, recover (packed, RGB8), hyperbolic depth, `unpack4x8unorm` | [`depth24`] | [`crate::depth24`] |
 //! | log-range roughness: encode, decode | [`roughness`] | [`crate::roughness`] |
+//! | GGX roughness in 8 bits: linear, Godot, log curve; encode, decode | [`roughness_ggx`] | [`crate::roughness_ggx`] |
 //!
 //! ## Names and the slice contract
 //! Each batch twin has the name of its scalar twin and takes its parameters (the bits of a
@@ -55,6 +56,7 @@
 pub mod depth24;
 pub mod normal;
 pub mod roughness;
+pub mod roughness_ggx;
 
 /// Batches at least this long are split across rayon's pool by the plain (non-`_with`) batch
 /// functions when the `rayon` feature is on: 2^16 elements, enough work per batch (tens of µs

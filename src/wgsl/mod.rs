@@ -37,6 +37,9 @@ pub const POSITION: &str = include_str!("../../wgsl/position.wgsl");
 /// `wgsl/roughness.wgsl`: specular exponent in log range (twin: [`crate::roughness`]).
 pub const ROUGHNESS: &str = include_str!("../../wgsl/roughness.wgsl");
 
+/// `wgsl/roughness_ggx.wgsl`: GGX perceptual roughness in 8 bits (twin: [`crate::roughness_ggx`]).
+pub const ROUGHNESS_GGX: &str = include_str!("../../wgsl/roughness_ggx.wgsl");
+
 /// `wgsl/lpp.wgsl`: light pre-pass P/C, Engel's reconstruction (twin:
 /// [`crate::lighting::lpp`]).
 pub const LPP: &str = include_str!("../../wgsl/lpp.wgsl");
@@ -120,5 +123,9 @@ pub const FILES: &[WgslFile] = &[
     WgslFile {
         name: "roughness.wgsl",
         source: ROUGHNESS,
+    },
+    WgslFile {
+        name: "roughness_ggx.wgsl",
+        source: ROUGHNESS_GGX,
     },
 ];

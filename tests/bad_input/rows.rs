@@ -105,6 +105,7 @@ mod position;
 mod precision;
 mod projection;
 mod roughness;
+mod roughness_ggx;
 
 /// A value in the table: an argument or a result.
 #[derive(Clone, Copy, Debug)]
@@ -280,6 +281,7 @@ pub const TABLES: &[Table] = &[
     table!(position),
     table!(precision),
     table!(roughness),
+    table!(roughness_ggx),
     table!(lpp),
     table!(aggregate_light),
     table!(light_volume),

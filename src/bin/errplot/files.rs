@@ -52,6 +52,13 @@ pub const CSV_FILES: &[(&str, &str, &str)] = &[
          power in the bin)",
     ),
     (
+        "roughness_ggx_error.csv",
+        "one GGX roughness form over one engine's clamped range",
+        "range (the engine whose clamp on r it is), form (linear r, Godot 7 bits + flag, log r), \
+         r_min, max_relative_lobe_error, mean, rms (the worst relative error of the GGX lobe \
+         D(n·h, α) over every n·h, for every f32 r in [r_min, 1], through the Rust twins)",
+    ),
+    (
         "lpp_reconstruction.csv",
         "one light count of the light pre-pass specular reconstruction",
         "lights, pixels, max_relative, mean_relative, rms_relative (against the exact per-light \

@@ -30,6 +30,7 @@ mod normal;
 mod peers;
 mod plot;
 mod roughness;
+mod roughness_ggx;
 mod variant;
 
 use ctx::{Ctx, Options};
@@ -51,6 +52,7 @@ const MEASURING: &[(&str, Section)] = &[
     ("24-bit depth", depth24::section),
     ("normal encodings", normal::section),
     ("roughness", roughness::section),
+    ("GGX roughness", roughness_ggx::section),
     ("light pre-pass (lpp)", lpp::section),
     ("conforming adapters", conforming::section),
 ];
