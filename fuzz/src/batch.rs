@@ -421,6 +421,7 @@ pub const BATCH: &[Entry] = &[
         bn::decode_normal_oct24_unity_unorm,
         decode_normal_oct24_unity_unorm_with
     ),
+    entry!(
         f32,
         g::encode_roughness_ggx8,
         bg::encode_roughness_ggx8,

@@ -237,6 +237,7 @@ pub const DECODERS: &[Entry] = &[
         },
     },
     codec!(unorm_decoder; oct::decode_normal_oct24_unity_unorm, oct::decode_normal_oct24_unity),
+    Entry {
         name: "roughness_ggx decoders (code, channel)",
         check: |i| {
             let (p, c) = (i.u32(), i.f32());
