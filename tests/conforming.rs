@@ -1749,7 +1749,7 @@ fn coverage_modules() -> Vec<(String, String)> {
     use prepass::projection::DepthConvention;
     use prepass::scene::{
         DepthChoice, DepthStorage, LightBuffers, LightingChoice, Lights, NormalChoice,
-        NormalEncoding, PositionChoice, RoughnessChoice, Scene, Specular,
+        NormalEncoding, NormalInput, PositionChoice, RoughnessChoice, Scene, Specular,
     };
     let mut out: Vec<(String, String)> = prepass::wgsl::FILES
         .iter()
@@ -1771,7 +1771,10 @@ fn coverage_modules() -> Vec<(String, String)> {
     ] {
         for convention in [DepthConvention::Standard, DepthConvention::Reversed] {
             for infinite_far in [false, true] {
-                for &normal in &normals {
+                for (&normal, normal_input) in normals
+                    .iter()
+                    .flat_map(|n| [(n, NormalInput::Robust), (n, NormalInput::Vouched)])
+                {
                     let scene = Scene {
                         depth: DepthChoice {
                             storage,
@@ -1780,6 +1783,7 @@ fn coverage_modules() -> Vec<(String, String)> {
                         },
                         position: PositionChoice::World,
                         normal,
+                        normal_input,
                         roughness: RoughnessChoice::Log8,
                         lighting: LightingChoice {
                             lights: Lights::PointAndSpot,

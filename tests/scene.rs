@@ -11,7 +11,7 @@ use prepass::projection::DepthConvention;
 use prepass::scene::gbuffer::{GBufferLayout, Target, TargetFormat, megabytes};
 use prepass::scene::{
     DepthChoice, DepthStorage, Library, LightBuffers, LightingChoice, Lights, NormalChoice,
-    NormalEncoding, PositionChoice, RoughnessChoice, Scene, Specular,
+    NormalEncoding, NormalInput, PositionChoice, RoughnessChoice, Scene, Specular,
 };
 use std::collections::{BTreeSet, HashMap};
 use std::path::Path;
@@ -139,15 +139,18 @@ fn all_scenes() -> Vec<Scene> {
     for &depth in &depths {
         for &position in &positions {
             for &normal in &normals {
-                for roughness in [RoughnessChoice::None, RoughnessChoice::Log8] {
-                    for &lighting in &lightings {
-                        v.push(Scene {
-                            depth,
-                            position,
-                            normal,
-                            roughness,
-                            lighting,
-                        });
+                for normal_input in [NormalInput::Robust, NormalInput::Vouched] {
+                    for roughness in [RoughnessChoice::None, RoughnessChoice::Log8] {
+                        for &lighting in &lightings {
+                            v.push(Scene {
+                                depth,
+                                position,
+                                normal,
+                                normal_input,
+                                roughness,
+                                lighting,
+                            });
+                        }
                     }
                 }
             }
@@ -440,6 +443,7 @@ fn neighbours(s: &Scene) -> Vec<Scene> {
                 t.position != s.position,
                 t.normal.encoding != s.normal.encoding,
                 t.normal.fast_encoder != s.normal.fast_encoder,
+                t.normal_input != s.normal_input,
                 t.roughness != s.roughness,
                 t.lighting.lights != s.lighting.lights,
                 t.lighting.specular != s.lighting.specular,
@@ -503,6 +507,7 @@ fn full_scene() -> Scene {
             encoding: Some(NormalEncoding::Oct24),
             fast_encoder: false,
         },
+        normal_input: NormalInput::Robust,
         roughness: RoughnessChoice::Log8,
         lighting: LightingChoice {
             lights: Lights::PointAndSpot,

@@ -124,9 +124,15 @@ fn oct_try_wide(s: vec3<f32>, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -
 // - the code from the bits of c00 + 2^23 (0x4b000000 + c00, exact): the bias of the high half
 //   shifts out of the u32 (bits >= 8), the low half's is taken off.
 fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
-    let m = f32((1u << bits) - 1u);
     let s = oct_sanitize(n).xyz;
-    let c00 = floor(oct_continuous(s, m));
+    return oct_choose(s, oct_continuous(s, f32((1u << bits) - 1u)), bits);
+}
+
+// The precise encoders' choice for a scaled input s (largest magnitude in [1, 4), or zero) and
+// its continuous coordinates c: the body of oct_encode_precise, shared with the vouched form.
+fn oct_choose(s: vec3<f32>, c: vec2<f32>, bits: u32) -> u32 {
+    let m = f32((1u << bits) - 1u);
+    let c00 = floor(c);
     let ab0 = (c00 + c00) - vec2<f32>(m);
     let ab1 = ab0 + vec2<f32>(2.0);
     let a = vec4<f32>(ab0.x, ab1.x, ab0.x, ab1.x);
@@ -154,9 +160,15 @@ fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
 // oct_encode_precise at 16 bits per axis, with oct_try_wide's exact |D|^2 (a u32 sum of the
 // squares, rounded once; each square from the bits of |D_k| + 2^23, see oct_try_wide).
 fn oct_encode_precise_wide(n: vec3<f32>) -> u32 {
-    let m = 65535.0;
     let s = oct_sanitize(n).xyz;
-    let c00 = floor(oct_continuous(s, m));
+    return oct_choose_wide(s, oct_continuous(s, 65535.0));
+}
+
+// oct_choose at 16 bits per axis: the body of oct_encode_precise_wide, shared with the vouched
+// form.
+fn oct_choose_wide(s: vec3<f32>, c: vec2<f32>) -> u32 {
+    let m = 65535.0;
+    let c00 = floor(c);
     let ab0 = (c00 + c00) - vec2<f32>(m);
     let ab1 = ab0 + vec2<f32>(2.0);
     let a = vec4<f32>(ab0.x, ab1.x, ab0.x, ab1.x);
@@ -194,6 +206,61 @@ fn oct_encode_round(n: vec3<f32>, bits: u32) -> u32 {
     return uv.x | (uv.y << bits);
 }
 
+// ---- Vouched input: for vectors a scene vouches for (its own interpolated normals) ----
+// The contract: every component finite; every non-zero component at least 2^-126 max(1, |n|inf)
+// in magnitude (no subnormals, and none so small beside the largest that oct_sanitize's scaling
+// would make it subnormal); |n|inf = max(|x|, |y|, |z|) <= 2^124. The zero vector is in it (+z).
+// Within it each vouched encoder returns the robust encoder's code bit for bit on a correctly
+// rounded adapter (oct_sanitize would change nothing but an exact power-of-two scale, and the
+// projection s.xy / |s|_1 does not see that scale), so the robust forms' error bounds hold.
+// Outside it (NaN, +-Inf, subnormals, |n|inf > 2^124) WGSL leaves the result indeterminate: some
+// u32, which every decoder accepts (bits above 2N may be set; the decoders ignore them).
+
+// oct_continuous for a vouched vector: the same projection with its L1 norm (a sum of
+// non-negative normal floats, at most 3 * 2^124 < 2^126 in the contract: no overflow, and the
+// divisor inside the spec's [2^-126, 2^126] range for `/`) kept at least 2^-126, which changes
+// no in-contract non-zero vector (its L1 norm is at least its largest component, >= 2^-126)
+// and gives the zero vector p = 0, the code of +z, as oct_sanitize's +z does.
+fn oct_continuous_vouched(n: vec3<f32>, m: f32) -> vec2<f32> {
+    let a = abs(n);
+    let l1 = max((a.x + a.y) + a.z, 1.1754943508222875e-38);
+    var p = n.xy / l1;
+    if (n.z < 0.0) {
+        let sgn = select(vec2<f32>(-1.0), vec2<f32>(1.0), p >= vec2<f32>(0.0));
+        p = (vec2<f32>(1.0) - abs(p.yx)) * sgn;
+    }
+    let t = clamp(p * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(0.99999988079071044921875));
+    return t * m;
+}
+
+// A vouched vector times oct_sanitize's power of two 2^(127 - e), e the biased exponent of its
+// largest magnitude (largest then in [1, 2)): exact in the contract (every non-zero component
+// stays at least 2^-126), so it is oct_sanitize's vector bit for bit; zero stays zero. The
+// precise encoders' scores need it (|s x D|^2 of an unscaled 2^124 would overflow).
+fn oct_scale_vouched(n: vec3<f32>) -> vec3<f32> {
+    let a = abs(n);
+    let e = bitcast<u32>(max(max(a.x, a.y), a.z)) >> 23u;
+    return n * bitcast<f32>((254u - e) << 23u);
+}
+
+// oct_encode_precise for a vouched vector: no sanitising, the same choice.
+fn oct_encode_precise_vouched(n: vec3<f32>, bits: u32) -> u32 {
+    let s = oct_scale_vouched(n);
+    return oct_choose(s, oct_continuous_vouched(s, f32((1u << bits) - 1u)), bits);
+}
+
+// oct_encode_precise_wide for a vouched vector.
+fn oct_encode_precise_wide_vouched(n: vec3<f32>) -> u32 {
+    let s = oct_scale_vouched(n);
+    return oct_choose_wide(s, oct_continuous_vouched(s, 65535.0));
+}
+
+// oct_encode_round for a vouched vector: nearest code per axis of the unscaled projection.
+fn oct_encode_round_vouched(n: vec3<f32>, bits: u32) -> u32 {
+    let uv = vec2<u32>(round(oct_continuous_vouched(n, f32((1u << bits) - 1u))));
+    return uv.x | (uv.y << bits);
+}
+
 // The unit vector of code p with `bits` bits per axis: its integer direction D, normalised.
 fn oct_decode(p: u32, bits: u32) -> vec3<f32> {
     let m = (1u << bits) - 1u;
@@ -218,6 +285,15 @@ fn encode_normal_oct16(n: vec3<f32>) -> u32 {
 fn encode_normal_oct16_fast(n: vec3<f32>) -> u32 {
     return oct_encode_round(n, 8u);
 }
+// encode_normal_oct16 for a vector the scene vouches for (the contract above the vouched
+// helpers): the same code, without the bad-input handling.
+fn encode_normal_oct16_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_precise_vouched(n, 8u);
+}
+// encode_normal_oct16_fast for a vector the scene vouches for: the same code, cheaper.
+fn encode_normal_oct16_fast_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_round_vouched(n, 8u);
+}
 // The unit vector of a 2x8-bit code; bits 16-31 are ignored.
 fn decode_normal_oct16(p: u32) -> vec3<f32> {
     return oct_decode(p, 8u);
@@ -241,6 +317,15 @@ fn encode_normal_oct24(n: vec3<f32>) -> u32 {
 fn encode_normal_oct24_fast(n: vec3<f32>) -> u32 {
     return oct_encode_round(n, 12u);
 }
+// encode_normal_oct24 for a vector the scene vouches for (the contract above the vouched
+// helpers): the same code, without the bad-input handling.
+fn encode_normal_oct24_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_precise_vouched(n, 12u);
+}
+// encode_normal_oct24_fast for a vector the scene vouches for: the same code, cheaper.
+fn encode_normal_oct24_fast_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_round_vouched(n, 12u);
+}
 // The unit vector of a 2x12-bit code; bits 24-31 are ignored.
 fn decode_normal_oct24(p: u32) -> vec3<f32> {
     return oct_decode(p, 12u);
@@ -262,6 +347,15 @@ fn encode_normal_oct32(n: vec3<f32>) -> u32 {
 // The 2x16-bit code by rounding each axis: cheaper, not always the closest direction.
 fn encode_normal_oct32_fast(n: vec3<f32>) -> u32 {
     return oct_encode_round(n, 16u);
+}
+// encode_normal_oct32 for a vector the scene vouches for (the contract above the vouched
+// helpers): the same code, without the bad-input handling.
+fn encode_normal_oct32_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_precise_wide_vouched(n);
+}
+// encode_normal_oct32_fast for a vector the scene vouches for: the same code, cheaper.
+fn encode_normal_oct32_fast_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_round_vouched(n, 16u);
 }
 // The unit vector of a 2x16-bit code (every bit pattern decodes).
 fn decode_normal_oct32(p: u32) -> vec3<f32> {

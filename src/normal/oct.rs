@@ -15,7 +15,12 @@
 //! `encode_normal_oct24_fast`, `decode_normal_oct24`, `encode_normal_oct24_unorm`,
 //! `decode_normal_oct24_unorm`; `encode_normal_oct32`, `encode_normal_oct32_fast`,
 //! `decode_normal_oct32`, `encode_normal_oct32_unorm`, `decode_normal_oct32_unorm`. Each has
-//! the WGSL function's name; the bit count is the code's total (oct24 = 2×12 bits).
+//! the WGSL function's name; the bit count is the code's total (oct24 = 2×12 bits). For vectors
+//! a scene vouches for (finite, no subnormals; see [`encode_precise_vouched`]):
+//! `encode_normal_oct16_vouched`, `encode_normal_oct16_fast_vouched`,
+//! `encode_normal_oct24_vouched`, `encode_normal_oct24_fast_vouched`,
+//! `encode_normal_oct32_vouched`, `encode_normal_oct32_fast_vouched` — the robust encoders'
+//! codes bit for bit inside that contract, without their bad-input handling.
 //!
 //! The *precise* encoder (the survey's) tries the four codes around the continuous coordinates
 //! and keeps the one whose direction is closest to the input; the `_fast` encoder rounds each
@@ -105,9 +110,15 @@ fn sin2(s: Vec3, uv: UVec2, bits: u32) -> f32 {
 /// `normalize(D)` to within `√2·2^-24` rad. Measured over 2^24 directions: worst excess 5.4e-6°.
 /// Bit-identical to the WGSL on a correctly rounded adapter.
 pub fn encode_precise(n: Vec3, bits: u32) -> u32 {
-    let m = max_code(bits);
     let s = sanitize(n).unwrap_or(Vec3::Z);
-    let c = continuous(s, bits);
+    choose(s, continuous(s, bits), bits)
+}
+
+/// The precise encoders' choice (the WGSL's `oct_choose`, `oct_choose_wide`) for a scaled input
+/// `s` and its continuous coordinates `c`: shared by [`encode_precise`] and
+/// [`encode_precise_vouched`].
+fn choose(s: Vec3, c: Vec2, bits: u32) -> u32 {
+    let m = max_code(bits);
     // c < M (see `continuous`), so c00 + 1 ≤ M.
     let c00 = UVec2::new(c.x.floor() as u32, c.y.floor() as u32);
     debug_assert!(c00.max_element() < m);
@@ -130,6 +141,92 @@ pub fn encode_round(n: Vec3, bits: u32) -> u32 {
     (c.x.round_ties_even() as u32) | ((c.y.round_ties_even() as u32) << bits)
 }
 
+/// The largest component magnitude `2^124` a vouched input may have (see [`encode_precise_vouched`]).
+pub const VOUCHED_MAX: f32 = f32::from_bits(0x7d80_0000);
+
+/// Whether `n` is inside the vouched encoders' contract ([`encode_precise_vouched`]): every
+/// component finite, every non-zero one at least `2^-126·max(1, ‖n‖∞)` in magnitude, and
+/// `‖n‖∞ ≤ 2^124`. The zero vector (either sign of each zero) is inside.
+pub fn is_vouched(n: Vec3) -> bool {
+    let a = n.abs();
+    let big = a.max_element();
+    if !(big <= VOUCHED_MAX) {
+        // NaN fails this comparison too.
+        return false;
+    }
+    let least = f32::MIN_POSITIVE * big.max(1.0);
+    a.to_array().iter().all(|&c| c == 0.0 || c >= least)
+}
+
+/// [`continuous`] for a vouched vector (the WGSL's `oct_continuous_vouched`): the same projection
+/// `n.xy / max(|x| + |y| + |z|, 2^-126)`, folded and mapped as there, with no sanitising. The
+/// `max` changes no in-contract non-zero vector (its L1 norm is at least its largest component,
+/// at least `2^-126`) and sends the zero vector to `p = 0`, the code of +z. In the contract the
+/// L1 norm is at most `3·2^124 < 2^126`: no overflow, the divisor inside WGSL's range for `/`.
+pub fn continuous_vouched(n: Vec3, bits: u32) -> Vec2 {
+    let a = n.abs();
+    let l1 = ((a.x + a.y) + a.z).max(f32::MIN_POSITIVE);
+    let mut p = Vec2::new(n.x / l1, n.y / l1);
+    if n.z < 0.0 {
+        let sgn = Vec2::new(
+            if p.x >= 0.0 { 1.0 } else { -1.0 },
+            if p.y >= 0.0 { 1.0 } else { -1.0 },
+        );
+        p = (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
+    }
+    let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(CONTINUOUS_TOP));
+    t * max_code(bits) as f32
+}
+
+/// A vouched vector times `2^(127 − e)`, `e` the biased exponent of its largest magnitude (the
+/// WGSL's `oct_scale_vouched`): the power of two [`sanitize`] picks, so in the contract (no
+/// component made subnormal) exactly `sanitize(n)`; the zero vector stays zero. The `u32`
+/// arithmetic wraps as WGSL's does, so an out-of-contract input gives some float, no panic.
+pub fn scale_vouched(n: Vec3) -> Vec3 {
+    let e = n.abs().max_element().to_bits() >> 23;
+    n * f32::from_bits(254u32.wrapping_sub(e) << 23)
+}
+
+/// The precise encoder for a vector the scene vouches for (twin of the WGSL
+/// `oct_encode_precise_vouched` behind `encode_normal_oct16_vouched`, `…oct24_vouched`,
+/// `…oct32_vouched`): [`encode_precise`] without the bad-input handling.
+///
+/// **Contract** ([`is_vouched`]): every component finite, every non-zero component at least
+/// `2^-126·max(1, ‖n‖∞)` in magnitude (so no subnormals, and for a vector longer than 1 nothing
+/// below `2^-126` of its largest), and `‖n‖∞ ≤ 2^124`; the zero vector is inside (code of +z).
+/// An interpolated normal of any length a renderer produces is inside.
+///
+/// **Maths:** `s = n·2^(127−e)` ([`scale_vouched`]) is exact in the contract and equals
+/// `sanitize(n)` (which would only flush subnormals, none here, and scale by the same power of
+/// two); the choice is then [`encode_precise`]'s, on the same `s`. So the code is
+/// [`encode_precise`]'s bit for bit, and so is its **error bound** (the same function of the
+/// same input). The WGSL is bit-identical to this twin on a correctly rounded adapter.
+///
+/// **Outside the contract** (NaN, ±Inf, subnormal components, `‖n‖∞ > 2^124`): the WGSL's
+/// result is indeterminate — some `u32`, which every decoder accepts (bits above the code may be
+/// set; decoders ignore them). This twin returns a deterministic code there (NaN coordinates
+/// convert to 0) and never panics.
+pub fn encode_precise_vouched(n: Vec3, bits: u32) -> u32 {
+    let s = scale_vouched(n);
+    choose(s, continuous_vouched(s, bits), bits)
+}
+
+/// The rounding encoder for a vector the scene vouches for (twin of the WGSL
+/// `oct_encode_round_vouched` behind the `_fast_vouched` encoders): each coordinate of
+/// [`continuous_vouched`] rounded to the nearest code (half to even), with no sanitising and no
+/// scaling.
+///
+/// **Contract:** [`encode_precise_vouched`]'s ([`is_vouched`]). **Maths:** in the contract
+/// `sanitize(n) = n·2^k` exactly, and every step before the quotient (`|x| + |y| + |z|` of
+/// non-negative normal floats, at most `3·2^124`) commutes with that power of two, as does a
+/// correctly rounded quotient `n.xy / l1`; the rest is [`continuous`]'s. So the code is
+/// [`encode_round`]'s bit for bit on a correctly rounded adapter, with its **error bound**.
+/// **Outside the contract:** as [`encode_precise_vouched`] (WGSL: some `u32`, indeterminate).
+pub fn encode_round_vouched(n: Vec3, bits: u32) -> u32 {
+    let c = continuous_vouched(n, bits);
+    (c.x.round_ties_even() as u32) | ((c.y.round_ties_even() as u32) << bits)
+}
+
 /// Decode `bits` bits per axis: `normalize(D)` of the code's exact integer vector.
 /// Every bit pattern gives a finite unit vector (D is never zero: its L1 norm is M).
 pub fn decode(p: u32, bits: u32) -> Vec3 {
@@ -138,8 +235,8 @@ pub fn decode(p: u32, bits: u32) -> Vec3 {
 }
 
 macro_rules! oct_size {
-    ($bits:literal, $enc:ident, $fast:ident, $dec:ident, $enc_unorm:ident, $dec_unorm:ident,
-     $what:literal) => {
+    ($bits:literal, $enc:ident, $fast:ident, $enc_v:ident, $fast_v:ident, $dec:ident,
+     $enc_unorm:ident, $dec_unorm:ident, $what:literal) => {
         #[doc = concat!("Precise octahedral encoder, ", $what, " (twin of the WGSL function of the same name; see [`encode_precise`]). Bad input: see [`crate::normal`].")]
         pub fn $enc(n: Vec3) -> u32 {
             encode_precise(n, $bits)
@@ -147,6 +244,14 @@ macro_rules! oct_size {
         #[doc = concat!("Rounding octahedral encoder, ", $what, " (see [`encode_round`]). Bad input: see [`crate::normal`].")]
         pub fn $fast(n: Vec3) -> u32 {
             encode_round(n, $bits)
+        }
+        #[doc = concat!("Precise octahedral encoder for vouched input, ", $what, ": `", stringify!($enc), "`'s code bit for bit inside the contract, cheaper (see [`encode_precise_vouched`]: contract, maths, bound, out-of-contract result).")]
+        pub fn $enc_v(n: Vec3) -> u32 {
+            encode_precise_vouched(n, $bits)
+        }
+        #[doc = concat!("Rounding octahedral encoder for vouched input, ", $what, ": `", stringify!($fast), "`'s code bit for bit inside the contract, cheaper (see [`encode_round_vouched`]).")]
+        pub fn $fast_v(n: Vec3) -> u32 {
+            encode_round_vouched(n, $bits)
         }
         #[doc = concat!("Octahedral decoder, ", $what, " (see [`decode`]); bits above the code are ignored.")]
         pub fn $dec(p: u32) -> Vec3 {
@@ -167,6 +272,8 @@ oct_size!(
     8,
     encode_normal_oct16,
     encode_normal_oct16_fast,
+    encode_normal_oct16_vouched,
+    encode_normal_oct16_fast_vouched,
     decode_normal_oct16,
     encode_normal_oct16_unorm,
     decode_normal_oct16_unorm,
@@ -176,6 +283,8 @@ oct_size!(
     12,
     encode_normal_oct24,
     encode_normal_oct24_fast,
+    encode_normal_oct24_vouched,
+    encode_normal_oct24_fast_vouched,
     decode_normal_oct24,
     encode_normal_oct24_unorm,
     decode_normal_oct24_unorm,
@@ -185,6 +294,8 @@ oct_size!(
     16,
     encode_normal_oct32,
     encode_normal_oct32_fast,
+    encode_normal_oct32_vouched,
+    encode_normal_oct32_fast_vouched,
     decode_normal_oct32,
     encode_normal_oct32_unorm,
     decode_normal_oct32_unorm,
