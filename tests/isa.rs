@@ -482,3 +482,65 @@ fn the_freedoms_the_compilers_take_are_the_ones_the_emulation_models() {
             .trim_end_matches(" -->\n"),
     );
 }
+
+/// The vouched-input encoders (`encode_normal_oct*_vouched`, `…_fast_vouched`) beside their
+/// robust siblings and Bevy's G-buffer oct24 encoder (the peer `tests/baselines/peer_bevy.wgsl`),
+/// on every target: each compiles, and on every target the vouched form costs no more than its
+/// robust sibling (the same code inside the contract, with the sanitising taken out; a
+/// comparison of static compiler estimates, not a timing). The figures are printed (net
+/// instructions and ACO inverse throughput or brw cycles), not published.
+#[test]
+fn vouched_encoders_cost_less_than_their_robust_siblings() {
+    const BEVY: &str = include_str!("baselines/peer_bevy.wgsl");
+    let names = [
+        "encode_normal_oct16",
+        "encode_normal_oct16_fast",
+        "encode_normal_oct24",
+        "encode_normal_oct24_fast",
+        "encode_normal_oct32",
+        "encode_normal_oct32_fast",
+    ];
+    let mut list = Vec::new();
+    for name in names {
+        list.push(Function::new(prepass::wgsl::NORMAL_OCT, name));
+        list.push(Function::new(
+            prepass::wgsl::NORMAL_OCT,
+            &format!("{name}_vouched"),
+        ));
+    }
+    list.push(Function::new(BEVY, "peer_bevy_gbuffer_normal_encode"));
+    let report = Costing::new().cost(&list).unwrap();
+    let targets = measured(&report);
+    let mut table = String::from("| encoder | robust | vouched | vouched/robust |\n");
+    for (t, _) in &targets {
+        let bevy = report.get(*t, 2 * names.len()).expect("compiled").net;
+        let _ = writeln!(
+            table,
+            "{}: peer_bevy_gbuffer_normal_encode {:.1} instructions, {:.1} ranked",
+            t.label(),
+            bevy.instructions,
+            bevy.rank()
+        );
+        for (i, name) in names.iter().enumerate() {
+            let (r, v) = (
+                report.get(*t, 2 * i).expect("compiled").net,
+                report.get(*t, 2 * i + 1).expect("compiled").net,
+            );
+            let _ = writeln!(
+                table,
+                "{}: {name}: robust {:.1} instr / {:.1} ranked; vouched {:.1} instr / {:.1} ranked",
+                t.label(),
+                r.instructions,
+                r.rank(),
+                v.instructions,
+                v.rank()
+            );
+            assert!(
+                v.instructions <= r.instructions && v.rank() <= r.rank(),
+                "{}: {name}_vouched costs more than {name}: {v:?} vs {r:?}",
+                t.label()
+            );
+        }
+    }
+    eprintln!("{table}");
+}

@@ -209,28 +209,27 @@ fn oct_encode_round(n: vec3<f32>, bits: u32) -> u32 {
 // ---- Vouched input: for vectors a scene vouches for (its own interpolated normals) ----
 // The contract: every component finite; every non-zero component at least 2^-126 max(1, |n|inf)
 // in magnitude (no subnormals, and none so small beside the largest that oct_sanitize's scaling
-// would make it subnormal); |n|inf = max(|x|, |y|, |z|) <= 2^124. The zero vector is in it (+z).
-// Within it each vouched encoder returns the robust encoder's code bit for bit on a correctly
-// rounded adapter (oct_sanitize would change nothing but an exact power-of-two scale, and the
-// projection s.xy / |s|_1 does not see that scale), so the robust forms' error bounds hold.
-// Outside it (NaN, +-Inf, subnormals, |n|inf > 2^124) WGSL leaves the result indeterminate: some
-// u32, which every decoder accepts (bits above 2N may be set; the decoders ignore them).
+// would make it subnormal); 0 < |n|inf = max(|x|, |y|, |z|) <= 2^124. Within it each vouched
+// encoder returns the robust encoder's code bit for bit on a correctly rounded adapter
+// (oct_sanitize would change nothing but an exact power-of-two scale, and the projection
+// s.xy / |s|_1 does not see that scale), so the robust forms' error bounds hold; on any
+// conforming adapter every intermediate is finite and each axis a code in [0, M]. Outside it
+// (NaN, +-Inf, subnormals, |n|inf > 2^124) WGSL leaves the result indeterminate: some u32,
+// which every decoder accepts (bits above 2N may be set; the decoders ignore them). The zero
+// vector is outside too: the precise vouched encoders still give +z for it, as the robust ones
+// (one max in about 130 instructions), the fast ones leave it indeterminate (0 / 0).
 
-// oct_continuous for a vouched vector: the same projection with its L1 norm (a sum of
-// non-negative normal floats, at most 3 * 2^124 < 2^126 in the contract: no overflow, and the
-// divisor inside the spec's [2^-126, 2^126] range for `/`) kept at least 2^-126, which changes
-// no in-contract non-zero vector (its L1 norm is at least its largest component, >= 2^-126)
-// and gives the zero vector p = 0, the code of +z, as oct_sanitize's +z does.
-fn oct_continuous_vouched(n: vec3<f32>, m: f32) -> vec2<f32> {
-    let a = abs(n);
-    let l1 = max((a.x + a.y) + a.z, 1.1754943508222875e-38);
-    var p = n.xy / l1;
+// The octahedral projection (oct_continuous's p, before the map to codes) of a vouched vector
+// n with l1 = |n|_1 (or more, for the zero vector): n.xy / l1, folded when n.z < 0 (the sign
+// of +-0 counts as +). In the contract |n|_1, a sum of non-negative normal floats, lies in
+// [2^-126, 3 * 2^124]: no overflow, and the divisor inside the spec's [2^-126, 2^126] for `/`.
+fn oct_project_vouched(n: vec3<f32>, l1: f32) -> vec2<f32> {
+    let p = n.xy / l1;
     if (n.z < 0.0) {
         let sgn = select(vec2<f32>(-1.0), vec2<f32>(1.0), p >= vec2<f32>(0.0));
-        p = (vec2<f32>(1.0) - abs(p.yx)) * sgn;
+        return (vec2<f32>(1.0) - abs(p.yx)) * sgn;
     }
-    let t = clamp(p * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(0.99999988079071044921875));
-    return t * m;
+    return p;
 }
 
 // A vouched vector times oct_sanitize's power of two 2^(127 - e), e the biased exponent of its
@@ -241,6 +240,16 @@ fn oct_scale_vouched(n: vec3<f32>) -> vec3<f32> {
     let a = abs(n);
     let e = bitcast<u32>(max(max(a.x, a.y), a.z)) >> 23u;
     return n * bitcast<f32>((254u - e) << 23u);
+}
+
+// The continuous code coordinates (as oct_continuous's) of a vouched vector scaled by
+// oct_scale_vouched, for the precise encoders: its L1 norm kept at least 2^-126, which changes
+// no in-contract vector and gives the zero vector p = 0, the code of +z, as oct_sanitize's +z.
+fn oct_continuous_vouched(s: vec3<f32>, m: f32) -> vec2<f32> {
+    let a = abs(s);
+    let p = oct_project_vouched(s, max((a.x + a.y) + a.z, 1.1754943508222875e-38));
+    let t = clamp(p * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(0.99999988079071044921875));
+    return t * m;
 }
 
 // oct_encode_precise for a vouched vector: no sanitising, the same choice.
@@ -255,10 +264,29 @@ fn oct_encode_precise_wide_vouched(n: vec3<f32>) -> u32 {
     return oct_choose_wide(s, oct_continuous_vouched(s, 65535.0));
 }
 
-// oct_encode_round for a vouched vector: nearest code per axis of the unscaled projection.
+// The rounding encoder's code per axis, round(t M) (half to even), for a vouched vector:
+// unscaled, and without oct_continuous's clamp, which changes no code: p is in [-1, 1] up to
+// the division's error, so t = p/2 + 1/2 is in [0, 1] up to a few ULP, and round(t M) of a t
+// above oct_continuous's top 1 - 2^-23 is M, as rounding the top gives; below 0 it is -0.
+fn oct_round_vouched(n: vec3<f32>, m: f32) -> vec2<f32> {
+    let a = abs(n);
+    let t = oct_project_vouched(n, (a.x + a.y) + a.z) * 0.5 + 0.5;
+    return round(t * m);
+}
+
+// oct_encode_round for a vouched vector, 8 or 12 bits per axis: the code u + v 2^bits summed in
+// f32 (whole numbers below 2^24: exact, fused or not) and converted once.
 fn oct_encode_round_vouched(n: vec3<f32>, bits: u32) -> u32 {
-    let uv = vec2<u32>(round(oct_continuous_vouched(n, f32((1u << bits) - 1u))));
-    return uv.x | (uv.y << bits);
+    let r = oct_round_vouched(n, f32((1u << bits) - 1u));
+    return u32(r.y * f32(1u << bits) + r.x);
+}
+
+// oct_encode_round_vouched at 16 bits per axis, where u + v 2^16 needs 32 bits: each axis read
+// from the bits of round(t M) + 2^23 (exact), as oct_encode_precise reads its code: the bias of
+// v shifts out of the u32, u's is taken off.
+fn oct_encode_round_wide_vouched(n: vec3<f32>) -> u32 {
+    let w = bitcast<vec2<u32>>(oct_round_vouched(n, 65535.0) + vec2<f32>(8388608.0));
+    return (w.x + (w.y << 16u)) - 0x4b000000u;
 }
 
 // The unit vector of code p with `bits` bits per axis: its integer direction D, normalised.
@@ -355,7 +383,7 @@ fn encode_normal_oct32_vouched(n: vec3<f32>) -> u32 {
 }
 // encode_normal_oct32_fast for a vector the scene vouches for: the same code, cheaper.
 fn encode_normal_oct32_fast_vouched(n: vec3<f32>) -> u32 {
-    return oct_encode_round_vouched(n, 16u);
+    return oct_encode_round_wide_vouched(n);
 }
 // The unit vector of a 2x16-bit code (every bit pattern decodes).
 fn decode_normal_oct32(p: u32) -> vec3<f32> {

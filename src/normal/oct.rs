@@ -16,7 +16,7 @@
 //! `decode_normal_oct24_unorm`; `encode_normal_oct32`, `encode_normal_oct32_fast`,
 //! `decode_normal_oct32`, `encode_normal_oct32_unorm`, `decode_normal_oct32_unorm`. Each has
 //! the WGSL function's name; the bit count is the code's total (oct24 = 2×12 bits). For vectors
-//! a scene vouches for (finite, no subnormals; see [`encode_precise_vouched`]):
+//! a scene vouches for (finite, non-zero, no subnormals; see [`encode_precise_vouched`]):
 //! `encode_normal_oct16_vouched`, `encode_normal_oct16_fast_vouched`,
 //! `encode_normal_oct24_vouched`, `encode_normal_oct24_fast_vouched`,
 //! `encode_normal_oct32_vouched`, `encode_normal_oct32_fast_vouched` — the robust encoders'
@@ -146,11 +146,11 @@ pub const VOUCHED_MAX: f32 = f32::from_bits(0x7d80_0000);
 
 /// Whether `n` is inside the vouched encoders' contract ([`encode_precise_vouched`]): every
 /// component finite, every non-zero one at least `2^-126·max(1, ‖n‖∞)` in magnitude, and
-/// `‖n‖∞ ≤ 2^124`. The zero vector (either sign of each zero) is inside.
+/// `0 < ‖n‖∞ ≤ 2^124`.
 pub fn is_vouched(n: Vec3) -> bool {
     let a = n.abs();
     let big = a.max_element();
-    if !(big <= VOUCHED_MAX) {
+    if !(big > 0.0 && big <= VOUCHED_MAX) {
         // NaN fails this comparison too.
         return false;
     }
@@ -158,22 +158,31 @@ pub fn is_vouched(n: Vec3) -> bool {
     a.to_array().iter().all(|&c| c == 0.0 || c >= least)
 }
 
-/// [`continuous`] for a vouched vector (the WGSL's `oct_continuous_vouched`): the same projection
-/// `n.xy / max(|x| + |y| + |z|, 2^-126)`, folded and mapped as there, with no sanitising. The
-/// `max` changes no in-contract non-zero vector (its L1 norm is at least its largest component,
-/// at least `2^-126`) and sends the zero vector to `p = 0`, the code of +z. In the contract the
-/// L1 norm is at most `3·2^124 < 2^126`: no overflow, the divisor inside WGSL's range for `/`.
-pub fn continuous_vouched(n: Vec3, bits: u32) -> Vec2 {
-    let a = n.abs();
-    let l1 = ((a.x + a.y) + a.z).max(f32::MIN_POSITIVE);
-    let mut p = Vec2::new(n.x / l1, n.y / l1);
+/// The octahedral projection of a vouched vector `n` with `l1 = |x| + |y| + |z|` (the WGSL's
+/// `oct_project_vouched`; the `p` of [`continuous`], before the map to codes): `n.xy / l1`,
+/// folded when `n.z < 0` (the sign of ±0 counts as +), with no sanitising. In the contract
+/// `l1`, a sum of non-negative normal floats, lies in `[2^-126, 3·2^124]`: no overflow, and the
+/// divisor inside WGSL's `[2^-126, 2^126]` for `/`.
+pub fn project_vouched(n: Vec3, l1: f32) -> Vec2 {
+    let p = Vec2::new(n.x / l1, n.y / l1);
     if n.z < 0.0 {
         let sgn = Vec2::new(
             if p.x >= 0.0 { 1.0 } else { -1.0 },
             if p.y >= 0.0 { 1.0 } else { -1.0 },
         );
-        p = (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
+        return (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
     }
+    p
+}
+
+/// [`continuous`] for a vouched vector scaled by [`scale_vouched`] (the WGSL's
+/// `oct_continuous_vouched`, behind the precise vouched encoders): [`project_vouched`] with the
+/// L1 norm kept at least `2^-126` — which changes no in-contract vector and sends the zero
+/// vector to `p = 0`, the code of +z, as [`sanitize`]'s `None` does — then [`continuous`]'s
+/// clamped map `(p/2 + 1/2)·M`.
+pub fn continuous_vouched(s: Vec3, bits: u32) -> Vec2 {
+    let a = s.abs();
+    let p = project_vouched(s, ((a.x + a.y) + a.z).max(f32::MIN_POSITIVE));
     let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(CONTINUOUS_TOP));
     t * max_code(bits) as f32
 }
@@ -193,8 +202,10 @@ pub fn scale_vouched(n: Vec3) -> Vec3 {
 ///
 /// **Contract** ([`is_vouched`]): every component finite, every non-zero component at least
 /// `2^-126·max(1, ‖n‖∞)` in magnitude (so no subnormals, and for a vector longer than 1 nothing
-/// below `2^-126` of its largest), and `‖n‖∞ ≤ 2^124`; the zero vector is inside (code of +z).
-/// An interpolated normal of any length a renderer produces is inside.
+/// below `2^-126` of its largest), and `0 < ‖n‖∞ ≤ 2^124`. An interpolated normal of any
+/// length a renderer produces is inside. The zero vector is outside, yet this precise form
+/// still encodes it as +z, as [`encode_precise`] does (a `max` on the L1 norm,
+/// [`continuous_vouched`]); the `_fast` form leaves it indeterminate.
 ///
 /// **Maths:** `s = n·2^(127−e)` ([`scale_vouched`]) is exact in the contract and equals
 /// `sanitize(n)` (which would only flush subnormals, none here, and scale by the same power of
@@ -212,19 +223,33 @@ pub fn encode_precise_vouched(n: Vec3, bits: u32) -> u32 {
 }
 
 /// The rounding encoder for a vector the scene vouches for (twin of the WGSL
-/// `oct_encode_round_vouched` behind the `_fast_vouched` encoders): each coordinate of
-/// [`continuous_vouched`] rounded to the nearest code (half to even), with no sanitising and no
-/// scaling.
+/// `oct_encode_round_vouched`, 8 and 12 bits, and `oct_encode_round_wide_vouched`, 16 bits,
+/// behind the `_fast_vouched` encoders): each coordinate of `t = p/2 + 1/2`, `p` from
+/// [`project_vouched`] with `l1 = |x| + |y| + |z|` (no sanitising, no scaling, no guard), rounded
+/// to the nearest code `round(t·M)` (half to even). The WGSL assembles the code as
+/// `u32(v·2^bits + u)` (whole numbers below 2^24, exact) at 8 and 12 bits and from the bits of
+/// `round(t·M) + 2^23` at 16; in the contract both are `u | v << bits`.
 ///
-/// **Contract:** [`encode_precise_vouched`]'s ([`is_vouched`]). **Maths:** in the contract
-/// `sanitize(n) = n·2^k` exactly, and every step before the quotient (`|x| + |y| + |z|` of
-/// non-negative normal floats, at most `3·2^124`) commutes with that power of two, as does a
-/// correctly rounded quotient `n.xy / l1`; the rest is [`continuous`]'s. So the code is
-/// [`encode_round`]'s bit for bit on a correctly rounded adapter, with its **error bound**.
-/// **Outside the contract:** as [`encode_precise_vouched`] (WGSL: some `u32`, indeterminate).
+/// **Contract:** [`encode_precise_vouched`]'s ([`is_vouched`]; the zero vector is outside it).
+/// **Maths:** in the contract `sanitize(n) = n·2^k` exactly, and every step before the quotient
+/// (`|x| + |y| + |z|` of non-negative normal floats, at most `3·2^124`) commutes with that power
+/// of two, as does a correctly rounded quotient `n.xy / l1`; so `p` is [`continuous`]'s.
+/// [`continuous`] then clamps `t` to `[0, 1 − 2^-23]`, which changes no rounded code:
+/// `p ∈ [−1, 1]` up to the division's error, and `round(t·M)` of a `t` above the top is `M`, as
+/// the top's is (below 0 it is `−0`). So the code is [`encode_round`]'s bit for bit on a
+/// correctly rounded adapter, with its **error bound**, and on any conforming adapter each axis
+/// is a code in `[0, M]`. **Zero vector and outside the contract:** `0/0` and the like — the
+/// WGSL's result is indeterminate, some `u32` every decoder accepts; this twin's (NaN converts
+/// to 0, conversions saturate) is deterministic and it never panics. The guard that would
+/// define the zero vector costs one instruction, on RDNA2 the margin by which this encoder is
+/// cheaper than Bevy's G-buffer encoder (`tests/isa.rs`,
+/// `vouched_encoders_cost_less_than_their_robust_siblings`).
 pub fn encode_round_vouched(n: Vec3, bits: u32) -> u32 {
-    let c = continuous_vouched(n, bits);
-    (c.x.round_ties_even() as u32) | ((c.y.round_ties_even() as u32) << bits)
+    let m = max_code(bits) as f32;
+    let a = n.abs();
+    let t = project_vouched(n, (a.x + a.y) + a.z) * 0.5 + 0.5;
+    let (u, v) = ((t.x * m).round_ties_even(), (t.y * m).round_ties_even());
+    (u as u32) | ((v as u32) << bits)
 }
 
 /// Decode `bits` bits per axis: `normalize(D)` of the code's exact integer vector.

@@ -138,7 +138,7 @@ pub enum NormalInput {
     Robust,
     /// The scene vouches for its normals (its own interpolated normals): every component finite,
     /// every non-zero one at least `2^-126·max(1, ‖n‖∞)` in magnitude (no subnormals), and
-    /// `‖n‖∞ ≤ 2^124`; the zero vector allowed. The G-buffer pass calls the `_vouched` encoder
+    /// `0 < ‖n‖∞ ≤ 2^124`. The G-buffer pass calls the `_vouched` encoder
     /// (`encode_normal_oct24_vouched`, `encode_normal_oct24_fast_vouched`, …): the robust
     /// encoder's code bit for bit inside that contract without its bad-input handling, and some
     /// code (indeterminate in WGSL; every decoder accepts it) outside it. Only the octahedral
