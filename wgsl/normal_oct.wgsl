@@ -9,7 +9,8 @@
 // the integer vector D = (2u - M, 2v - M, M - |2u - M| - |2v - M|) (folded when that z < 0),
 // which every implementation computes exactly.
 //
-// Bad input (all encoders): NaN anywhere, the zero vector and all-subnormal vectors encode as
+// Bad input (the robust encoders; the _vouched ones assume their contract, see "Vouched input"
+// below): NaN anywhere, the zero vector and all-subnormal vectors encode as
 // +z = (0, 0, 1); subnormal components count as zero; infinite components win (the direction of
 // the infinities, e.g. (+Inf, 1, 0) -> +x); any finite length is fine (the map is scale-free).
 // Decoders accept every bit pattern and return a finite unit vector.

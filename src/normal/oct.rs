@@ -163,7 +163,7 @@ pub fn is_vouched(n: Vec3) -> bool {
 /// folded when `n.z < 0` (the sign of ±0 counts as +), with no sanitising. In the contract
 /// `l1`, a sum of non-negative normal floats, lies in `[2^-126, 3·2^124]`: no overflow, and the
 /// divisor inside WGSL's `[2^-126, 2^126]` for `/`.
-pub fn project_vouched(n: Vec3, l1: f32) -> Vec2 {
+fn project_vouched(n: Vec3, l1: f32) -> Vec2 {
     let p = Vec2::new(n.x / l1, n.y / l1);
     if n.z < 0.0 {
         let sgn = Vec2::new(
@@ -180,7 +180,7 @@ pub fn project_vouched(n: Vec3, l1: f32) -> Vec2 {
 /// L1 norm kept at least `2^-126` — which changes no in-contract vector and sends the zero
 /// vector to `p = 0`, the code of +z, as [`sanitize`]'s `None` does — then [`continuous`]'s
 /// clamped map `(p/2 + 1/2)·M`.
-pub fn continuous_vouched(s: Vec3, bits: u32) -> Vec2 {
+fn continuous_vouched(s: Vec3, bits: u32) -> Vec2 {
     let a = s.abs();
     let p = project_vouched(s, ((a.x + a.y) + a.z).max(f32::MIN_POSITIVE));
     let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(CONTINUOUS_TOP));
@@ -191,7 +191,7 @@ pub fn continuous_vouched(s: Vec3, bits: u32) -> Vec2 {
 /// WGSL's `oct_scale_vouched`): the power of two [`sanitize`] picks, so in the contract (no
 /// component made subnormal) exactly `sanitize(n)`; the zero vector stays zero. The `u32`
 /// arithmetic wraps as WGSL's does, so an out-of-contract input gives some float, no panic.
-pub fn scale_vouched(n: Vec3) -> Vec3 {
+fn scale_vouched(n: Vec3) -> Vec3 {
     let e = n.abs().max_element().to_bits() >> 23;
     n * f32::from_bits(254u32.wrapping_sub(e) << 23)
 }
