@@ -99,50 +99,6 @@ fn oct32_precise_and_fast_round_trip() {
     check(codec("oct32 fast"));
 }
 
-/// The vouched encoders as codecs: the robust codec `name` with its encoder (WGSL and twin)
-/// swapped for the vouched form, the decoder, references and targets kept (the vouched code is
-/// the robust one inside the contract, so the same targets hold).
-fn vouched(name: &str) -> Codec {
-    let mut c = *codec(name);
-    let (vname, enc, twin): (&'static str, &'static str, fn(glam::Vec3) -> u32) = match name {
-        "oct16" => (
-            "oct16 vouched",
-            "encode_normal_oct16_vouched",
-            oct::encode_normal_oct16_vouched,
-        ),
-        "oct16 fast" => (
-            "oct16 vouched fast",
-            "encode_normal_oct16_fast_vouched",
-            oct::encode_normal_oct16_fast_vouched,
-        ),
-        "oct24" => (
-            "oct24 vouched",
-            "encode_normal_oct24_vouched",
-            oct::encode_normal_oct24_vouched,
-        ),
-        "oct24 fast" => (
-            "oct24 vouched fast",
-            "encode_normal_oct24_fast_vouched",
-            oct::encode_normal_oct24_fast_vouched,
-        ),
-        "oct32" => (
-            "oct32 vouched",
-            "encode_normal_oct32_vouched",
-            oct::encode_normal_oct32_vouched,
-        ),
-        "oct32 fast" => (
-            "oct32 vouched fast",
-            "encode_normal_oct32_fast_vouched",
-            oct::encode_normal_oct32_fast_vouched,
-        ),
-        _ => panic!("{name} has no vouched form"),
-    };
-    c.name = vname;
-    c.encode = enc;
-    c.twin_encode = twin;
-    c
-}
-
 /// The robust codecs that have a vouched form.
 const VOUCHED: [&str; 6] = [
     "oct16",
@@ -166,7 +122,7 @@ fn vouched_encoders_round_trip_like_the_robust_ones() {
             .all(|&n| oct::is_vouched(n.into()))
     );
     for name in VOUCHED {
-        check(&vouched(name));
+        check(&common::vouched_codec(name));
     }
 }
 
@@ -226,7 +182,7 @@ fn vouched_encoders_give_the_robust_codes_inside_their_contract() {
     let like = common::evaluates_like_the_twins();
     for name in VOUCHED {
         let robust = codec(name);
-        let v = vouched(name);
+        let v = common::vouched_codec(name);
         let run = |f: &str| {
             gpu()
                 .kernel(robust.source, f)
@@ -263,7 +219,7 @@ fn vouched_encoders_give_the_robust_codes_inside_their_contract() {
 #[test]
 fn vouched_precise_encoders_equal_the_twin_at_near_ties() {
     for (name, bits) in [("oct16", 8), ("oct24", 12), ("oct32", 16)] {
-        common::assert_near_ties(&vouched(name), &near_ties(bits));
+        common::assert_near_ties(&common::vouched_codec(name), &near_ties(bits));
     }
 }
 
