@@ -139,3 +139,7 @@ for (n, fa) in PROJ:
                     (f(5.0), f(-1.0)), (0x7F7FFFFF, 0x7F7FFFFF)]:
         for conv in (0, 1):
             write("lighting", 17, words(cz, r, n, fa) + bytes([conv]) + words(0x80000000))
+# encoders (appended): 23 the vouched octahedral encoders against the robust ones (vector)
+for v in VECS + [(f(0.6), f(0.0), f(-0.8)), (NZ, f(1e-38), f(-1.0)), (f(2.0 ** 124), f(1.0), NZ),
+                 (f(1e-30), f(1e-30), f(-1e-30))]:
+    write("encoders", 23, words(*v))

@@ -149,6 +149,53 @@ pub const ENCODERS: &[Entry] = &[
             assert_eq!(roughness::log_roughness_code_from_texel(t), code.min(255));
         },
     },
+    // Appended (the corpus picks entries by index).
+    Entry {
+        name: "normal::oct::encode_normal_oct*_vouched, *_fast_vouched (vouched input)",
+        check: |i| {
+            let n = i.vec3();
+            // Any input: no panic. Inside the contract: the robust encoder's code.
+            let pairs: [(fn(Vec3) -> u32, fn(Vec3) -> u32, &str); 6] = [
+                (
+                    oct::encode_normal_oct16_vouched,
+                    oct::encode_normal_oct16,
+                    "oct16",
+                ),
+                (
+                    oct::encode_normal_oct16_fast_vouched,
+                    oct::encode_normal_oct16_fast,
+                    "oct16 fast",
+                ),
+                (
+                    oct::encode_normal_oct24_vouched,
+                    oct::encode_normal_oct24,
+                    "oct24",
+                ),
+                (
+                    oct::encode_normal_oct24_fast_vouched,
+                    oct::encode_normal_oct24_fast,
+                    "oct24 fast",
+                ),
+                (
+                    oct::encode_normal_oct32_vouched,
+                    oct::encode_normal_oct32,
+                    "oct32",
+                ),
+                (
+                    oct::encode_normal_oct32_fast_vouched,
+                    oct::encode_normal_oct32_fast,
+                    "oct32 fast",
+                ),
+            ];
+            let inside = oct::is_vouched(n);
+            for (vouched, robust, name) in pairs {
+                let code = vouched(n);
+                if inside {
+                    assert_eq!(code, robust(n), "{name} vouched: {n:?}");
+                }
+            }
+        },
+    },
 ];
 
 /// A fixed-size encoder ([`check_encoder`]) on a direction read from the input.
