@@ -10,6 +10,9 @@ use prepass::depth24::{self, DEPTH24_MAX};
 use prepass::normal::{hemioct, oct, xy_fp16, xyz8};
 use prepass::roughness;
 
+/// A normal encoder's twin.
+type Encoder = fn(Vec3) -> u32;
+
 /// Encoders: any bit patterns in, no panic, the documented output.
 pub const ENCODERS: &[Entry] = &[
     Entry {
@@ -155,7 +158,7 @@ pub const ENCODERS: &[Entry] = &[
         check: |i| {
             let n = i.vec3();
             // Any input: no panic. Inside the contract: the robust encoder's code.
-            let pairs: [(fn(Vec3) -> u32, fn(Vec3) -> u32, &str); 6] = [
+            let pairs: [(Encoder, Encoder, &str); 6] = [
                 (
                     oct::encode_normal_oct16_vouched,
                     oct::encode_normal_oct16,
