@@ -205,9 +205,9 @@ fn scale_vouched(n: Vec3) -> Vec3 {
 /// below `2^-126` of its largest), and `0 < ‖n‖∞ ≤ 2^124`. An interpolated normal of any
 /// length a renderer produces is inside. The zero vector is outside, yet this precise form
 /// still encodes it as +z, as [`encode_precise`] does (a `max` on the L1 norm,
-/// [`continuous_vouched`]); the `_fast` form leaves it indeterminate.
+/// `continuous_vouched`); the `_fast` form leaves it indeterminate.
 ///
-/// **Maths:** `s = n·2^(127−e)` ([`scale_vouched`]) is exact in the contract and equals
+/// **Maths:** `s = n·2^(127−e)` (`scale_vouched`, `e` the biased exponent of `‖n‖∞`) is exact in the contract and equals
 /// `sanitize(n)` (which would only flush subnormals, none here, and scale by the same power of
 /// two); the choice is then [`encode_precise`]'s, on the same `s`. So the code is
 /// [`encode_precise`]'s bit for bit, and so is its **error bound** (the same function of the
@@ -225,7 +225,7 @@ pub fn encode_precise_vouched(n: Vec3, bits: u32) -> u32 {
 /// The rounding encoder for a vector the scene vouches for (twin of the WGSL
 /// `oct_encode_round_vouched`, 8 and 12 bits, and `oct_encode_round_wide_vouched`, 16 bits,
 /// behind the `_fast_vouched` encoders): each coordinate of `t = p/2 + 1/2`, `p` from
-/// [`project_vouched`] with `l1 = |x| + |y| + |z|` (no sanitising, no scaling, no guard), rounded
+/// `project_vouched` (`n.xy / l1` folded as in [`continuous`]) with `l1 = |x| + |y| + |z|` (no sanitising, no scaling, no guard), rounded
 /// to the nearest code `round(t·M)` (half to even). The WGSL assembles the code as
 /// `u32(v·2^bits + u)` (whole numbers below 2^24, exact) at 8 and 12 bits and from the bits of
 /// `round(t·M) + 2^23` at 16; in the contract both are `u | v << bits`.
@@ -403,6 +403,59 @@ mod tests {
                 "{v} -> {got}"
             );
         }
+    }
+
+    /// The vouched twins never panic, and inside their contract give the robust twins' codes:
+    /// random vectors whose components take every exponent (so many fall outside the contract,
+    /// some on its edges), scaled copies of them, and the special patterns.
+    #[test]
+    fn vouched_twins_equal_the_robust_ones_inside_the_contract() {
+        type Pair = (fn(Vec3) -> u32, fn(Vec3) -> u32);
+        let pairs: [Pair; 6] = [
+            (encode_normal_oct16_vouched, encode_normal_oct16),
+            (encode_normal_oct16_fast_vouched, encode_normal_oct16_fast),
+            (encode_normal_oct24_vouched, encode_normal_oct24),
+            (encode_normal_oct24_fast_vouched, encode_normal_oct24_fast),
+            (encode_normal_oct32_vouched, encode_normal_oct32),
+            (encode_normal_oct32_fast_vouched, encode_normal_oct32_fast),
+        ];
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let (mut inside, mut total) = (0, 0);
+        for k in 0..200_000 {
+            let r = next();
+            // Exponents concentrated near 127 (unit vectors) for half the draws, anywhere else.
+            let comp = |bits: u64| {
+                let b = bits as u32;
+                if k % 2 == 0 {
+                    f32::from_bits((b & 0x807f_ffff) | ((120 + (b >> 23) % 10) << 23))
+                } else {
+                    f32::from_bits(b)
+                }
+            };
+            let n = Vec3::new(comp(r), comp(r >> 21 ^ next()), comp(next()));
+            for v in [n, n * 0.75, n * 1e-30, n * 1e30] {
+                total += 1;
+                let ok = is_vouched(v);
+                inside += usize::from(ok);
+                for (vouched, robust) in pairs {
+                    let code = vouched(v);
+                    if ok {
+                        assert_eq!(code, robust(v), "{v:?}");
+                    }
+                }
+            }
+        }
+        // The draws must reach the contract often, or the test checks little.
+        assert!(
+            inside * 4 > total,
+            "{inside} of {total} inside the contract"
+        );
     }
 
     #[test]
