@@ -511,7 +511,7 @@ fn vouched_encoders_cost_less_than_their_robust_siblings() {
     list.push(Function::new(BEVY, "peer_bevy_gbuffer_normal_encode"));
     let report = Costing::new().cost(&list).unwrap();
     let targets = measured(&report);
-    let mut table = String::from("| encoder | robust | vouched | vouched/robust |\n");
+    let mut table = String::new();
     for (t, _) in &targets {
         let bevy = report.get(*t, 2 * names.len()).expect("compiled").net;
         let _ = writeln!(
