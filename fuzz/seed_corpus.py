@@ -169,3 +169,7 @@ for ch in CHANNELS:
 for v in VECS:
     for e in (27, 28, 29):
         write("encoders", e, words(*v))
+# encoders (appended): 31 the vouched octahedral encoders against the robust ones (vector)
+for v in VECS + [(f(0.6), f(0.0), f(-0.8)), (NZ, f(1e-38), f(-1.0)), (f(2.0 ** 124), f(1.0), NZ),
+                 (f(1e-30), f(1e-30), f(-1e-30))]:
+    write("encoders", 31, words(*v))

@@ -1585,6 +1585,118 @@ fn every_normal_encoding_under_emulation() {
     common::publish_measured("docs/figures.md", "normal-encodings", &full);
 }
 
+/// The vouched-input encoders (`common::vouched_codec`: `encode_normal_oct*_vouched` and
+/// `…_fast_vouched` with the robust codecs' decoders and references) on the emulated worst
+/// adapter (upper, lower, one seed, and the search at the inputs they erred most on), as
+/// [`every_normal_encoding_under_emulation`] holds the robust ones: every round-trip decode
+/// finite and unit within the conforming budget, the emulated code within one step of the twin's,
+/// and the precise choice within the conforming optimality tolerance. Their inputs (2^14
+/// Fibonacci directions and the adversarial set: fewer than the robust encoders' 2^18, to fit
+/// CI) are inside the vouched contract. The emulated worst error is printed, not published
+/// (2026-12-06, 2^16 directions: each within 3e-5° of the robust encoder's emulated worst).
+#[test]
+fn vouched_encoders_under_emulation() {
+    use prepass::sweep::conforming::{
+        SEARCHED_NORMAL_INPUTS, UNIT_TOLERANCE_CONFORMING, normal_figures_with,
+        optimality_tolerance_conforming_deg,
+    };
+    use prepass::sweep::normal::{
+        adversarial_directions, fibonacci_directions, precise_optimality, stratified_codes32,
+    };
+    let mut inputs = fibonacci_directions(1 << 14);
+    inputs.extend(adversarial_directions());
+    assert!(
+        inputs
+            .iter()
+            .all(|&n| prepass::normal::oct::is_vouched(n.into()))
+    );
+    // The decoders are the robust codecs' (tested by every_normal_encoding_under_emulation):
+    // a few codes each.
+    let codes16: Vec<u32> = (0..1 << 16).step_by(251).collect();
+    let codes24: Vec<u32> = (0..1 << 24).step_by(65_521).collect();
+    let codes32: Vec<u32> = stratified_codes32().into_iter().step_by(4093).collect();
+    let codes_for = |c: &prepass::sweep::normal::Codec| match c.bits {
+        16 => codes16.clone(),
+        24 => codes24.clone(),
+        _ => codes32.clone(),
+    };
+    let policies = [Policy::Upper, Policy::Lower, Policy::Seeded(1)];
+    let names = [
+        "oct16",
+        "oct16 fast",
+        "oct24",
+        "oct24 fast",
+        "oct32",
+        "oct32 fast",
+    ];
+    let mut inspect = |c: &prepass::sweep::normal::Codec,
+                       policy: Policy,
+                       e: &prepass::sweep::conforming::EmulatedCodec| {
+        let (len_rt, bad_rt) = e.round_trip_length;
+        eprintln!(
+            "{:20} {policy:10}: {} codes differ from the twin; |len−1| ≤ {len_rt:.3e}; max {:.6}°",
+            c.name, e.round_trip.twin_encode.count, e.round_trip.error.max
+        );
+        assert_eq!(
+            bad_rt, 0,
+            "{} {policy}: {bad_rt} round-trip decodes not finite or beyond the conforming unit budget {UNIT_TOLERANCE_CONFORMING:e} (derivation: sweep::conforming)",
+            c.name
+        );
+        if !c.name.ends_with("fast") {
+            let o = precise_optimality(c, &inputs, &e.round_trip);
+            assert_within!(
+                o.worst_excess_deg,
+                optimality_tolerance_conforming_deg(),
+                "sweep::conforming::optimality_tolerance_conforming_deg",
+                "{} {policy}: the precise encoder's choice, degrees worse than the best neighbour",
+                c.name
+            );
+        }
+        assert_within!(
+            e.max_code_step,
+            1,
+            "the twins' promise: within one code on every conforming adapter",
+            "{} {policy}: emulated code steps from the twin's",
+            c.name
+        );
+    };
+    let vouched: Vec<prepass::sweep::normal::Codec> =
+        names.iter().map(|n| common::vouched_codec(n)).collect();
+    let rows = normal_figures_with(
+        gpu(),
+        &vouched,
+        &inputs,
+        &policies,
+        SEARCHED_NORMAL_INPUTS,
+        &codes_for,
+        &mut inspect,
+    )
+    .unwrap();
+    for r in &rows {
+        let worst = r.emulated_max.iter().copied().fold(0.0, f64::max);
+        eprintln!(
+            "{:20}: adapter max {:.6}°, emulated worst {worst:.6}° (searched {:.6}°)",
+            r.name, r.adapter.max, r.searched
+        );
+        assert_eq!(r.adapter.nan_count, 0, "{}: NaN round trips", r.name);
+        assert!(r.searched.is_finite(), "{}: {}", r.name, r.searched_at);
+        assert_within!(
+            r.searched_code_step,
+            1,
+            "the twins' promise: within one code on every conforming adapter",
+            "{}: code steps from the twin's at the searched worst tables",
+            r.name
+        );
+        assert_within!(
+            r.searched_len_error,
+            UNIT_TOLERANCE_CONFORMING,
+            "sweep::conforming::UNIT_TOLERANCE_CONFORMING",
+            "{}: |len − 1| of the decodes at the searched worst tables",
+            r.name
+        );
+    }
+}
+
 /// The precise (hemi-)octahedral encoders' choice among four codes, searched on the decision
 /// margin (`sweep::normal::searched_decision`): inputs where the closest candidate leads the
 /// runner-up by graded amounts (below), and per input the climb that pushes
@@ -1752,7 +1864,7 @@ fn coverage_modules() -> Vec<(String, String)> {
     use prepass::projection::DepthConvention;
     use prepass::scene::{
         DepthChoice, DepthStorage, LightBuffers, LightingChoice, Lights, NormalChoice,
-        NormalEncoding, PositionChoice, RoughnessChoice, Scene, Specular,
+        NormalEncoding, NormalInput, PositionChoice, RoughnessChoice, Scene, Specular,
     };
     let mut out: Vec<(String, String)> = prepass::wgsl::FILES
         .iter()
@@ -1774,7 +1886,10 @@ fn coverage_modules() -> Vec<(String, String)> {
     ] {
         for convention in [DepthConvention::Standard, DepthConvention::Reversed] {
             for infinite_far in [false, true] {
-                for &normal in &normals {
+                for (&normal, normal_input) in normals
+                    .iter()
+                    .flat_map(|n| [(n, NormalInput::Robust), (n, NormalInput::Vouched)])
+                {
                     let scene = Scene {
                         depth: DepthChoice {
                             storage,
@@ -1783,6 +1898,7 @@ fn coverage_modules() -> Vec<(String, String)> {
                         },
                         position: PositionChoice::World,
                         normal,
+                        normal_input,
                         roughness: RoughnessChoice::Log8,
                         lighting: LightingChoice {
                             lights: Lights::PointAndSpot,

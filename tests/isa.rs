@@ -172,8 +172,27 @@ fn every_shipped_file_compiles_whole_on_every_target() {
 /// uniform as a renderer feeds them.
 #[test]
 fn readme_cost_table_on_real_instruction_sets() {
-    // Every encoding of the sweeps' table, in its order.
-    let normals = &prepass::sweep::normal::CODECS;
+    // Every encoding of the sweeps' table, in its order, then the vouched-input octahedral
+    // encoders (the same codes inside their contract; `Scene::normal_input`).
+    let oct = prepass::wgsl::NORMAL_OCT;
+    let normals: Vec<(&str, &str, &str, &str)> = prepass::sweep::normal::CODECS
+        .iter()
+        .map(|c| (c.name, c.source, c.encode, c.decode))
+        .chain([
+            (
+                "oct24, vouched input",
+                oct,
+                "encode_normal_oct24_vouched",
+                "decode_normal_oct24",
+            ),
+            (
+                "oct24 fast, vouched input",
+                oct,
+                "encode_normal_oct24_fast_vouched",
+                "decode_normal_oct24",
+            ),
+        ])
+        .collect();
     let others = [
         ("linear_depth", "view_z_from_depth24"),
         ("linear_depth", "view_z_from_depth24_consts"),
@@ -186,6 +205,10 @@ fn readme_cost_table_on_real_instruction_sets() {
         ("depth24", "hyperbolic_depth_from_depth24"),
         ("roughness", "encode_log_roughness"),
         ("roughness", "decode_log_roughness"),
+        ("roughness_ggx", "encode_roughness_ggx8"),
+        ("roughness_ggx", "decode_roughness_ggx8"),
+        ("roughness_ggx", "encode_roughness_ggx8_log"),
+        ("roughness_ggx", "decode_roughness_ggx8_log"),
     ];
     let source = |stem: &str| {
         prepass::wgsl::FILES
@@ -208,9 +231,9 @@ fn readme_cost_table_on_real_instruction_sets() {
         Function::new(src, name).with_feeds(&feeds)
     };
     let mut list = Vec::new();
-    for c in normals {
-        list.push(function(c.source, c.encode));
-        list.push(function(c.source, c.decode));
+    for &(_, source, enc, dec) in &normals {
+        list.push(function(source, enc));
+        list.push(function(source, dec));
     }
     for (stem, name) in others {
         list.push(function(source(stem), name));
@@ -231,7 +254,7 @@ fn readme_cost_table_on_real_instruction_sets() {
     let mut body = String::from(
         "| encoding | SPIR-V encode / decode | RDNA2 instructions encode / decode | RDNA2 inverse throughput encode / decode | Xe-HPG cycles encode / decode |\n|---|---|---|---|---|\n",
     );
-    for (i, name) in normals.iter().map(|c| c.name).enumerate() {
+    for (i, (name, ..)) in normals.iter().enumerate() {
         let (e, d) = (2 * i, 2 * i + 1);
         let (re, rd) = (get(Target::Rdna2, e).net, get(Target::Rdna2, d).net);
         let (xe, xd) = (get(Target::XeHpg, e).net, get(Target::XeHpg, d).net);
@@ -420,4 +443,66 @@ fn the_freedoms_the_compilers_take_are_the_ones_the_emulation_models() {
             .trim_start_matches("<!-- measured on: ")
             .trim_end_matches(" -->\n"),
     );
+}
+
+/// The vouched-input encoders (`encode_normal_oct*_vouched`, `…_fast_vouched`) beside their
+/// robust siblings and Bevy's G-buffer oct24 encoder (the peer `tests/baselines/peer_bevy.wgsl`),
+/// on every target: each compiles, and on every target the vouched form costs no more than its
+/// robust sibling (the same code inside the contract, with the sanitising taken out; a
+/// comparison of static compiler estimates, not a timing). The figures are printed (net
+/// instructions and ACO inverse throughput or brw cycles), not published.
+#[test]
+fn vouched_encoders_cost_less_than_their_robust_siblings() {
+    const BEVY: &str = include_str!("baselines/peer_bevy.wgsl");
+    let names = [
+        "encode_normal_oct16",
+        "encode_normal_oct16_fast",
+        "encode_normal_oct24",
+        "encode_normal_oct24_fast",
+        "encode_normal_oct32",
+        "encode_normal_oct32_fast",
+    ];
+    let mut list = Vec::new();
+    for name in names {
+        list.push(Function::new(prepass::wgsl::NORMAL_OCT, name));
+        list.push(Function::new(
+            prepass::wgsl::NORMAL_OCT,
+            &format!("{name}_vouched"),
+        ));
+    }
+    list.push(Function::new(BEVY, "peer_bevy_gbuffer_normal_encode"));
+    let report = Costing::new().cost(&list).unwrap();
+    let targets = measured(&report);
+    let mut table = String::new();
+    for (t, _) in &targets {
+        let bevy = report.get(*t, 2 * names.len()).expect("compiled").net;
+        let _ = writeln!(
+            table,
+            "{}: peer_bevy_gbuffer_normal_encode {:.1} instructions, {:.1} ranked",
+            t.label(),
+            bevy.instructions,
+            bevy.rank()
+        );
+        for (i, name) in names.iter().enumerate() {
+            let (r, v) = (
+                report.get(*t, 2 * i).expect("compiled").net,
+                report.get(*t, 2 * i + 1).expect("compiled").net,
+            );
+            let _ = writeln!(
+                table,
+                "{}: {name}: robust {:.1} instr / {:.1} ranked; vouched {:.1} instr / {:.1} ranked",
+                t.label(),
+                r.instructions,
+                r.rank(),
+                v.instructions,
+                v.rank()
+            );
+            assert!(
+                v.instructions <= r.instructions && v.rank() <= r.rank(),
+                "{}: {name}_vouched costs more than {name}: {v:?} vs {r:?}",
+                t.label()
+            );
+        }
+    }
+    eprintln!("{table}");
 }

@@ -99,6 +99,130 @@ fn oct32_precise_and_fast_round_trip() {
     check(codec("oct32 fast"));
 }
 
+/// The robust codecs that have a vouched form.
+const VOUCHED: [&str; 6] = [
+    "oct16",
+    "oct16 fast",
+    "oct24",
+    "oct24 fast",
+    "oct32",
+    "oct32 fast",
+];
+
+/// The vouched encoders pass the robust ones' round-trip suite on their own (`check`: the WGSL
+/// equals the vouched twin, the error meets the same targets, the precise choice is optimal
+/// among its neighbours) over 2^24 Fibonacci directions and the adversarial set, all inside
+/// the vouched contract.
+#[test]
+fn vouched_encoders_round_trip_like_the_robust_ones() {
+    assert!(fibonacci().iter().all(|&n| oct::is_vouched(n.into())));
+    assert!(
+        adversarial_directions()
+            .iter()
+            .all(|&n| oct::is_vouched(n.into()))
+    );
+    for name in VOUCHED {
+        check(&common::vouched_codec(name));
+    }
+}
+
+/// Inputs inside the vouched contract that the unit directions do not reach: 2^16 Fibonacci
+/// directions scaled by powers of two across the contract (2^-120 … 2^124) and by 3 and 0.3
+/// (rounded), kept where still inside it (`oct::is_vouched`: a scaled-down direction loses
+/// the components that became subnormal); near-tie directions of every size; zero vectors
+/// of each sign; and the contract's edges (components exactly 2^-126 · max(1, ‖n‖∞), the
+/// largest exactly 2^124).
+fn vouched_inputs() -> Vec<[f32; 3]> {
+    let base = fibonacci_directions(1 << 16);
+    let mut v: Vec<[f32; 3]> = Vec::new();
+    for k in [-120, -100, -64, -20, -1, 0, 1, 3, 20, 64, 100, 123, 124] {
+        let f = 2f32.powi(k);
+        v.extend(base.iter().map(|n| n.map(|x| x * f)));
+    }
+    for f in [3.0f32, 0.3] {
+        v.extend(base.iter().map(|n| n.map(|x| x * f)));
+    }
+    for bits in [8, 12, 16] {
+        v.extend(near_ties(bits).into_iter().step_by(4));
+    }
+    v.extend(adversarial_directions());
+    let tiny = f32::MIN_POSITIVE;
+    let big = oct::VOUCHED_MAX;
+    for sx in [1.0f32, -1.0] {
+        for sz in [1.0f32, -1.0] {
+            v.extend([
+                [0.0 * sx, -0.0, 0.0 * sz],
+                [tiny * sx, 1.0, 0.5 * sz],
+                [tiny * sx, -tiny, sz],
+                [big * sx, big, big * sz],
+                [big * sx, tiny * 2f32.powi(124), sz * big * 0.5],
+                [tiny * sx, 0.0, tiny * sz],
+                [0.5 * sx, 0.25, tiny * sz],
+            ]);
+        }
+    }
+    let before = v.len();
+    v.retain(|&n| oct::is_vouched(n.into()));
+    eprintln!(
+        "vouched inputs: {} of {before} inside the contract",
+        v.len()
+    );
+    v
+}
+
+/// Inside their contract the vouched encoders return the robust encoders' codes bit for bit:
+/// the WGSL of each pair on the adapter (where it evaluates like the twins, the correctly
+/// rounded case the identity is promised for; elsewhere the mismatches are only counted) and
+/// the Rust twins, over `vouched_inputs` (scaled directions, near ties, zero vectors, the
+/// contract's edges). So every bound of the robust encoders holds for the vouched ones.
+#[test]
+fn vouched_encoders_give_the_robust_codes_inside_their_contract() {
+    use prepass::harness::Arg;
+    let inputs = vouched_inputs();
+    let like = common::evaluates_like_the_twins();
+    for name in VOUCHED {
+        let robust = codec(name);
+        let v = common::vouched_codec(name);
+        let run = |f: &str| {
+            gpu()
+                .kernel(robust.source, f)
+                .unwrap()
+                .run(&[Arg::column(&inputs)], inputs.len() as u64)
+                .unwrap()
+                .into_words()
+        };
+        let (want, got) = (run(robust.encode), run(v.encode));
+        let mut wrong = 0;
+        for (i, &n) in inputs.iter().enumerate() {
+            let (rt, vt) = ((robust.twin_encode)(n.into()), (v.twin_encode)(n.into()));
+            assert_eq!(vt, rt, "{}: twin differs from {name}'s on {n:?}", v.name);
+            if got[i] != want[i] {
+                wrong += 1;
+                assert!(
+                    !like,
+                    "{}: WGSL code {:#x} differs from {}'s {:#x} on {n:?}",
+                    v.name, got[i], robust.encode, want[i]
+                );
+            }
+        }
+        eprintln!(
+            "{}: {wrong} of {} codes differ from {}'s on the adapter (evaluates like the twins: {like})",
+            v.name,
+            inputs.len(),
+            robust.encode
+        );
+    }
+}
+
+/// The vouched precise encoders equal their twins where the candidates' scores nearly tie, as
+/// the robust ones do (`precise_encoders_equal_the_twin_at_near_ties`).
+#[test]
+fn vouched_precise_encoders_equal_the_twin_at_near_ties() {
+    for (name, bits) in [("oct16", 8), ("oct24", 12), ("oct32", 16)] {
+        common::assert_near_ties(&common::vouched_codec(name), &near_ties(bits));
+    }
+}
+
 /// Near-tie directions of `bits` per axis (`sweep::normal::near_tie_directions`): 2^18 cells,
 /// 9 inputs each.
 fn near_ties(bits: u32) -> Vec<[f32; 3]> {

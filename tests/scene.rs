@@ -11,7 +11,7 @@ use prepass::projection::DepthConvention;
 use prepass::scene::gbuffer::{GBufferLayout, Target, TargetFormat, megabytes};
 use prepass::scene::{
     DepthChoice, DepthStorage, Library, LightBuffers, LightingChoice, Lights, NormalChoice,
-    NormalEncoding, PositionChoice, RoughnessChoice, Scene, Specular,
+    NormalEncoding, NormalInput, PositionChoice, RoughnessChoice, Scene, Specular,
 };
 use std::collections::{BTreeSet, HashMap};
 use std::path::Path;
@@ -79,7 +79,7 @@ fn a_depth_only_scene_contains_only_its_depth_function_and_helpers() {
     }
 }
 
-/// Every scene declaration, valid or not: 175,104 of them (the exhaustive tests' input).
+/// Every scene declaration, valid or not: 350,208 of them (the exhaustive tests' input).
 fn all_scenes() -> Vec<Scene> {
     let mut depths = Vec::new();
     for storage in [
@@ -139,15 +139,18 @@ fn all_scenes() -> Vec<Scene> {
     for &depth in &depths {
         for &position in &positions {
             for &normal in &normals {
-                for roughness in [RoughnessChoice::None, RoughnessChoice::Log8] {
-                    for &lighting in &lightings {
-                        v.push(Scene {
-                            depth,
-                            position,
-                            normal,
-                            roughness,
-                            lighting,
-                        });
+                for normal_input in [NormalInput::Robust, NormalInput::Vouched] {
+                    for roughness in [RoughnessChoice::None, RoughnessChoice::Log8] {
+                        for &lighting in &lightings {
+                            v.push(Scene {
+                                depth,
+                                position,
+                                normal,
+                                normal_input,
+                                roughness,
+                                lighting,
+                            });
+                        }
                     }
                 }
             }
@@ -159,10 +162,10 @@ fn all_scenes() -> Vec<Scene> {
 /// How many distinct root sets (so distinct composed modules) the valid declarations give,
 /// stated once: CONTRIBUTING.md quotes it, and `the_stated_counts_are_the_counted_ones` checks
 /// both.
-const DISTINCT_ROOT_SETS: usize = 19_584;
+const DISTINCT_ROOT_SETS: usize = 27_936;
 
 /// How many of them [`root_sets_for_backends`] picks outside `PREPASS_FULL=1`.
-const SAMPLED_ROOT_SETS: usize = 1304;
+const SAMPLED_ROOT_SETS: usize = 1_832;
 
 /// Every distinct root set a valid declaration gives (each sorted).
 fn distinct_root_sets() -> BTreeSet<Vec<&'static str>> {
@@ -340,7 +343,7 @@ fn every_valid_combination_composes_validates_and_translates() {
         }
     }
     let all = all_scenes();
-    assert_eq!(all.len(), 175_104, "scene declarations (all_scenes' doc)");
+    assert_eq!(all.len(), 350_208, "scene declarations (all_scenes' doc)");
     // One representative declaration per distinct root set (the module depends on nothing else).
     let mut by_roots: HashMap<Vec<&str>, Scene> = HashMap::new();
     let mut invalid = 0;
@@ -440,6 +443,7 @@ fn neighbours(s: &Scene) -> Vec<Scene> {
                 t.position != s.position,
                 t.normal.encoding != s.normal.encoding,
                 t.normal.fast_encoder != s.normal.fast_encoder,
+                t.normal_input != s.normal_input,
                 t.roughness != s.roughness,
                 t.lighting.lights != s.lighting.lights,
                 t.lighting.specular != s.lighting.specular,
@@ -503,6 +507,7 @@ fn full_scene() -> Scene {
             encoding: Some(NormalEncoding::Oct24),
             fast_encoder: false,
         },
+        normal_input: NormalInput::Robust,
         roughness: RoughnessChoice::Log8,
         lighting: LightingChoice {
             lights: Lights::PointAndSpot,
@@ -705,4 +710,96 @@ fn scene_layouts_follow_the_choices() {
         f.gbuffer().unwrap().targets[0].format,
         TargetFormat::Depth32Float
     );
+}
+
+/// `Scene::normal_input`: robust by default; `NormalInput::Vouched` makes the G-buffer pass's
+/// root the encoder's `_vouched` form (precise or `_fast`), whose module then holds it, and is
+/// refused, naming both fields, for an encoding without one or no normal at all.
+#[test]
+fn vouched_normal_input_selects_the_vouched_encoder() {
+    assert_eq!(Scene::default().normal_input, NormalInput::Robust);
+    for (encoding, fast_encoder, robust, vouched) in [
+        (
+            NormalEncoding::Oct16,
+            false,
+            "encode_normal_oct16",
+            "encode_normal_oct16_vouched",
+        ),
+        (
+            NormalEncoding::Oct16,
+            true,
+            "encode_normal_oct16_fast",
+            "encode_normal_oct16_fast_vouched",
+        ),
+        (
+            NormalEncoding::Oct24,
+            false,
+            "encode_normal_oct24",
+            "encode_normal_oct24_vouched",
+        ),
+        (
+            NormalEncoding::Oct24,
+            true,
+            "encode_normal_oct24_fast",
+            "encode_normal_oct24_fast_vouched",
+        ),
+        (
+            NormalEncoding::Oct32,
+            false,
+            "encode_normal_oct32",
+            "encode_normal_oct32_vouched",
+        ),
+        (
+            NormalEncoding::Oct32,
+            true,
+            "encode_normal_oct32_fast",
+            "encode_normal_oct32_fast_vouched",
+        ),
+    ] {
+        let normal = NormalChoice {
+            encoding: Some(encoding),
+            fast_encoder,
+        };
+        let robust_scene = Scene {
+            normal,
+            ..Scene::default()
+        };
+        let vouched_scene = Scene {
+            normal_input: NormalInput::Vouched,
+            ..robust_scene
+        };
+        let (r, v) = (
+            robust_scene.roots().unwrap(),
+            vouched_scene.roots().unwrap(),
+        );
+        assert!(r.contains(&robust) && !r.contains(&vouched), "{r:?}");
+        assert!(v.contains(&vouched) && !v.contains(&robust), "{v:?}");
+        assert!(
+            vouched_scene
+                .wgsl()
+                .unwrap()
+                .contains(&format!("fn {vouched}(")),
+            "{vouched}"
+        );
+        // The same G-buffer: only the encoder's form differs.
+        assert_eq!(robust_scene.gbuffer(), vouched_scene.gbuffer());
+    }
+    for encoding in [
+        None,
+        Some(NormalEncoding::Xyz8),
+        Some(NormalEncoding::XyFp16),
+        Some(NormalEncoding::Hemioct24),
+    ] {
+        let s = Scene {
+            normal: NormalChoice {
+                encoding,
+                fast_encoder: false,
+            },
+            normal_input: NormalInput::Vouched,
+            ..Scene::default()
+        };
+        let e = s.roots().unwrap_err();
+        assert_eq!(e.fields, ["normal_input", "normal.encoding"], "{e}");
+        assert!(s.gbuffer().is_err());
+    }
 }

@@ -9,7 +9,8 @@
 // the integer vector D = (2u - M, 2v - M, M - |2u - M| - |2v - M|) (folded when that z < 0),
 // which every implementation computes exactly.
 //
-// Bad input (all encoders): NaN anywhere, the zero vector and all-subnormal vectors encode as
+// Bad input (the robust encoders; the _vouched ones assume their contract, see "Vouched input"
+// below): NaN anywhere, the zero vector and all-subnormal vectors encode as
 // +z = (0, 0, 1); subnormal components count as zero; infinite components win (the direction of
 // the infinities, e.g. (+Inf, 1, 0) -> +x); any finite length is fine (the map is scale-free).
 // Decoders accept every bit pattern and return a finite unit vector.
@@ -124,9 +125,15 @@ fn oct_try_wide(s: vec3<f32>, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) -
 // - the code from the bits of c00 + 2^23 (0x4b000000 + c00, exact): the bias of the high half
 //   shifts out of the u32 (bits >= 8), the low half's is taken off.
 fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
-    let m = f32((1u << bits) - 1u);
     let s = oct_sanitize(n).xyz;
-    let c00 = floor(oct_continuous(s, m));
+    return oct_choose(s, oct_continuous(s, f32((1u << bits) - 1u)), bits);
+}
+
+// The precise encoders' choice for a scaled input s (largest magnitude in [1, 4), or zero) and
+// its continuous coordinates c: the body of oct_encode_precise, shared with the vouched form.
+fn oct_choose(s: vec3<f32>, c: vec2<f32>, bits: u32) -> u32 {
+    let m = f32((1u << bits) - 1u);
+    let c00 = floor(c);
     let ab0 = (c00 + c00) - vec2<f32>(m);
     let ab1 = ab0 + vec2<f32>(2.0);
     let a = vec4<f32>(ab0.x, ab1.x, ab0.x, ab1.x);
@@ -154,9 +161,15 @@ fn oct_encode_precise(n: vec3<f32>, bits: u32) -> u32 {
 // oct_encode_precise at 16 bits per axis, with oct_try_wide's exact |D|^2 (a u32 sum of the
 // squares, rounded once; each square from the bits of |D_k| + 2^23, see oct_try_wide).
 fn oct_encode_precise_wide(n: vec3<f32>) -> u32 {
-    let m = 65535.0;
     let s = oct_sanitize(n).xyz;
-    let c00 = floor(oct_continuous(s, m));
+    return oct_choose_wide(s, oct_continuous(s, 65535.0));
+}
+
+// oct_choose at 16 bits per axis: the body of oct_encode_precise_wide, shared with the vouched
+// form.
+fn oct_choose_wide(s: vec3<f32>, c: vec2<f32>) -> u32 {
+    let m = 65535.0;
+    let c00 = floor(c);
     let ab0 = (c00 + c00) - vec2<f32>(m);
     let ab1 = ab0 + vec2<f32>(2.0);
     let a = vec4<f32>(ab0.x, ab1.x, ab0.x, ab1.x);
@@ -194,6 +207,89 @@ fn oct_encode_round(n: vec3<f32>, bits: u32) -> u32 {
     return uv.x | (uv.y << bits);
 }
 
+// ---- Vouched input: for vectors a scene vouches for (its own interpolated normals) ----
+// The contract: every component finite; every non-zero component at least 2^-126 max(1, |n|inf)
+// in magnitude (no subnormals, and none so small beside the largest that oct_sanitize's scaling
+// would make it subnormal); 0 < |n|inf = max(|x|, |y|, |z|) <= 2^124. Within it each vouched
+// encoder returns the robust encoder's code bit for bit on a correctly rounded adapter
+// (oct_sanitize would change nothing but an exact power-of-two scale, and the projection
+// s.xy / |s|_1 does not see that scale), so the robust forms' error bounds hold; on any
+// conforming adapter every intermediate is finite and each axis a code in [0, M]. Outside it
+// (NaN, +-Inf, subnormals, |n|inf > 2^124) WGSL leaves the result indeterminate: some u32,
+// which every decoder accepts (bits above 2N may be set; the decoders ignore them). The zero
+// vector is outside too: the precise vouched encoders still give +z for it, as the robust ones
+// (one max in about 130 instructions), the fast ones leave it indeterminate (0 / 0).
+
+// The octahedral projection (oct_continuous's p, before the map to codes) of a vouched vector
+// n with l1 = |n|_1 (or more, for the zero vector): n.xy / l1, folded when n.z < 0 (the sign
+// of +-0 counts as +). In the contract |n|_1, a sum of non-negative normal floats, lies in
+// [2^-126, 3 * 2^124]: no overflow, and the divisor inside the spec's [2^-126, 2^126] for `/`.
+fn oct_project_vouched(n: vec3<f32>, l1: f32) -> vec2<f32> {
+    let p = n.xy / l1;
+    if (n.z < 0.0) {
+        let sgn = select(vec2<f32>(-1.0), vec2<f32>(1.0), p >= vec2<f32>(0.0));
+        return (vec2<f32>(1.0) - abs(p.yx)) * sgn;
+    }
+    return p;
+}
+
+// A vouched vector times oct_sanitize's power of two 2^(127 - e), e the biased exponent of its
+// largest magnitude (largest then in [1, 2)): exact in the contract (every non-zero component
+// stays at least 2^-126), so it is oct_sanitize's vector bit for bit; zero stays zero. The
+// precise encoders' scores need it (|s x D|^2 of an unscaled 2^124 would overflow).
+fn oct_scale_vouched(n: vec3<f32>) -> vec3<f32> {
+    let a = abs(n);
+    let e = bitcast<u32>(max(max(a.x, a.y), a.z)) >> 23u;
+    return n * bitcast<f32>((254u - e) << 23u);
+}
+
+// The continuous code coordinates (as oct_continuous's) of a vouched vector scaled by
+// oct_scale_vouched, for the precise encoders: its L1 norm kept at least 2^-126, which changes
+// no in-contract vector and gives the zero vector p = 0, the code of +z, as oct_sanitize's +z.
+fn oct_continuous_vouched(s: vec3<f32>, m: f32) -> vec2<f32> {
+    let a = abs(s);
+    let p = oct_project_vouched(s, max((a.x + a.y) + a.z, 1.1754943508222875e-38));
+    let t = clamp(p * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(0.99999988079071044921875));
+    return t * m;
+}
+
+// oct_encode_precise for a vouched vector: no sanitising, the same choice.
+fn oct_encode_precise_vouched(n: vec3<f32>, bits: u32) -> u32 {
+    let s = oct_scale_vouched(n);
+    return oct_choose(s, oct_continuous_vouched(s, f32((1u << bits) - 1u)), bits);
+}
+
+// oct_encode_precise_wide for a vouched vector.
+fn oct_encode_precise_wide_vouched(n: vec3<f32>) -> u32 {
+    let s = oct_scale_vouched(n);
+    return oct_choose_wide(s, oct_continuous_vouched(s, 65535.0));
+}
+
+// The rounding encoder's code per axis, round(t M) (half to even), for a vouched vector:
+// unscaled, and without oct_continuous's clamp, which changes no code: p is in [-1, 1] up to
+// the division's error, so t = p/2 + 1/2 is in [0, 1] up to a few ULP, and round(t M) of a t
+// above oct_continuous's top 1 - 2^-23 is M, as rounding the top gives; below 0 it is -0.
+fn oct_round_vouched(n: vec3<f32>, m: f32) -> vec2<f32> {
+    let a = abs(n);
+    let t = oct_project_vouched(n, (a.x + a.y) + a.z) * 0.5 + 0.5;
+    return round(t * m);
+}
+
+// oct_encode_round for a vouched vector, 8 or 12 bits per axis: the code u + v 2^bits summed in
+// f32 (whole numbers below 2^24: exact, fused or not) and converted once.
+fn oct_encode_round_vouched(n: vec3<f32>, bits: u32) -> u32 {
+    let r = oct_round_vouched(n, f32((1u << bits) - 1u));
+    return u32(r.y * f32(1u << bits) + r.x);
+}
+
+// oct_encode_round_vouched at 16 bits per axis, where u + v 2^16 needs 32 bits: each axis read
+// from the bits of round(t M) + 2^23 (exact), as oct_encode_precise reads its code: the bias of
+// v shifts out of the u32, u's is taken off.
+fn oct_encode_round_wide_vouched(n: vec3<f32>) -> u32 {
+    let w = bitcast<vec2<u32>>(oct_round_vouched(n, 65535.0) + vec2<f32>(8388608.0));
+    return (w.x + (w.y << 16u)) - 0x4b000000u;
+}
+
 // The unit vector of code p with `bits` bits per axis: its integer direction D, normalised.
 fn oct_decode(p: u32, bits: u32) -> vec3<f32> {
     let m = (1u << bits) - 1u;
@@ -218,6 +314,15 @@ fn encode_normal_oct16(n: vec3<f32>) -> u32 {
 fn encode_normal_oct16_fast(n: vec3<f32>) -> u32 {
     return oct_encode_round(n, 8u);
 }
+// encode_normal_oct16 for a vector the scene vouches for (the contract above the vouched
+// helpers): the same code, without the bad-input handling.
+fn encode_normal_oct16_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_precise_vouched(n, 8u);
+}
+// encode_normal_oct16_fast for a vector the scene vouches for: the same code, cheaper.
+fn encode_normal_oct16_fast_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_round_vouched(n, 8u);
+}
 // The unit vector of a 2x8-bit code; bits 16-31 are ignored.
 fn decode_normal_oct16(p: u32) -> vec3<f32> {
     return oct_decode(p, 8u);
@@ -241,6 +346,15 @@ fn encode_normal_oct24(n: vec3<f32>) -> u32 {
 fn encode_normal_oct24_fast(n: vec3<f32>) -> u32 {
     return oct_encode_round(n, 12u);
 }
+// encode_normal_oct24 for a vector the scene vouches for (the contract above the vouched
+// helpers): the same code, without the bad-input handling.
+fn encode_normal_oct24_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_precise_vouched(n, 12u);
+}
+// encode_normal_oct24_fast for a vector the scene vouches for: the same code, cheaper.
+fn encode_normal_oct24_fast_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_round_vouched(n, 12u);
+}
 // The unit vector of a 2x12-bit code; bits 24-31 are ignored.
 fn decode_normal_oct24(p: u32) -> vec3<f32> {
     return oct_decode(p, 12u);
@@ -262,6 +376,15 @@ fn encode_normal_oct32(n: vec3<f32>) -> u32 {
 // The 2x16-bit code by rounding each axis: cheaper, not always the closest direction.
 fn encode_normal_oct32_fast(n: vec3<f32>) -> u32 {
     return oct_encode_round(n, 16u);
+}
+// encode_normal_oct32 for a vector the scene vouches for (the contract above the vouched
+// helpers): the same code, without the bad-input handling.
+fn encode_normal_oct32_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_precise_wide_vouched(n);
+}
+// encode_normal_oct32_fast for a vector the scene vouches for: the same code, cheaper.
+fn encode_normal_oct32_fast_vouched(n: vec3<f32>) -> u32 {
+    return oct_encode_round_wide_vouched(n);
 }
 // The unit vector of a 2x16-bit code (every bit pattern decodes).
 fn decode_normal_oct32(p: u32) -> vec3<f32> {

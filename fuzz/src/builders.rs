@@ -72,7 +72,7 @@ pub const BUILDERS: &[Entry] = &[
                 PositionChoice::CameraRelative,
             ][usize::from((b >> 3) % 4)];
             use prepass::scene::{
-                LightBuffers, LightingChoice, Lights, NormalChoice, NormalEncoding,
+                LightBuffers, LightingChoice, Lights, NormalChoice, NormalEncoding, NormalInput,
                 RoughnessChoice, Specular,
             };
             let (n, l) = (i.u8(), i.u8());
@@ -90,6 +90,11 @@ pub const BUILDERS: &[Entry] = &[
                         .nth(usize::from(n % 7))
                         .flatten(),
                     fast_encoder: n & 0x80 != 0,
+                },
+                normal_input: if n & 0x20 != 0 {
+                    NormalInput::Vouched
+                } else {
+                    NormalInput::Robust
                 },
                 roughness: if n & 0x40 != 0 {
                     RoughnessChoice::Log8

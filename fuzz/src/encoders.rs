@@ -11,6 +11,9 @@ use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
 use prepass::roughness;
 use prepass::roughness_ggx as ggx;
 
+/// A normal encoder's twin.
+type Encoder = fn(Vec3) -> u32;
+
 /// Encoders: any bit patterns in, no panic, the documented output.
 pub const ENCODERS: &[Entry] = &[
     Entry {
@@ -208,6 +211,53 @@ pub const ENCODERS: &[Entry] = &[
                 assert!(ggx::encode_roughness_ggx8(lo) <= ggx::encode_roughness_ggx8(hi));
                 assert!(ggx::encode_roughness_godot8(lo, 0) <= ggx::encode_roughness_godot8(hi, 0));
                 assert!(ggx::encode_roughness_ggx8_log(lo) <= ggx::encode_roughness_ggx8_log(hi));
+            }
+        },
+    },
+    // Appended (the corpus picks entries by index).
+    Entry {
+        name: "normal::oct::encode_normal_oct*_vouched, *_fast_vouched (vouched input)",
+        check: |i| {
+            let n = i.vec3();
+            // Any input: no panic. Inside the contract: the robust encoder's code.
+            let pairs: [(Encoder, Encoder, &str); 6] = [
+                (
+                    oct::encode_normal_oct16_vouched,
+                    oct::encode_normal_oct16,
+                    "oct16",
+                ),
+                (
+                    oct::encode_normal_oct16_fast_vouched,
+                    oct::encode_normal_oct16_fast,
+                    "oct16 fast",
+                ),
+                (
+                    oct::encode_normal_oct24_vouched,
+                    oct::encode_normal_oct24,
+                    "oct24",
+                ),
+                (
+                    oct::encode_normal_oct24_fast_vouched,
+                    oct::encode_normal_oct24_fast,
+                    "oct24 fast",
+                ),
+                (
+                    oct::encode_normal_oct32_vouched,
+                    oct::encode_normal_oct32,
+                    "oct32",
+                ),
+                (
+                    oct::encode_normal_oct32_fast_vouched,
+                    oct::encode_normal_oct32_fast,
+                    "oct32 fast",
+                ),
+            ];
+            let inside = oct::is_vouched(n);
+            for (vouched, robust, name) in pairs {
+                let code = vouched(n);
+                if inside {
+                    assert_eq!(code, robust(n), "{name} vouched: {n:?}");
+                }
             }
         },
     },

@@ -15,7 +15,12 @@
 //! `encode_normal_oct24_fast`, `decode_normal_oct24`, `encode_normal_oct24_unorm`,
 //! `decode_normal_oct24_unorm`; `encode_normal_oct32`, `encode_normal_oct32_fast`,
 //! `decode_normal_oct32`, `encode_normal_oct32_unorm`, `decode_normal_oct32_unorm`. Each has
-//! the WGSL function's name; the bit count is the code's total (oct24 = 2×12 bits).
+//! the WGSL function's name; the bit count is the code's total (oct24 = 2×12 bits). For vectors
+//! a scene vouches for (finite, non-zero, no subnormals; see [`encode_precise_vouched`]):
+//! `encode_normal_oct16_vouched`, `encode_normal_oct16_fast_vouched`,
+//! `encode_normal_oct24_vouched`, `encode_normal_oct24_fast_vouched`,
+//! `encode_normal_oct32_vouched`, `encode_normal_oct32_fast_vouched` — the robust encoders'
+//! codes bit for bit inside that contract, without their bad-input handling.
 //!
 //! The *precise* encoder (the survey's) tries the four codes around the continuous coordinates
 //! and keeps the one whose direction is closest to the input; the `_fast` encoder rounds each
@@ -105,9 +110,15 @@ fn sin2(s: Vec3, uv: UVec2, bits: u32) -> f32 {
 /// `normalize(D)` to within `√2·2^-24` rad. Measured over 2^24 directions: worst excess 5.4e-6°.
 /// Bit-identical to the WGSL on a correctly rounded adapter.
 pub fn encode_precise(n: Vec3, bits: u32) -> u32 {
-    let m = max_code(bits);
     let s = sanitize(n).unwrap_or(Vec3::Z);
-    let c = continuous(s, bits);
+    choose(s, continuous(s, bits), bits)
+}
+
+/// The precise encoders' choice (the WGSL's `oct_choose`, `oct_choose_wide`) for a scaled input
+/// `s` and its continuous coordinates `c`: shared by [`encode_precise`] and
+/// [`encode_precise_vouched`].
+fn choose(s: Vec3, c: Vec2, bits: u32) -> u32 {
+    let m = max_code(bits);
     // c < M (see `continuous`), so c00 + 1 ≤ M.
     let c00 = UVec2::new(c.x.floor() as u32, c.y.floor() as u32);
     debug_assert!(c00.max_element() < m);
@@ -130,6 +141,117 @@ pub fn encode_round(n: Vec3, bits: u32) -> u32 {
     (c.x.round_ties_even() as u32) | ((c.y.round_ties_even() as u32) << bits)
 }
 
+/// The largest component magnitude `2^124` a vouched input may have (see [`encode_precise_vouched`]).
+pub const VOUCHED_MAX: f32 = f32::from_bits(0x7d80_0000);
+
+/// Whether `n` is inside the vouched encoders' contract ([`encode_precise_vouched`]): every
+/// component finite, every non-zero one at least `2^-126·max(1, ‖n‖∞)` in magnitude, and
+/// `0 < ‖n‖∞ ≤ 2^124`.
+pub fn is_vouched(n: Vec3) -> bool {
+    let a = n.abs();
+    let big = a.max_element();
+    if !(big > 0.0 && big <= VOUCHED_MAX) {
+        // NaN fails this comparison too.
+        return false;
+    }
+    let least = f32::MIN_POSITIVE * big.max(1.0);
+    a.to_array().iter().all(|&c| c == 0.0 || c >= least)
+}
+
+/// The octahedral projection of a vouched vector `n` with `l1 = |x| + |y| + |z|` (the WGSL's
+/// `oct_project_vouched`; the `p` of [`continuous`], before the map to codes): `n.xy / l1`,
+/// folded when `n.z < 0` (the sign of ±0 counts as +), with no sanitising. In the contract
+/// `l1`, a sum of non-negative normal floats, lies in `[2^-126, 3·2^124]`: no overflow, and the
+/// divisor inside WGSL's `[2^-126, 2^126]` for `/`.
+fn project_vouched(n: Vec3, l1: f32) -> Vec2 {
+    let p = Vec2::new(n.x / l1, n.y / l1);
+    if n.z < 0.0 {
+        let sgn = Vec2::new(
+            if p.x >= 0.0 { 1.0 } else { -1.0 },
+            if p.y >= 0.0 { 1.0 } else { -1.0 },
+        );
+        return (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
+    }
+    p
+}
+
+/// [`continuous`] for a vouched vector scaled by [`scale_vouched`] (the WGSL's
+/// `oct_continuous_vouched`, behind the precise vouched encoders): [`project_vouched`] with the
+/// L1 norm kept at least `2^-126` — which changes no in-contract vector and sends the zero
+/// vector to `p = 0`, the code of +z, as [`sanitize`]'s `None` does — then [`continuous`]'s
+/// clamped map `(p/2 + 1/2)·M`.
+fn continuous_vouched(s: Vec3, bits: u32) -> Vec2 {
+    let a = s.abs();
+    let p = project_vouched(s, ((a.x + a.y) + a.z).max(f32::MIN_POSITIVE));
+    let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(CONTINUOUS_TOP));
+    t * max_code(bits) as f32
+}
+
+/// A vouched vector times `2^(127 − e)`, `e` the biased exponent of its largest magnitude (the
+/// WGSL's `oct_scale_vouched`): the power of two [`sanitize`] picks, so in the contract (no
+/// component made subnormal) exactly `sanitize(n)`; the zero vector stays zero. The `u32`
+/// arithmetic wraps as WGSL's does, so an out-of-contract input gives some float, no panic.
+fn scale_vouched(n: Vec3) -> Vec3 {
+    let e = n.abs().max_element().to_bits() >> 23;
+    n * f32::from_bits(254u32.wrapping_sub(e) << 23)
+}
+
+/// The precise encoder for a vector the scene vouches for (twin of the WGSL
+/// `oct_encode_precise_vouched` behind `encode_normal_oct16_vouched`, `…oct24_vouched`,
+/// `…oct32_vouched`): [`encode_precise`] without the bad-input handling.
+///
+/// **Contract** ([`is_vouched`]): every component finite, every non-zero component at least
+/// `2^-126·max(1, ‖n‖∞)` in magnitude (so no subnormals, and for a vector longer than 1 nothing
+/// below `2^-126` of its largest), and `0 < ‖n‖∞ ≤ 2^124`. An interpolated normal of any
+/// length a renderer produces is inside. The zero vector is outside, yet this precise form
+/// still encodes it as +z, as [`encode_precise`] does (a `max` on the L1 norm,
+/// `continuous_vouched`); the `_fast` form leaves it indeterminate.
+///
+/// **Maths:** `s = n·2^(127−e)` (`scale_vouched`, `e` the biased exponent of `‖n‖∞`) is exact in the contract and equals
+/// `sanitize(n)` (which would only flush subnormals, none here, and scale by the same power of
+/// two); the choice is then [`encode_precise`]'s, on the same `s`. So the code is
+/// [`encode_precise`]'s bit for bit, and so is its **error bound** (the same function of the
+/// same input). The WGSL is bit-identical to this twin on a correctly rounded adapter.
+///
+/// **Outside the contract** (NaN, ±Inf, subnormal components, `‖n‖∞ > 2^124`): the WGSL's
+/// result is indeterminate — some `u32`, which every decoder accepts (bits above the code may be
+/// set; decoders ignore them). This twin returns a deterministic code there (NaN coordinates
+/// convert to 0) and never panics.
+pub fn encode_precise_vouched(n: Vec3, bits: u32) -> u32 {
+    let s = scale_vouched(n);
+    choose(s, continuous_vouched(s, bits), bits)
+}
+
+/// The rounding encoder for a vector the scene vouches for (twin of the WGSL
+/// `oct_encode_round_vouched`, 8 and 12 bits, and `oct_encode_round_wide_vouched`, 16 bits,
+/// behind the `_fast_vouched` encoders): each coordinate of `t = p/2 + 1/2`, `p` from
+/// `project_vouched` (`n.xy / l1` folded as in [`continuous`]) with `l1 = |x| + |y| + |z|` (no sanitising, no scaling, no guard), rounded
+/// to the nearest code `round(t·M)` (half to even). The WGSL assembles the code as
+/// `u32(v·2^bits + u)` (whole numbers below 2^24, exact) at 8 and 12 bits and from the bits of
+/// `round(t·M) + 2^23` at 16; in the contract both are `u | v << bits`.
+///
+/// **Contract:** [`encode_precise_vouched`]'s ([`is_vouched`]; the zero vector is outside it).
+/// **Maths:** in the contract `sanitize(n) = n·2^k` exactly, and every step before the quotient
+/// (`|x| + |y| + |z|` of non-negative normal floats, at most `3·2^124`) commutes with that power
+/// of two, as does a correctly rounded quotient `n.xy / l1`; so `p` is [`continuous`]'s.
+/// [`continuous`] then clamps `t` to `[0, 1 − 2^-23]`, which changes no rounded code:
+/// `p ∈ [−1, 1]` up to the division's error, and `round(t·M)` of a `t` above the top is `M`, as
+/// the top's is (below 0 it is `−0`). So the code is [`encode_round`]'s bit for bit on a
+/// correctly rounded adapter, with its **error bound**, and on any conforming adapter each axis
+/// is a code in `[0, M]`. **Zero vector and outside the contract:** `0/0` and the like — the
+/// WGSL's result is indeterminate, some `u32` every decoder accepts; this twin's (NaN converts
+/// to 0, conversions saturate) is deterministic and it never panics. The guard that would
+/// define the zero vector costs one instruction, on RDNA2 the margin by which this encoder is
+/// cheaper than Bevy's G-buffer encoder (`tests/isa.rs`,
+/// `vouched_encoders_cost_less_than_their_robust_siblings`).
+pub fn encode_round_vouched(n: Vec3, bits: u32) -> u32 {
+    let m = max_code(bits) as f32;
+    let a = n.abs();
+    let t = project_vouched(n, (a.x + a.y) + a.z) * 0.5 + 0.5;
+    let (u, v) = ((t.x * m).round_ties_even(), (t.y * m).round_ties_even());
+    (u as u32) | ((v as u32) << bits)
+}
+
 /// Decode `bits` bits per axis: `normalize(D)` of the code's exact integer vector.
 /// Every bit pattern gives a finite unit vector (D is never zero: its L1 norm is M).
 pub fn decode(p: u32, bits: u32) -> Vec3 {
@@ -138,8 +260,8 @@ pub fn decode(p: u32, bits: u32) -> Vec3 {
 }
 
 macro_rules! oct_size {
-    ($bits:literal, $enc:ident, $fast:ident, $dec:ident, $enc_unorm:ident, $dec_unorm:ident,
-     $what:literal) => {
+    ($bits:literal, $enc:ident, $fast:ident, $enc_v:ident, $fast_v:ident, $dec:ident,
+     $enc_unorm:ident, $dec_unorm:ident, $what:literal) => {
         #[doc = concat!("Precise octahedral encoder, ", $what, " (twin of the WGSL function of the same name; see [`encode_precise`]). Bad input: see [`crate::normal`].")]
         pub fn $enc(n: Vec3) -> u32 {
             encode_precise(n, $bits)
@@ -147,6 +269,14 @@ macro_rules! oct_size {
         #[doc = concat!("Rounding octahedral encoder, ", $what, " (see [`encode_round`]). Bad input: see [`crate::normal`].")]
         pub fn $fast(n: Vec3) -> u32 {
             encode_round(n, $bits)
+        }
+        #[doc = concat!("Precise octahedral encoder for vouched input, ", $what, ": `", stringify!($enc), "`'s code bit for bit inside the contract, cheaper (see [`encode_precise_vouched`]: contract, maths, bound, out-of-contract result).")]
+        pub fn $enc_v(n: Vec3) -> u32 {
+            encode_precise_vouched(n, $bits)
+        }
+        #[doc = concat!("Rounding octahedral encoder for vouched input, ", $what, ": `", stringify!($fast), "`'s code bit for bit inside the contract, cheaper (see [`encode_round_vouched`]).")]
+        pub fn $fast_v(n: Vec3) -> u32 {
+            encode_round_vouched(n, $bits)
         }
         #[doc = concat!("Octahedral decoder, ", $what, " (see [`decode`]); bits above the code are ignored.")]
         pub fn $dec(p: u32) -> Vec3 {
@@ -167,6 +297,8 @@ oct_size!(
     8,
     encode_normal_oct16,
     encode_normal_oct16_fast,
+    encode_normal_oct16_vouched,
+    encode_normal_oct16_fast_vouched,
     decode_normal_oct16,
     encode_normal_oct16_unorm,
     decode_normal_oct16_unorm,
@@ -176,6 +308,8 @@ oct_size!(
     12,
     encode_normal_oct24,
     encode_normal_oct24_fast,
+    encode_normal_oct24_vouched,
+    encode_normal_oct24_fast_vouched,
     decode_normal_oct24,
     encode_normal_oct24_unorm,
     decode_normal_oct24_unorm,
@@ -185,6 +319,8 @@ oct_size!(
     16,
     encode_normal_oct32,
     encode_normal_oct32_fast,
+    encode_normal_oct32_vouched,
+    encode_normal_oct32_fast_vouched,
     decode_normal_oct32,
     encode_normal_oct32_unorm,
     decode_normal_oct32_unorm,
@@ -327,6 +463,59 @@ mod tests {
                 "{v} -> {got}"
             );
         }
+    }
+
+    /// The vouched twins never panic, and inside their contract give the robust twins' codes:
+    /// random vectors whose components take every exponent (so many fall outside the contract,
+    /// some on its edges), scaled copies of them, and the special patterns.
+    #[test]
+    fn vouched_twins_equal_the_robust_ones_inside_the_contract() {
+        type Pair = (fn(Vec3) -> u32, fn(Vec3) -> u32);
+        let pairs: [Pair; 6] = [
+            (encode_normal_oct16_vouched, encode_normal_oct16),
+            (encode_normal_oct16_fast_vouched, encode_normal_oct16_fast),
+            (encode_normal_oct24_vouched, encode_normal_oct24),
+            (encode_normal_oct24_fast_vouched, encode_normal_oct24_fast),
+            (encode_normal_oct32_vouched, encode_normal_oct32),
+            (encode_normal_oct32_fast_vouched, encode_normal_oct32_fast),
+        ];
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let (mut inside, mut total) = (0, 0);
+        for k in 0..200_000 {
+            let r = next();
+            // Exponents concentrated near 127 (unit vectors) for half the draws, anywhere else.
+            let comp = |bits: u64| {
+                let b = bits as u32;
+                if k % 2 == 0 {
+                    f32::from_bits((b & 0x807f_ffff) | ((120 + (b >> 23) % 10) << 23))
+                } else {
+                    f32::from_bits(b)
+                }
+            };
+            let n = Vec3::new(comp(r), comp(r >> 21 ^ next()), comp(next()));
+            for v in [n, n * 0.75, n * 1e-30, n * 1e30] {
+                total += 1;
+                let ok = is_vouched(v);
+                inside += usize::from(ok);
+                for (vouched, robust) in pairs {
+                    let code = vouched(v);
+                    if ok {
+                        assert_eq!(code, robust(v), "{v:?}");
+                    }
+                }
+            }
+        }
+        // The draws must reach the contract often, or the test checks little.
+        assert!(
+            inside * 4 > total,
+            "{inside} of {total} inside the contract"
+        );
     }
 
     #[test]

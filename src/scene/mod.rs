@@ -121,6 +121,12 @@ impl NormalEncoding {
     pub fn has_fast_encoder(self) -> bool {
         !matches!(self, Self::Xyz8 | Self::XyFp16 | Self::Xyz10 | Self::Snorm8)
     }
+
+    /// Whether encoders for vouched input (`_vouched`, `_fast_vouched`) exist beside the robust
+    /// ones ([`NormalInput::Vouched`]).
+    pub fn has_vouched_encoder(self) -> bool {
+        matches!(self, Self::Oct16 | Self::Oct24 | Self::Oct32)
+    }
 }
 
 /// The G-buffer's normal: an encoding (or none) and whether to use its `_fast` encoder.
@@ -130,6 +136,26 @@ pub struct NormalChoice {
     pub encoding: Option<NormalEncoding>,
     /// Use the plain rounding encoder instead of the precise (best-of-4-neighbours) one.
     pub fast_encoder: bool,
+}
+
+/// What the scene promises about the normals its G-buffer pass encodes: which form of the
+/// encoder it calls.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum NormalInput {
+    /// Any input: the robust encoders (`encode_normal_oct24`, …), with a documented code for
+    /// NaN, ±Inf, subnormals, the zero vector and any finite length.
+    #[default]
+    Robust,
+    /// The scene vouches for its normals (its own interpolated normals): every component finite,
+    /// every non-zero one at least `2^-126·max(1, ‖n‖∞)` in magnitude (no subnormals), and
+    /// `0 < ‖n‖∞ ≤ 2^124`. The G-buffer pass calls the `_vouched` encoder
+    /// (`encode_normal_oct24_vouched`, `encode_normal_oct24_fast_vouched`, …): the robust
+    /// encoder's code bit for bit inside that contract without its bad-input handling, and some
+    /// code (indeterminate in WGSL; every decoder accepts it) outside it. Only the octahedral
+    /// encodings (`Oct16`, `Oct24`, `Oct32`) have the vouched form
+    /// ([`NormalEncoding::has_vouched_encoder`]); the contract in full:
+    /// [`crate::normal::oct::encode_precise_vouched`].
+    Vouched,
 }
 
 /// The specular exponent (roughness) in the G-buffer.
@@ -203,6 +229,8 @@ pub struct Scene {
     pub position: PositionChoice,
     /// Normal encoding.
     pub normal: NormalChoice,
+    /// Which encoder form the normal's G-buffer pass calls: robust (default) or vouched.
+    pub normal_input: NormalInput,
     /// Roughness storage.
     pub roughness: RoughnessChoice,
     /// Lighting pieces.
@@ -246,6 +274,17 @@ impl Scene {
             return bad(
                 &["normal.fast_encoder", "normal.encoding"],
                 "only the octahedral encodings have a `_fast` encoder",
+            );
+        }
+        if self.normal_input == NormalInput::Vouched
+            && !self
+                .normal
+                .encoding
+                .is_some_and(|e| e.has_vouched_encoder())
+        {
+            return bad(
+                &["normal_input", "normal.encoding"],
+                "only the octahedral encodings (oct16, oct24, oct32) have a `_vouched` encoder",
             );
         }
         if lit && self.normal.encoding.is_none() {

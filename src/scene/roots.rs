@@ -1,14 +1,14 @@
 //! The WGSL functions a scene's passes call: the roots the composer starts from.
 
 use super::{
-    DepthStorage, LightBuffers, Lights, NormalEncoding, PositionChoice, RoughnessChoice, Scene,
-    SceneError, Specular,
+    DepthStorage, LightBuffers, Lights, NormalEncoding, NormalInput, PositionChoice,
+    RoughnessChoice, Scene, SceneError, Specular,
 };
 use crate::projection::DepthConvention;
 
 /// The normal functions a G-buffer pass (encode, through the render-target form) and a
 /// lighting pass (decode) call.
-fn normal_roots(e: NormalEncoding, fast: bool) -> [&'static str; 4] {
+fn normal_roots(e: NormalEncoding, fast: bool, vouched: bool) -> [&'static str; 4] {
     // Names are spelled out so a search for a WGSL function finds its scene choice.
     let (enc, enc_fast, dec, enc_unorm, dec_unorm) = match e {
         NormalEncoding::Xyz8 => (
@@ -75,7 +75,19 @@ fn normal_roots(e: NormalEncoding, fast: bool) -> [&'static str; 4] {
             "decode_normal_snorm8_snorm",
         ),
     };
-    [if fast { enc_fast } else { enc }, dec, enc_unorm, dec_unorm]
+    let enc = match (e, fast, vouched) {
+        (_, true, false) => enc_fast,
+        (_, false, false) => enc,
+        (NormalEncoding::Oct16, false, true) => "encode_normal_oct16_vouched",
+        (NormalEncoding::Oct16, true, true) => "encode_normal_oct16_fast_vouched",
+        (NormalEncoding::Oct24, false, true) => "encode_normal_oct24_vouched",
+        (NormalEncoding::Oct24, true, true) => "encode_normal_oct24_fast_vouched",
+        (NormalEncoding::Oct32, false, true) => "encode_normal_oct32_vouched",
+        (NormalEncoding::Oct32, true, true) => "encode_normal_oct32_fast_vouched",
+        // `Scene::validate` refuses vouched input for the other encodings.
+        (_, _, true) => unreachable!("validated: {e:?} has no vouched encoder"),
+    };
+    [enc, dec, enc_unorm, dec_unorm]
 }
 
 impl Scene {
@@ -132,7 +144,11 @@ impl Scene {
             ]),
         }
         if let Some(e) = self.normal.encoding {
-            r.extend(normal_roots(e, self.normal.fast_encoder));
+            r.extend(normal_roots(
+                e,
+                self.normal.fast_encoder,
+                self.normal_input == NormalInput::Vouched,
+            ));
         }
         if self.roughness == RoughnessChoice::Log8 {
             r.extend(["encode_log_roughness", "decode_log_roughness"]);

@@ -552,3 +552,48 @@ pub fn assert_near_ties(c: &prepass::sweep::normal::Codec, inputs: &[[f32; 3]]) 
         );
     }
 }
+
+/// The vouched encoders as codecs: the robust codec `name` with its encoder (WGSL and twin)
+/// swapped for the vouched form, the decoder, references and targets kept (the vouched code is
+/// the robust one inside the contract, so the same targets hold).
+#[allow(dead_code)]
+pub fn vouched_codec(name: &str) -> prepass::sweep::normal::Codec {
+    let mut c = *prepass::sweep::normal::codec(name);
+    let (vname, enc, twin): (&'static str, &'static str, fn(glam::Vec3) -> u32) = match name {
+        "oct16" => (
+            "oct16 vouched",
+            "encode_normal_oct16_vouched",
+            prepass::normal::oct::encode_normal_oct16_vouched,
+        ),
+        "oct16 fast" => (
+            "oct16 vouched fast",
+            "encode_normal_oct16_fast_vouched",
+            prepass::normal::oct::encode_normal_oct16_fast_vouched,
+        ),
+        "oct24" => (
+            "oct24 vouched",
+            "encode_normal_oct24_vouched",
+            prepass::normal::oct::encode_normal_oct24_vouched,
+        ),
+        "oct24 fast" => (
+            "oct24 vouched fast",
+            "encode_normal_oct24_fast_vouched",
+            prepass::normal::oct::encode_normal_oct24_fast_vouched,
+        ),
+        "oct32" => (
+            "oct32 vouched",
+            "encode_normal_oct32_vouched",
+            prepass::normal::oct::encode_normal_oct32_vouched,
+        ),
+        "oct32 fast" => (
+            "oct32 vouched fast",
+            "encode_normal_oct32_fast_vouched",
+            prepass::normal::oct::encode_normal_oct32_fast_vouched,
+        ),
+        _ => panic!("{name} has no vouched form"),
+    };
+    c.name = vname;
+    c.encode = enc;
+    c.twin_encode = twin;
+    c
+}

@@ -52,7 +52,7 @@ pub mod volumes;
 use prepass::projection::DepthConvention;
 use prepass::scene::{
     DepthChoice, DepthStorage, LightBuffers, LightingChoice, Lights, NormalChoice, NormalEncoding,
-    PositionChoice, RoughnessChoice, Scene, Specular,
+    NormalInput, PositionChoice, RoughnessChoice, Scene, Specular,
 };
 
 /// The ambient term every layout adds (`ambient·albedo`), so unlit geometry is not black.
@@ -150,6 +150,7 @@ impl Config {
                 encoding: Some(normal),
                 fast_encoder: false,
             },
+            normal_input: NormalInput::Robust,
             roughness: RoughnessChoice::Log8,
             lighting: LightingChoice {
                 lights: Lights::PointAndSpot,

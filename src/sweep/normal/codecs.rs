@@ -201,7 +201,7 @@ pub const CODECS: [Codec; 12] = [
     ),
     oct_codec!(
         "oct24",
-        "Bevy deferred (the same word)",
+        "Bevy deferred (the same word); Unity HDRP, URP (`_unity`: its byte order)",
         12,
         &OCT12,
         encode_normal_oct24,
@@ -214,7 +214,7 @@ pub const CODECS: [Codec; 12] = [
     ),
     oct_codec!(
         "oct24 fast",
-        "Bevy deferred (the same word)",
+        "Bevy deferred (the same word); Unity HDRP, URP (`_unity`: its byte order)",
         12,
         &OCT12,
         encode_normal_oct24_fast,
