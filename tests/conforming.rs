@@ -1392,6 +1392,26 @@ fn every_policy_through_the_searched_module_matches_its_own_module() {
     }
 }
 
+/// The twins' promises at the worst tables the round-trip search found for one codec: codes
+/// within one step of the twin's, decodes unit within the conforming budget.
+fn assert_searched_promises(r: &prepass::sweep::conforming::NormalFigures) {
+    use prepass::sweep::conforming::UNIT_TOLERANCE_CONFORMING;
+    assert_within!(
+        r.searched_code_step,
+        1,
+        "the twins' promise: within one code on every conforming adapter",
+        "{}: code steps from the twin's at the searched worst tables",
+        r.name
+    );
+    assert_within!(
+        r.searched_len_error,
+        UNIT_TOLERANCE_CONFORMING,
+        "sweep::conforming::UNIT_TOLERANCE_CONFORMING",
+        "{}: |len − 1| of the decodes at the searched worst tables",
+        r.name
+    );
+}
+
 /// Every normal encoding on the emulated worst adapter (upper, lower, one seed): round-trip
 /// error beside the adapter's own (`round_trip` without emulation), every decode finite and
 /// unit within the conforming budget, the codes the emulated encoder chooses differently from
@@ -1519,20 +1539,7 @@ fn every_normal_encoding_under_emulation() {
         );
         // The searched tables are conforming behaviours: the promises asserted under the
         // policies above must hold at the worst combination the search found too.
-        assert_within!(
-            r.searched_code_step,
-            1,
-            "the twins' promise: within one code on every conforming adapter",
-            "{}: code steps from the twin's at the searched worst tables",
-            r.name
-        );
-        assert_within!(
-            r.searched_len_error,
-            UNIT_TOLERANCE_CONFORMING,
-            "sweep::conforming::UNIT_TOLERANCE_CONFORMING",
-            "{}: |len − 1| of the decodes at the searched worst tables",
-            r.name
-        );
+        assert_searched_promises(r);
         // docs/figures.md (Normal encodings) says the greedy and searched worst agree to the
         // fourth decimal.
         assert_within_abs!(
@@ -1621,14 +1628,7 @@ fn vouched_encoders_under_emulation() {
         _ => codes32.clone(),
     };
     let policies = [Policy::Upper, Policy::Lower, Policy::Seeded(1)];
-    let names = [
-        "oct16",
-        "oct16 fast",
-        "oct24",
-        "oct24 fast",
-        "oct32",
-        "oct32 fast",
-    ];
+    let names = common::OCTAHEDRAL;
     let mut inspect = |c: &prepass::sweep::normal::Codec,
                        policy: Policy,
                        e: &prepass::sweep::conforming::EmulatedCodec| {
@@ -1680,20 +1680,7 @@ fn vouched_encoders_under_emulation() {
         );
         assert_eq!(r.adapter.nan_count, 0, "{}: NaN round trips", r.name);
         assert!(r.searched.is_finite(), "{}: {}", r.name, r.searched_at);
-        assert_within!(
-            r.searched_code_step,
-            1,
-            "the twins' promise: within one code on every conforming adapter",
-            "{}: code steps from the twin's at the searched worst tables",
-            r.name
-        );
-        assert_within!(
-            r.searched_len_error,
-            UNIT_TOLERANCE_CONFORMING,
-            "sweep::conforming::UNIT_TOLERANCE_CONFORMING",
-            "{}: |len − 1| of the decodes at the searched worst tables",
-            r.name
-        );
+        assert_searched_promises(r);
     }
 }
 

@@ -113,16 +113,6 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
     ),
 ];
 
-/// The robust codecs with a vouched-input form (`common::vouched_codec`).
-const VOUCHED: [&str; 6] = [
-    "oct16",
-    "oct16 fast",
-    "oct24",
-    "oct24 fast",
-    "oct32",
-    "oct32 fast",
-];
-
 const BEVY_OCT24: &str = "peer:bevy gbuffer oct24 (×4095)";
 const BEVY_DEPTH: &str = "peer:bevy −near/d (negated)";
 const MESHOPT_K8: &str = "peer:meshopt oct K=8";
@@ -166,7 +156,7 @@ fn normal_points() -> Vec<Point> {
         }
     }
     // The vouched-input encoders (inside their contract: these directions), beside the robust.
-    for name in VOUCHED {
+    for name in common::OCTAHEDRAL {
         let c = common::vouched_codec(name);
         let rt = round_trip(gpu(), &c, &dirs).unwrap();
         pts.push(Point {

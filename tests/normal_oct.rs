@@ -99,16 +99,6 @@ fn oct32_precise_and_fast_round_trip() {
     check(codec("oct32 fast"));
 }
 
-/// The robust codecs that have a vouched form.
-const VOUCHED: [&str; 6] = [
-    "oct16",
-    "oct16 fast",
-    "oct24",
-    "oct24 fast",
-    "oct32",
-    "oct32 fast",
-];
-
 /// The vouched encoders pass the robust ones' round-trip suite on their own (`check`: the WGSL
 /// equals the vouched twin, the error meets the same targets, the precise choice is optimal
 /// among its neighbours) over 2^24 Fibonacci directions and the adversarial set, all inside
@@ -121,7 +111,7 @@ fn vouched_encoders_round_trip_like_the_robust_ones() {
             .iter()
             .all(|&n| oct::is_vouched(n.into()))
     );
-    for name in VOUCHED {
+    for name in common::OCTAHEDRAL {
         check(&common::vouched_codec(name));
     }
 }
@@ -180,7 +170,7 @@ fn vouched_encoders_give_the_robust_codes_inside_their_contract() {
     use prepass::harness::Arg;
     let inputs = vouched_inputs();
     let like = common::evaluates_like_the_twins();
-    for name in VOUCHED {
+    for name in common::OCTAHEDRAL {
         let robust = codec(name);
         let v = common::vouched_codec(name);
         let run = |f: &str| {
@@ -318,14 +308,7 @@ fn bad_input_gets_the_documented_code_on_both_sides() {
     let cases = bad_inputs();
     let bad: Vec<[f32; 3]> = cases.iter().map(|c| c.0).collect();
     let good: Vec<[f32; 3]> = cases.iter().map(|c| c.1).collect();
-    for name in [
-        "oct16",
-        "oct16 fast",
-        "oct24",
-        "oct24 fast",
-        "oct32",
-        "oct32 fast",
-    ] {
+    for name in common::OCTAHEDRAL {
         let c = codec(name);
         let got = common::assert_encodes_like(name, &bad, &good);
         assert!(

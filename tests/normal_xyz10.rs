@@ -9,13 +9,9 @@ mod common;
 use common::gpu;
 use glam::Vec3;
 use prepass::assert_within;
-use prepass::normal::{F32_SLACK_DEG, xyz10};
+use prepass::normal::xyz10;
 use prepass::precision::metrics::angle_degrees;
-use prepass::sweep::normal::interop::{RENORMALISE_CHANNEL, engine_write};
-use prepass::sweep::normal::{
-    RenderTarget, adversarial_directions, bad_inputs, codec, decode_codes, fibonacci_directions,
-    render_target_forms, round_trip,
-};
+use prepass::sweep::normal::{RenderTarget, bad_inputs, codec, decode_codes};
 
 /// 2^24 codes: a stride through all 2^30 (an odd step visits distinct codes and every field
 /// value), then every code whose fields are each one of {0, 1, 511, 512, 1022, 1023}.
@@ -36,32 +32,12 @@ fn sampled_codes() -> Vec<u32> {
 
 #[test]
 fn round_trip_meets_the_bound_and_twin_is_bit_identical() {
-    let c = codec("xyz10");
-    for (set, inputs) in [
-        ("fibonacci 2^24", fibonacci_directions(1 << 24)),
-        ("adversarial", adversarial_directions()),
-    ] {
-        let rt = round_trip(gpu(), c, &inputs).unwrap();
-        eprintln!(
-            "xyz10 {set}: mean {:.6}° max {:.6}° (bound {:.4}°)",
-            rt.error.mean(),
-            rt.error.max,
-            xyz10::max_angle_deg()
-        );
-        common::assert_round_trip_matches_twins(set, c, &inputs, &rt);
-        assert_eq!(rt.error.nan_count, 0);
-        assert!(
-            rt.codes.iter().all(|p| p >> 30 == 0),
-            "bits 30-31 stay zero"
-        );
-        assert_within!(
-            rt.error.max,
-            xyz10::max_angle_deg() + F32_SLACK_DEG,
-            "normal::xyz10::max_angle_deg(), asin(√3/1023), + normal::F32_SLACK_DEG",
-            "{set}: max degrees at input {}",
-            rt.error.argmax
-        );
-    }
+    common::assert_linear_round_trip(
+        "xyz10",
+        0x3fff_ffff,
+        xyz10::max_angle_deg(),
+        "normal::xyz10::max_angle_deg(), asin(√3/1023)",
+    );
 }
 
 #[test]
@@ -91,26 +67,14 @@ fn bad_input_gets_the_documented_code_on_both_sides() {
 
 #[test]
 fn render_target_form_matches_the_code_path() {
-    let inputs = common::render_target_inputs();
-    let c = codec("xyz10");
-    let f = render_target_forms(
-        gpu(),
-        c,
-        "encode_normal_xyz10_unorm",
-        "decode_normal_xyz10_unorm",
+    common::assert_render_target_form(
+        "xyz10",
+        ("encode_normal_xyz10_unorm", "decode_normal_xyz10_unorm"),
         RenderTarget::Rgb10a2Unorm,
-        &inputs,
-    )
-    .unwrap();
-    assert_eq!(f.encode.count, 0, "channels: {:?}", f.encode.first);
-    // Bound: 0. Every channel is within 0.45/1023 of k/1023, so round(1023 c) is the code.
-    assert_eq!(f.decode.count, 0, "decode: {:?}", f.decode.first);
-    common::assert_twin_unorm_form(
-        &inputs,
-        xyz10::encode_normal_xyz10_unorm,
-        xyz10::decode_normal_xyz10_unorm,
-        xyz10::encode_normal_xyz10,
-        xyz10::decode_normal_xyz10,
+        (
+            xyz10::encode_normal_xyz10_unorm,
+            xyz10::decode_normal_xyz10_unorm,
+        ),
     );
     assert_eq!(
         xyz10::decode_normal_xyz10_unorm([f32::NAN, f32::INFINITY, -1.0, 0.5]),
@@ -126,28 +90,12 @@ fn render_target_form_matches_the_code_path() {
 /// rounding.
 #[test]
 fn reads_and_writes_the_engines_rgb10a2_normals() {
-    let c = codec("xyz10");
-    let inputs = fibonacci_directions(1 << 20);
-    let rt = round_trip(gpu(), c, &inputs).unwrap();
-    let (mut ties, mut differ) = (0u64, Vec::new());
-    for (n, &p) in inputs.iter().zip(&rt.codes) {
-        let engine = engine_write(n.map(|x| x * 0.5 + 0.5), 1023.0, false);
-        let ours = [p & 0x3ff, (p >> 10) & 0x3ff, (p >> 20) & 0x3ff];
-        for (e, o) in engine.iter().zip(ours) {
-            match e {
-                None => ties += 1,
-                Some(e) if *e != i64::from(o) => differ.push((*n, p)),
-                _ => {}
-            }
-        }
-    }
-    eprintln!("xyz10 interop: {ties} lanes within the tie window of {RENORMALISE_CHANNEL:e}");
-    assert!(
-        differ.is_empty(),
-        "{} inputs where prepass writes another code than n·0.5 + 0.5 quantised, away from a \
-         tie (window: sweep::normal::interop::RENORMALISE_CHANNEL); first {:?}",
-        differ.len(),
-        differ.first()
+    common::assert_writes_like_the_engine(
+        "xyz10",
+        |n| n.map(|x| x * 0.5 + 0.5),
+        &[(0, 10), (10, 10), (20, 10)],
+        1023.0,
+        false,
     );
     // (2) The adapter's decode is within decode_angle_deg of exact::decode (checked over these
     // codes by sampled_codes_decode_to_unit_vectors...), so it suffices that the engines'

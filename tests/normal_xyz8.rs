@@ -7,47 +7,32 @@ mod common;
 use common::gpu;
 use glam::Vec3;
 use prepass::assert_within;
-use prepass::normal::{F32_SLACK_DEG, xyz8};
-use prepass::sweep::normal::{
-    adversarial_directions, bad_inputs, codec, decode_codes, decode_range, fibonacci_directions,
-    round_trip,
-};
+use prepass::normal::xyz8;
+use prepass::sweep::normal::{bad_inputs, codec, decode_codes, decode_range};
 
 #[test]
 fn round_trip_meets_target_and_twin_is_bit_identical() {
-    let c = codec("xyz8");
-    let (mean_t, max_t) = c.target.unwrap();
-    for (set, inputs) in [
-        ("fibonacci 2^24", fibonacci_directions(1 << 24)),
-        ("adversarial", adversarial_directions()),
-    ] {
-        let rt = round_trip(gpu(), c, &inputs).unwrap();
-        eprintln!(
-            "xyz8 {set}: mean {:.6}° max {:.6}° (target {mean_t} / {max_t}, bound {:.4}°)",
-            rt.error.mean(),
-            rt.error.max,
-            xyz8::max_angle_deg()
-        );
-        common::assert_round_trip_matches_twins(set, c, &inputs, &rt);
-        assert_eq!(rt.error.nan_count, 0);
-        assert!(
-            rt.codes.iter().all(|p| p >> 24 == 0),
-            "byte 3 must stay zero"
-        );
-        assert_within!(
-            rt.error.max,
-            xyz8::max_angle_deg() + F32_SLACK_DEG,
-            "normal::xyz8::max_angle_deg(), asin(√3/255), + normal::F32_SLACK_DEG",
-            "{set}: max degrees at input {}",
-            rt.error.argmax
-        );
-        if set.starts_with("fibonacci") {
-            // The rule: no worse than its float64 reproduction by more than 2%.
-            let rule = "Codec::target: within 2% of the f64 reproduction (comment above)";
-            assert_within!(rt.error.mean(), mean_t * 1.02, rule, "{set}: mean degrees");
-            assert_within!(rt.error.max, max_t * 1.02, rule, "{set}: max degrees");
-        }
-    }
+    let rt = common::assert_linear_round_trip(
+        "xyz8",
+        0xff_ffff,
+        xyz8::max_angle_deg(),
+        "normal::xyz8::max_angle_deg(), asin(√3/255)",
+    );
+    // The rule: no worse than its float64 reproduction by more than 2%.
+    let (mean_t, max_t) = codec("xyz8").target.unwrap();
+    let rule = "Codec::target: within 2% of the f64 reproduction (comment above)";
+    assert_within!(
+        rt.error.mean(),
+        mean_t * 1.02,
+        rule,
+        "fibonacci 2^24: mean degrees"
+    );
+    assert_within!(
+        rt.error.max,
+        max_t * 1.02,
+        rule,
+        "fibonacci 2^24: max degrees"
+    );
 }
 
 #[test]

@@ -553,6 +553,18 @@ pub fn assert_near_ties(c: &prepass::sweep::normal::Codec, inputs: &[[f32; 3]]) 
     }
 }
 
+/// The octahedral codecs (`prepass::sweep::normal::CODECS`' names), each with a vouched-input
+/// form ([`vouched_codec`]).
+#[allow(dead_code)]
+pub const OCTAHEDRAL: [&str; 6] = [
+    "oct16",
+    "oct16 fast",
+    "oct24",
+    "oct24 fast",
+    "oct32",
+    "oct32 fast",
+];
+
 /// The vouched encoders as codecs: the robust codec `name` with its encoder (WGSL and twin)
 /// swapped for the vouched form, the decoder, references and targets kept (the vouched code is
 /// the robust one inside the contract, so the same targets hold).
@@ -596,4 +608,117 @@ pub fn vouched_codec(name: &str) -> prepass::sweep::normal::Codec {
     c.encode = enc;
     c.twin_encode = twin;
     c
+}
+
+/// The round trip of a per-channel (linear) normal codec over 2^24 Fibonacci directions and the
+/// adversarial set: the twins' promise ([`assert_round_trip_matches_twins`]), no NaN, no bit
+/// outside `code_mask`, and the max angle within the derived `bound_deg` (named `bound`) plus
+/// `normal::F32_SLACK_DEG`. Returns the Fibonacci round trip for further checks.
+#[allow(dead_code)]
+pub fn assert_linear_round_trip(
+    name: &str,
+    code_mask: u32,
+    bound_deg: f64,
+    bound: &str,
+) -> prepass::sweep::normal::RoundTrip {
+    use prepass::sweep::normal::{adversarial_directions, fibonacci_directions, round_trip};
+    let c = prepass::sweep::normal::codec(name);
+    let mut fib = None;
+    for (set, inputs) in [
+        ("fibonacci 2^24", fibonacci_directions(1 << 24)),
+        ("adversarial", adversarial_directions()),
+    ] {
+        let rt = round_trip(gpu(), c, &inputs).unwrap();
+        eprintln!(
+            "{name} {set}: mean {:.6}° max {:.6}° (bound {bound_deg:.4}°)",
+            rt.error.mean(),
+            rt.error.max
+        );
+        assert_round_trip_matches_twins(set, c, &inputs, &rt);
+        assert_eq!(rt.error.nan_count, 0, "{name} {set}: NaN round trips");
+        assert!(
+            rt.codes.iter().all(|p| p & !code_mask == 0),
+            "{name} {set}: bits outside {code_mask:#x} set"
+        );
+        prepass::assert_within!(
+            rt.error.max,
+            bound_deg + prepass::normal::F32_SLACK_DEG,
+            format!("{bound} + normal::F32_SLACK_DEG"),
+            "{name} {set}: max degrees at input {}",
+            rt.error.argmax
+        );
+        fib.get_or_insert(rt);
+    }
+    fib.expect("two sets")
+}
+
+/// A codec's WGSL render-target form for `target` (`rgb10a2unorm`, `rgba8snorm`) agrees bit for
+/// bit with its code path on the adapter over [`render_target_inputs`]
+/// (`prepass::sweep::normal::render_target_forms`), and the Rust form with the Rust code path.
+#[allow(dead_code)]
+pub fn assert_render_target_form(
+    name: &str,
+    (encode_rt, decode_rt): (&str, &str),
+    target: prepass::sweep::normal::RenderTarget,
+    twins: (fn(glam::Vec3) -> [f32; 4], fn([f32; 4]) -> glam::Vec3),
+) {
+    let inputs = render_target_inputs();
+    let c = prepass::sweep::normal::codec(name);
+    let f = prepass::sweep::normal::render_target_forms(
+        gpu(),
+        c,
+        encode_rt,
+        decode_rt,
+        target,
+        &inputs,
+    )
+    .unwrap();
+    assert_eq!(f.encode.count, 0, "{encode_rt}: {:?}", f.encode.first);
+    // Bound: 0. Every channel is within 0.45 of a step of the exact channel, so rounding it
+    // back gives the code.
+    assert_eq!(f.decode.count, 0, "{decode_rt}: {:?}", f.decode.first);
+    assert_twin_unorm_form(&inputs, twins.0, twins.1, c.twin_encode, c.twin_decode);
+}
+
+/// Interop with an engine that writes the f32 channel values `channels(n)` of each unit input
+/// to a target whose conversion is `round(scale·clamp(c))` (`signed`: snorm): the adapter's
+/// codes of `name` over 2^20 Fibonacci directions equal the engine's lane by lane, except where
+/// the engine's value lies within `sweep::normal::interop::RENORMALISE_CHANNEL` of a tie.
+#[allow(dead_code)]
+pub fn assert_writes_like_the_engine(
+    name: &str,
+    channels: fn([f32; 3]) -> [f32; 3],
+    lanes: &[(u32, u32)],
+    scale: f64,
+    signed: bool,
+) {
+    use prepass::sweep::normal::interop::{RENORMALISE_CHANNEL, engine_write};
+    let c = prepass::sweep::normal::codec(name);
+    let inputs = prepass::sweep::normal::fibonacci_directions(1 << 20);
+    let rt = prepass::sweep::normal::round_trip(gpu(), c, &inputs).unwrap();
+    let (mut ties, mut differ) = (0u64, Vec::new());
+    for (n, &p) in inputs.iter().zip(&rt.codes) {
+        let engine = engine_write(channels(*n), scale, signed);
+        for (e, &(shift, width)) in engine.iter().zip(lanes) {
+            let field = (p >> shift) & ((1 << width) - 1);
+            let ours = if signed {
+                i64::from(((field << (32 - width)) as i32) >> (32 - width))
+            } else {
+                i64::from(field)
+            };
+            match e {
+                None => ties += 1,
+                Some(e) if *e != ours => differ.push((*n, p)),
+                _ => {}
+            }
+        }
+    }
+    eprintln!("{name} interop: {ties} lanes within the tie window of {RENORMALISE_CHANNEL:e}");
+    assert!(
+        differ.is_empty(),
+        "{name}: {} inputs where prepass writes another code than the engine's write, away from \
+         a tie (window: sweep::normal::interop::RENORMALISE_CHANNEL); first {:?}",
+        differ.len(),
+        differ.first()
+    );
 }

@@ -26,33 +26,54 @@ pub fn unorm_forms(
     lanes: usize,
     inputs: &[[f32; 3]],
 ) -> Result<UnormForms, HarnessError> {
-    use crate::precision::inputs::{sign_pattern, unorm8_channel};
+    use crate::precision::inputs::unorm8_channel;
+    forms(
+        gpu,
+        codec,
+        (encode_unorm, decode_unorm),
+        lanes,
+        inputs,
+        &|p, k| crate::depth24::unpack4x8unorm(p)[k],
+        &|p, k, error, down| unorm8_channel((p >> (8 * k)) & 0xff, error, down),
+    )
+}
+
+/// The check both forms share: channel `k` of code `p` is `exact(p, k)` when written, and
+/// `perturbed(p, k, error, down)` when sampled under each of the recovery cases (channel `k`
+/// pushed down by bit `k mod 3` of the code's sign pattern).
+#[allow(clippy::type_complexity)]
+fn forms(
+    gpu: &Gpu,
+    codec: &Codec,
+    (encode_rt, decode_rt): (&str, &str),
+    lanes: usize,
+    inputs: &[[f32; 3]],
+    exact: &dyn Fn(u32, usize) -> f32,
+    perturbed: &dyn Fn(u32, usize, crate::precision::inputs::ChannelError, bool) -> f32,
+) -> Result<UnormForms, HarnessError> {
+    use crate::precision::inputs::sign_pattern;
     let n = inputs.len() as u64;
     let mut f = UnormForms::default();
     let channels = gpu
-        .kernel(codec.source, encode_unorm)?
+        .kernel(codec.source, encode_rt)?
         .run(&[Arg::column(inputs)], n)?
         .into_words();
     let codes: Vec<u32> = inputs
         .iter()
         .map(|v| (codec.twin_encode)(Vec3::from(*v)))
         .collect();
-    f.encode = Mismatches::count(&channels, |k| {
-        crate::depth24::unpack4x8unorm(codes[k / lanes])[k % lanes].to_bits()
-    });
+    f.encode = Mismatches::count(&channels, |k| exact(codes[k / lanes], k % lanes).to_bits());
     let want = gpu
         .kernel(codec.source, codec.decode)?
         .run(&[Arg::column(&codes)], n)?
         .into_words();
-    let dec = gpu.kernel(codec.source, decode_unorm)?;
+    let dec = gpu.kernel(codec.source, decode_rt)?;
     for (error, flip) in crate::sweep::depth24::RECOVERY_CASES {
         let c: Vec<f32> = codes
             .iter()
             .flat_map(|&p| {
                 let signs = sign_pattern(p, flip);
-                (0..lanes).map(move |k| {
-                    unorm8_channel((p >> (8 * k)) & 0xff, error, (signs >> (k % 3)) & 1 == 1)
-                })
+                (0..lanes).map(move |k| perturbed(p, k, error, (signs >> (k % 3)) & 1 == 1))
             })
             .collect();
         let got = dec.run(&[Arg::column(&c)], n)?.into_words();
@@ -132,42 +153,20 @@ pub fn render_target_forms(
     target: RenderTarget,
     inputs: &[[f32; 3]],
 ) -> Result<UnormForms, HarnessError> {
-    use crate::precision::inputs::sign_pattern;
-    let n = inputs.len() as u64;
-    let mut f = UnormForms::default();
-    let channels = gpu
-        .kernel(codec.source, encode_rt)?
-        .run(&[Arg::column(inputs)], n)?
-        .into_words();
-    let codes: Vec<u32> = inputs
-        .iter()
-        .map(|v| (codec.twin_encode)(Vec3::from(*v)))
-        .collect();
-    f.encode = Mismatches::count(&channels, |k| {
-        target.channels(codes[k / 4])[k % 4].to_bits()
-    });
-    let want = gpu
-        .kernel(codec.source, codec.decode)?
-        .run(&[Arg::column(&codes)], n)?
-        .into_words();
-    let dec = gpu.kernel(codec.source, decode_rt)?;
-    for (error, flip) in crate::sweep::depth24::RECOVERY_CASES {
-        let c: Vec<f32> = codes
-            .iter()
-            .flat_map(|&p| {
-                let signs = sign_pattern(p, flip);
-                (0..4).map(move |k| {
-                    if k == 3 {
-                        // The renderer's channel: anything.
-                        0.5
-                    } else {
-                        target.perturbed(p, k, error, (signs >> k) & 1 == 1)
-                    }
-                })
-            })
-            .collect();
-        let got = dec.run(&[Arg::column(&c)], n)?.into_words();
-        f.decode.merge(Mismatches::count(&got, |k| want[k]), 0);
-    }
-    Ok(f)
+    forms(
+        gpu,
+        codec,
+        (encode_rt, decode_rt),
+        4,
+        inputs,
+        &|p, k| target.channels(p)[k],
+        // The fourth channel is the renderer's: anything.
+        &|p, k, error, down| {
+            if k == 3 {
+                0.5
+            } else {
+                target.perturbed(p, k, error, down)
+            }
+        },
+    )
 }
