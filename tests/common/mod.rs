@@ -652,6 +652,13 @@ pub fn assert_linear_round_trip(
     fib.expect("two sets")
 }
 
+/// A Rust render-target encoder: the channels a normal writes.
+#[allow(dead_code)]
+pub type RenderEncode = fn(glam::Vec3) -> [f32; 4];
+/// A Rust render-target decoder: the normal sampled channels give.
+#[allow(dead_code)]
+pub type RenderDecode = fn([f32; 4]) -> glam::Vec3;
+
 /// A codec's WGSL render-target form for `target` (`rgb10a2unorm`, `rgba8snorm`) agrees bit for
 /// bit with its code path on the adapter over [`render_target_inputs`]
 /// (`prepass::sweep::normal::render_target_forms`), and the Rust form with the Rust code path.
@@ -660,7 +667,7 @@ pub fn assert_render_target_form(
     name: &str,
     (encode_rt, decode_rt): (&str, &str),
     target: prepass::sweep::normal::RenderTarget,
-    twins: (fn(glam::Vec3) -> [f32; 4], fn([f32; 4]) -> glam::Vec3),
+    twins: (RenderEncode, RenderDecode),
 ) {
     let inputs = render_target_inputs();
     let c = prepass::sweep::normal::codec(name);
