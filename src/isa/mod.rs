@@ -301,11 +301,41 @@ fn scratch_dir() -> Result<PathBuf, IsaError> {
     Ok(dir)
 }
 
-/// One child process for `target`: write the job, run it, read the answer.
+/// The most pipelines one child process compiles: Mesa's drm shims crash (SIGSEGV) after some
+/// 500 pipelines in one process (measured on polaris10: 162 shipped functions, about 650
+/// modules, crashed; 158 did not), so a long list goes through several children in turn.
+const CHILD_MODULES: usize = 256;
+
+/// [`run_child`] over `modules` in parts of at most [`CHILD_MODULES`], the answers joined.
+fn run_children(
+    target: Target,
+    root: Option<&std::path::Path>,
+    dir: &std::path::Path,
+    modules: &[(PathBuf, String)],
+    wants_asm: &[bool],
+) -> Result<stats::Answer, String> {
+    let mut parsed: Option<stats::Answer> = None;
+    for (n, (chunk, asm)) in modules
+        .chunks(CHILD_MODULES)
+        .zip(wants_asm.chunks(CHILD_MODULES))
+        .enumerate()
+    {
+        let part = run_child(target, root, dir, n, chunk, asm)?;
+        match &mut parsed {
+            None => parsed = Some(part),
+            Some(all) => all.modules.extend(part.modules),
+        }
+    }
+    parsed.ok_or_else(|| "nothing to compile".to_string())
+}
+
+/// One child process for `target` (the `part`-th of its jobs): write the job, run it, read the
+/// answer.
 fn run_child(
     target: Target,
     root: Option<&std::path::Path>,
     dir: &std::path::Path,
+    part: usize,
     modules: &[(PathBuf, String)],
     wants_asm: &[bool],
 ) -> Result<stats::Answer, String> {
@@ -321,7 +351,7 @@ fn run_child(
             u8::from(*asm)
         ));
     }
-    let job_path = dir.join(format!("job-{}", target.chip()));
+    let job_path = dir.join(format!("job-{}-{part}", target.chip()));
     std::fs::write(&job_path, job).map_err(|e| format!("{}: {e}", job_path.display()))?;
     let exe = std::env::current_exe().map_err(|e| format!("current_exe: {e}"))?;
     let out = Command::new(&exe)
@@ -368,7 +398,7 @@ fn compile_for(
     let wants_asm: Vec<bool> = (0..modules.len())
         .map(|m| disassembly && plan.iter().any(|ids| ids[2] == m))
         .collect();
-    let parsed = run_child(target, root, dir, modules, &wants_asm)?;
+    let parsed = run_children(target, root, dir, modules, &wants_asm)?;
     let functions = plan
         .iter()
         .map(|ids| {
@@ -466,7 +496,7 @@ impl Costing {
             let root = self.root.clone();
             let reports = per_target(&self.targets, |target| LibraryReport {
                 target,
-                outcome: run_child(target, root.as_deref(), &dir, &modules, &none).map(|a| {
+                outcome: run_children(target, root.as_deref(), &dir, &modules, &none).map(|a| {
                     let stats = a.modules.into_iter().map(|m| m.map(|c| c.stats)).collect();
                     (a.driver_info, stats)
                 }),
