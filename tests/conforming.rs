@@ -1112,16 +1112,27 @@ fn identity_reproduces_every_shipped_module_bit_for_bit() {
             let original = run_kernel(source, name, &args, n as u64);
             let k = EmulatedKernel::new(gpu(), source, name, &Emulation::new(Policy::Identity))
                 .unwrap_or_else(|e| panic!("{}: {name}: {e}", file.name));
-            let (identity, _) = k.run(&args, n as u64).unwrap();
-            let differ = original
-                .words()
-                .iter()
-                .zip(identity.words())
-                .filter(|(a, b)| a != b)
+            let (identity, outside) = k.run(&args, n as u64).unwrap();
+            // Where an evaluation left the spec's domain (a ±Inf or NaN produced or operated
+            // on), WGSL defines no result, and the two modules, compiled apart, may differ
+            // there: those elements are not compared (a vouched encoder outside its contract
+            // met this). The rest must be identical, and most elements must be compared.
+            let per = original.words().len() / n;
+            let (a, b) = (original.words(), identity.words());
+            let differ = (0..n)
+                .filter(|&e| !outside[e] && a[e * per..(e + 1) * per] != b[e * per..(e + 1) * per])
                 .count();
+            let skipped = outside.iter().filter(|&&o| o).count();
             assert_eq!(
                 differ, 0,
-                "{}: `{name}` under the identity policy differs from the original in {differ} words",
+                "{}: `{name}` under the identity policy differs from the original at {differ} \
+                 elements inside the spec's domain",
+                file.name
+            );
+            assert!(
+                skipped < n / 2,
+                "{}: `{name}`: {skipped} of {n} random inputs leave the spec's domain, too many \
+                 for the comparison to mean anything",
                 file.name
             );
             functions += 1;
