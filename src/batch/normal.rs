@@ -275,32 +275,21 @@ fn hemioct_decode_lane(p: u32) -> Vec3 {
     normalize(Vec3::new(d[0] as f32, d[1] as f32, d[2] as f32))
 }
 
+/// The per-channel unorm encoders (xyz8: `M = 255`, `W = 8`; xyz10: `1023`, `10`):
+/// `round(M·(u/2 + 1/2))` per coordinate of the unit vector, field k at bit `k·W`.
 #[inline(always)]
-fn xyz8_encode_lane(n: Vec3) -> u32 {
+fn unorm_xyz_encode_lane<const M: u32, const W: u32>(n: Vec3) -> u32 {
     let s = sanitize_or_z(n);
     let u = s / ((s.x * s.x + s.y * s.y) + s.z * s.z).sqrt();
-    let c = (u * 0.5 + 0.5).clamp(Vec3::ZERO, Vec3::ONE) * 255.0;
-    round_even_small(c.x) | (round_even_small(c.y) << 8) | (round_even_small(c.z) << 16)
+    let c = (u * 0.5 + 0.5).clamp(Vec3::ZERO, Vec3::ONE) * M as f32;
+    round_even_small(c.x) | (round_even_small(c.y) << W) | (round_even_small(c.z) << (2 * W))
 }
 
+/// The per-channel unorm decoders: `normalize(2k − M)` of the three `W`-bit fields.
 #[inline(always)]
-fn xyz8_decode_lane(p: u32) -> Vec3 {
-    let c = |b: u32| (((b & 0xff) << 1) as i32).wrapping_sub(255) as f32;
-    normalize(Vec3::new(c(p), c(p >> 8), c(p >> 16)))
-}
-
-#[inline(always)]
-fn xyz10_encode_lane(n: Vec3) -> u32 {
-    let s = sanitize_or_z(n);
-    let u = s / ((s.x * s.x + s.y * s.y) + s.z * s.z).sqrt();
-    let c = (u * 0.5 + 0.5).clamp(Vec3::ZERO, Vec3::ONE) * 1023.0;
-    round_even_small(c.x) | (round_even_small(c.y) << 10) | (round_even_small(c.z) << 20)
-}
-
-#[inline(always)]
-fn xyz10_decode_lane(p: u32) -> Vec3 {
-    let c = |k: u32| (((k & 0x3ff) << 1) as i32).wrapping_sub(1023) as f32;
-    normalize(Vec3::new(c(p), c(p >> 10), c(p >> 20)))
+fn unorm_xyz_decode_lane<const M: u32, const W: u32>(p: u32) -> Vec3 {
+    let c = |k: u32| (((k & ((1 << W) - 1)) << 1) as i32).wrapping_sub(M as i32) as f32;
+    normalize(Vec3::new(c(p), c(p >> W), c(p >> (2 * W))))
 }
 
 /// `round_ties_even(127·x)` as a two's complement byte, for `|x| ≤ 1` (rounding is symmetric,
@@ -422,11 +411,11 @@ fn oct_decode_unorm<const BITS: u32>(c: [f32; 4]) -> Vec3 {
 }
 #[inline(always)]
 fn xyz8_encode_unorm(n: Vec3) -> [f32; 4] {
-    unpack4x8unorm_lane(xyz8_encode_lane(n))
+    unpack4x8unorm_lane(unorm_xyz_encode_lane::<255, 8>(n))
 }
 #[inline(always)]
 fn xyz8_decode_unorm(c: [f32; 4]) -> Vec3 {
-    xyz8_decode_lane(unorm_bytes_lane(c))
+    unorm_xyz_decode_lane::<255, 8>(unorm_bytes_lane(c))
 }
 #[inline(always)]
 fn unity_bytes_lane(p: u32) -> u32 {
@@ -459,7 +448,7 @@ fn oct24_unity_decode_unorm(c: [f32; 4]) -> Vec3 {
 }
 #[inline(always)]
 fn xyz10_encode_unorm(n: Vec3) -> [f32; 4] {
-    let p = xyz10_encode_lane(n);
+    let p = unorm_xyz_encode_lane::<1023, 10>(n);
     let c = |k: u32| (k & 0x3ff) as f32 / 1023.0;
     [c(p), c(p >> 10), c(p >> 20), 0.0]
 }
@@ -471,7 +460,7 @@ fn xyz10_decode_unorm(c: [f32; 4]) -> Vec3 {
         let b = sel(b > 0x7f80_0000, 0, sel(b >= 0x3f80_0000, 0x3f80_0000, b));
         round_even_small(f32::from_bits(b) * 1023.0)
     };
-    xyz10_decode_lane(k(c[0]) | (k(c[1]) << 10) | (k(c[2]) << 20))
+    unorm_xyz_decode_lane::<1023, 10>(k(c[0]) | (k(c[1]) << 10) | (k(c[2]) << 20))
 }
 #[inline(always)]
 fn snorm8_encode_snorm(n: Vec3) -> [f32; 4] {
@@ -519,14 +508,14 @@ batch_fn!(
     encode_normal_xyz8, encode_normal_xyz8_with, "normal::encode_normal_xyz8",
     (), Vec3 => u32,
     scalar: xyz8::encode_normal_xyz8,
-    lane: xyz8_encode_lane,
+    lane: unorm_xyz_encode_lane::<255, 8>,
 );
 batch_fn!(
     /// Batch [`xyz8::decode_normal_xyz8`].
     decode_normal_xyz8, decode_normal_xyz8_with, "normal::decode_normal_xyz8",
     (), u32 => Vec3,
     scalar: xyz8::decode_normal_xyz8,
-    lane: xyz8_decode_lane,
+    lane: unorm_xyz_decode_lane::<255, 8>,
 );
 batch_fn!(
     /// Batch [`xyz8::encode_normal_xyz8_unorm`].
@@ -587,14 +576,14 @@ batch_fn!(
     encode_normal_xyz10, encode_normal_xyz10_with, "normal::encode_normal_xyz10",
     (), Vec3 => u32,
     scalar: xyz10::encode_normal_xyz10,
-    lane: xyz10_encode_lane,
+    lane: unorm_xyz_encode_lane::<1023, 10>,
 );
 batch_fn!(
     /// Batch [`xyz10::decode_normal_xyz10`].
     decode_normal_xyz10, decode_normal_xyz10_with, "normal::decode_normal_xyz10",
     (), u32 => Vec3,
     scalar: xyz10::decode_normal_xyz10,
-    lane: xyz10_decode_lane,
+    lane: unorm_xyz_decode_lane::<1023, 10>,
 );
 batch_fn!(
     /// Batch [`xyz10::encode_normal_xyz10_unorm`].

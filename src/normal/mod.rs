@@ -113,6 +113,25 @@ pub(crate) fn scale_to_unit_range(c: [f32; 3]) -> Option<Vec3> {
     Some(Vec3::from_array(c.map(|x| flush(x * scale))))
 }
 
+/// The per-channel unorm encoders' body (xyz8, xyz10): the unit vector `u` of the sanitised `n`
+/// (`+z` for the degenerate cases), each coordinate as `round(m·(u/2 + 1/2))` (half to even)
+/// in the `width`-bit field `k` (x at bit 0).
+pub(crate) fn encode_unorm_xyz(n: Vec3, m: f32, width: u32) -> u32 {
+    let s = sanitize(n).unwrap_or(Vec3::Z);
+    let u = s / dot(s, s).sqrt();
+    let c = (u * 0.5 + 0.5).clamp(Vec3::ZERO, Vec3::ONE);
+    let k = (c * m).to_array().map(|x| x.round_ties_even() as u32);
+    k[0] | (k[1] << width) | (k[2] << (2 * width))
+}
+
+/// The per-channel unorm decoders' body (xyz8, xyz10): `normalize(2k − m)` of the three
+/// `width`-bit fields `k` of `p` (x at bit 0; bits above `3·width` ignored).
+pub(crate) fn decode_unorm_xyz(p: u32, m: i32, width: u32) -> Vec3 {
+    let mask = (1 << width) - 1;
+    let d = [p, p >> width, p >> (2 * width)].map(|k| (2 * (k & mask) as i32 - m) as f32);
+    normalize(Vec3::from_array(d))
+}
+
 /// `dot(a, b)` as WGSL implementations evaluate it without fusion: `(a.x·b.x + a.y·b.y) + a.z·b.z`,
 /// each operation rounded.
 pub(crate) fn dot(a: Vec3, b: Vec3) -> f32 {
@@ -148,6 +167,23 @@ pub(crate) fn sin2_to(s: Vec3, d: glam::IVec3) -> f32 {
 
 /// Exact `f64` helpers shared by the encodings' references.
 pub mod exact {
+    /// The per-channel unorm encoders' reference: the field nearest `m·(u/2 + 1/2)` per
+    /// coordinate of the unit vector `u` of `n` (`+z` for the zero vector; half to even), field
+    /// `k` at bit `k·width`.
+    pub fn encode_unorm_xyz(n: [f64; 3], m: f64, width: u32) -> u32 {
+        let u = unit(n).unwrap_or([0.0, 0.0, 1.0]);
+        u.iter().enumerate().fold(0, |acc, (k, &x)| {
+            acc | ((((x * 0.5 + 0.5) * m).round_ties_even() as u32) << (width * k as u32))
+        })
+    }
+
+    /// The direction of the odd-integer vector `2k − m` of the `width`-bit fields of `p`.
+    pub fn decode_unorm_xyz(p: u32, m: i32, width: u32) -> [f64; 3] {
+        let mask = (1 << width) - 1;
+        let d = [p, p >> width, p >> (2 * width)].map(|k| f64::from(2 * (k & mask) as i32 - m));
+        unit(d).expect("odd integers are never all zero")
+    }
+
     /// `v / |v|` in f64 (`None` for the zero vector).
     pub fn unit(v: [f64; 3]) -> Option<[f64; 3]> {
         let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();

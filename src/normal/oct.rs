@@ -57,15 +57,27 @@ pub const fn max_code(bits: u32) -> u32 {
 /// encoders clamped `floor` to `M − 1` instead: every code is the same.
 pub fn continuous(s: Vec3, bits: u32) -> Vec2 {
     let a = s.abs();
-    let l1 = (a.x + a.y) + a.z;
-    let mut p = Vec2::new(s.x / l1, s.y / l1);
-    if s.z < 0.0 {
+    to_codes(project(s, (a.x + a.y) + a.z), bits)
+}
+
+/// The octahedral projection of `n` with `l1 = |x| + |y| + |z|` (or more, for the vouched
+/// encoders' zero vector): `n.xy / l1`, folded when `n.z < 0` (the sign of ±0 counts as +).
+/// Shared by [`continuous`] and the vouched encoders (the WGSL's `oct_project_vouched`).
+fn project(n: Vec3, l1: f32) -> Vec2 {
+    let p = Vec2::new(n.x / l1, n.y / l1);
+    if n.z < 0.0 {
         let sgn = Vec2::new(
             if p.x >= 0.0 { 1.0 } else { -1.0 },
             if p.y >= 0.0 { 1.0 } else { -1.0 },
         );
-        p = (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
+        return (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
     }
+    p
+}
+
+/// [`continuous`]'s map of a projection `p` to code coordinates: `(p/2 + 1/2)·M`, with
+/// `p/2 + 1/2` clamped to `[0, CONTINUOUS_TOP]`.
+fn to_codes(p: Vec2, bits: u32) -> Vec2 {
     let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(CONTINUOUS_TOP));
     t * max_code(bits) as f32
 }
@@ -158,33 +170,14 @@ pub fn is_vouched(n: Vec3) -> bool {
     a.to_array().iter().all(|&c| c == 0.0 || c >= least)
 }
 
-/// The octahedral projection of a vouched vector `n` with `l1 = |x| + |y| + |z|` (the WGSL's
-/// `oct_project_vouched`; the `p` of [`continuous`], before the map to codes): `n.xy / l1`,
-/// folded when `n.z < 0` (the sign of ±0 counts as +), with no sanitising. In the contract
-/// `l1`, a sum of non-negative normal floats, lies in `[2^-126, 3·2^124]`: no overflow, and the
-/// divisor inside WGSL's `[2^-126, 2^126]` for `/`.
-fn project_vouched(n: Vec3, l1: f32) -> Vec2 {
-    let p = Vec2::new(n.x / l1, n.y / l1);
-    if n.z < 0.0 {
-        let sgn = Vec2::new(
-            if p.x >= 0.0 { 1.0 } else { -1.0 },
-            if p.y >= 0.0 { 1.0 } else { -1.0 },
-        );
-        return (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
-    }
-    p
-}
-
 /// [`continuous`] for a vouched vector scaled by [`scale_vouched`] (the WGSL's
-/// `oct_continuous_vouched`, behind the precise vouched encoders): [`project_vouched`] with the
+/// `oct_continuous_vouched`, behind the precise vouched encoders): [`project`] with the
 /// L1 norm kept at least `2^-126` — which changes no in-contract vector and sends the zero
 /// vector to `p = 0`, the code of +z, as [`sanitize`]'s `None` does — then [`continuous`]'s
 /// clamped map `(p/2 + 1/2)·M`.
 fn continuous_vouched(s: Vec3, bits: u32) -> Vec2 {
     let a = s.abs();
-    let p = project_vouched(s, ((a.x + a.y) + a.z).max(f32::MIN_POSITIVE));
-    let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(CONTINUOUS_TOP));
-    t * max_code(bits) as f32
+    to_codes(project(s, ((a.x + a.y) + a.z).max(f32::MIN_POSITIVE)), bits)
 }
 
 /// A vouched vector times `2^(127 − e)`, `e` the biased exponent of its largest magnitude (the
@@ -225,7 +218,7 @@ pub fn encode_precise_vouched(n: Vec3, bits: u32) -> u32 {
 /// The rounding encoder for a vector the scene vouches for (twin of the WGSL
 /// `oct_encode_round_vouched`, 8 and 12 bits, and `oct_encode_round_wide_vouched`, 16 bits,
 /// behind the `_fast_vouched` encoders): each coordinate of `t = p/2 + 1/2`, `p` from
-/// `project_vouched` (`n.xy / l1` folded as in [`continuous`]) with `l1 = |x| + |y| + |z|` (no sanitising, no scaling, no guard), rounded
+/// `project` (`n.xy / l1` folded as in [`continuous`]) with `l1 = |x| + |y| + |z|` (no sanitising, no scaling, no guard), rounded
 /// to the nearest code `round(t·M)` (half to even). The WGSL assembles the code as
 /// `u32(v·2^bits + u)` (whole numbers below 2^24, exact) at 8 and 12 bits and from the bits of
 /// `round(t·M) + 2^23` at 16; in the contract both are `u | v << bits`.
@@ -247,7 +240,7 @@ pub fn encode_precise_vouched(n: Vec3, bits: u32) -> u32 {
 pub fn encode_round_vouched(n: Vec3, bits: u32) -> u32 {
     let m = max_code(bits) as f32;
     let a = n.abs();
-    let t = project_vouched(n, (a.x + a.y) + a.z) * 0.5 + 0.5;
+    let t = project(n, (a.x + a.y) + a.z) * 0.5 + 0.5;
     let (u, v) = ((t.x * m).round_ties_even(), (t.y * m).round_ties_even());
     (u as u32) | ((v as u32) << bits)
 }

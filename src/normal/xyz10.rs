@@ -6,7 +6,6 @@
 //! decoder normalises. The layout is the texel's: x in bits 0–9, y in 10–19, z in 20–29, the
 //! 2-bit alpha (bits 30–31) left zero for the renderer.
 
-use super::{dot, normalize, sanitize};
 use glam::Vec3;
 
 /// Encode a normal as `x | y << 10 | z << 20`, each field `round(1023·(u/2 + 1/2))` (round half
@@ -19,11 +18,7 @@ use glam::Vec3;
 /// **Bad input:** see [`crate::normal`]: NaN, zero and all-subnormal vectors encode `+z`
 /// (`0x3ff8_0200`: fields 512, 512, 1023), infinities win, any finite length is normalised.
 pub fn encode_normal_xyz10(n: Vec3) -> u32 {
-    let s = sanitize(n).unwrap_or(Vec3::Z);
-    let u = s / dot(s, s).sqrt();
-    let c = (u * 0.5 + 0.5).clamp(Vec3::ZERO, Vec3::ONE);
-    let k = (c * 1023.0).to_array().map(|x| x.round_ties_even() as u32);
-    k[0] | (k[1] << 10) | (k[2] << 20)
+    super::encode_unorm_xyz(n, 1023.0, 10)
 }
 
 /// The three 10-bit fields of `p` (bits 30–31 ignored), x first.
@@ -39,8 +34,7 @@ pub(crate) fn fields(p: u32) -> [u32; 3] {
 /// decode, `normalize(c·2 − 1)` of the sampled `c = k/1023`, is the same direction up to f32
 /// rounding.
 pub fn decode_normal_xyz10(p: u32) -> Vec3 {
-    let d = fields(p).map(|k| (2 * k as i32 - 1023) as f32);
-    normalize(Vec3::from_array(d))
+    super::decode_unorm_xyz(p, 1023, 10)
 }
 
 /// Render-target form of [`encode_normal_xyz10`]: the rgb10a2unorm channels `k/1023`, alpha 0.
@@ -78,16 +72,12 @@ pub mod exact {
     /// The encoder in f64: the code nearest `1023·(u/2 + 1/2)` per coordinate of the unit vector
     /// `u` (half to even).
     pub fn encode(n: [f64; 3]) -> u32 {
-        let u = super::super::exact::unit(n).unwrap_or([0.0, 0.0, 1.0]);
-        u.iter().enumerate().fold(0, |acc, (k, &x)| {
-            acc | ((((x * 0.5 + 0.5) * 1023.0).round_ties_even() as u32) << (10 * k))
-        })
+        super::super::exact::encode_unorm_xyz(n, 1023.0, 10)
     }
 
     /// The direction a code stands for, in f64.
     pub fn decode(p: u32) -> [f64; 3] {
-        let d = super::fields(p).map(|k| f64::from(2 * k as i32 - 1023));
-        super::super::exact::unit(d).expect("odd integers are never all zero")
+        super::super::exact::decode_unorm_xyz(p, 1023, 10)
     }
 
     /// The engines' decoder in f64: `normalize(c·2 − 1)` with `c = k/1023` as the texture unit

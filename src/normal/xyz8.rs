@@ -6,7 +6,6 @@
 //! spherical-Fibonacci directions on the adapter (see the README): mean 0.170°, max 0.39° angular
 //! error — the 24-bit octahedral code is about 9 times better in the same bits.
 
-use super::{dot, normalize, sanitize};
 use glam::Vec3;
 
 /// Encode a normal as `x | y << 8 | z << 16`, each byte `round(255·(u/2 + 1/2))` (round half to
@@ -19,11 +18,7 @@ use glam::Vec3;
 /// **Bad input:** see [`crate::normal`]: NaN, zero and all-subnormal vectors encode `+z`
 /// (`0x00ff8080`), infinities win, any finite length is normalised.
 pub fn encode_normal_xyz8(n: Vec3) -> u32 {
-    let s = sanitize(n).unwrap_or(Vec3::Z);
-    let u = s / dot(s, s).sqrt();
-    let c = (u * 0.5 + 0.5).clamp(Vec3::ZERO, Vec3::ONE);
-    let b = (c * 255.0).to_array().map(|x| x.round_ties_even() as u32);
-    b[0] | (b[1] << 8) | (b[2] << 16)
+    super::encode_unorm_xyz(n, 255.0, 8)
 }
 
 /// Decode bytes 0–2 (byte 3 ignored) to the unit vector `normalize(2b − 255)`.
@@ -33,8 +28,7 @@ pub fn encode_normal_xyz8(n: Vec3) -> u32 {
 /// `inverseSqrt` allowance only scales the length, by ≤ 2 ULP). Every bit pattern gives a finite
 /// unit vector (the integer vector is never zero).
 pub fn decode_normal_xyz8(p: u32) -> Vec3 {
-    let d = [p, p >> 8, p >> 16].map(|b| (2 * (b & 0xff) as i32 - 255) as f32);
-    normalize(Vec3::from_array(d))
+    super::decode_unorm_xyz(p, 255, 8)
 }
 
 /// Render-target form of [`encode_normal_xyz8`]: the rgba8unorm channels (`byte/255`, alpha 0).
@@ -62,16 +56,12 @@ pub mod exact {
     /// The encoder in f64: the byte nearest `255·(u/2 + 1/2)` per coordinate of the unit
     /// vector `u` (ties cannot occur for the irrational-looking test directions; half to even).
     pub fn encode(n: [f64; 3]) -> u32 {
-        let u = super::super::exact::unit(n).unwrap_or([0.0, 0.0, 1.0]);
-        u.iter().enumerate().fold(0, |acc, (k, &x)| {
-            acc | ((((x * 0.5 + 0.5) * 255.0).round_ties_even() as u32) << (8 * k))
-        })
+        super::super::exact::encode_unorm_xyz(n, 255.0, 8)
     }
 
     /// The direction a code stands for, in f64.
     pub fn decode(p: u32) -> [f64; 3] {
-        let d = [p, p >> 8, p >> 16].map(|b| f64::from(2 * (b & 0xff) as i32 - 255));
-        super::super::exact::unit(d).expect("odd integers are never all zero")
+        super::super::exact::decode_unorm_xyz(p, 255, 8)
     }
 }
 

@@ -95,11 +95,8 @@ impl RenderTarget {
     /// The integer each of the first three channels holds, and the channel's scale.
     fn fields(self, p: u32) -> ([i32; 3], f64) {
         match self {
-            Self::Rgb10a2Unorm => ([p, p >> 10, p >> 20].map(|k| (k & 0x3ff) as i32), 1023.0),
-            Self::Rgba8Snorm => (
-                [p, p >> 8, p >> 16].map(|b| i32::from((b & 0xff) as u8 as i8)),
-                127.0,
-            ),
+            Self::Rgb10a2Unorm => (crate::normal::xyz10::fields(p).map(|k| k as i32), 1023.0),
+            Self::Rgba8Snorm => (crate::normal::snorm8::bytes(p), 127.0),
         }
     }
 
