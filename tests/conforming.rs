@@ -32,6 +32,13 @@ fn t_sub(a: f32, b: f32) -> f32 { return a - b; }
 fn t_mul(a: f32, b: f32) -> f32 { return a * b; }
 fn t_mad(a: f32, b: f32, c: f32) -> f32 { return a * b + c; }
 fn t_add3(a: f32, b: f32, c: f32) -> f32 { return (a + b) + c; }
+fn t_prod(a: f32, b: f32) -> f32 { return a * b; }
+fn t_prod_of(a: f32, b: f32) -> f32 { return t_prod(a, b); }
+fn t_mad_helper(a: f32, b: f32, c: f32) -> f32 { return t_prod(a, b) + c; }
+fn t_mad_helper_right(a: f32, b: f32, c: f32) -> f32 { return c + t_prod(a, b); }
+fn t_msub_helper(a: f32, b: f32, c: f32) -> f32 { return t_prod(a, b) - c; }
+fn t_nmad_helper(a: f32, b: f32, c: f32) -> f32 { return c - t_prod(a, b); }
+fn t_mad_helper_nested(a: f32, b: f32, c: f32) -> f32 { return t_prod_of(a, b) + c; }
 fn t_sub_add(a: f32, b: f32, c: f32) -> f32 { return (a - b) + c; }
 fn t_add_sub(a: f32, b: f32, c: f32) -> f32 { return (a + b) - c; }
 fn t_mul_div(a: f32, b: f32, c: f32) -> f32 { return (a * b) / c; }
@@ -443,6 +450,46 @@ fn fusion_and_reassociation_reach_their_alternatives() {
         "upper takes a + (b + c)"
     );
     assert_eq!(f32::from_bits(r_lo[0]), 1.0, "lower takes (a + b) + c");
+}
+
+/// A product a helper returns, fused into its caller's sum or difference, as a compiler may
+/// after inlining: with fusion the only freedom, the two policies' results must be exactly the
+/// fused and the unfused value (in either order), for each form (the helper's result on the
+/// left or right of `+`, either side of `−`, and through a second helper). The identity
+/// gives the unfused value only, and so did the emulation before it inlined sums.
+#[test]
+fn fusion_reaches_products_returned_by_helpers() {
+    // a·b = 1 + 2^-11 + 2^-24, a tie that rounds to even (1 + 2^-11); with c = ∓1 the fused
+    // result keeps the 2^-24 term, the unfused one does not.
+    let a = [1.0 + 2f32.powi(-12)];
+    let (p, q) = (2f32.powi(-11), 2f32.powi(-11) + 2f32.powi(-24));
+    let cases = [
+        ("t_mad_helper", -1.0f32, (p, q)),
+        ("t_mad_helper_right", -1.0, (p, q)),
+        ("t_msub_helper", 1.0, (p, q)),
+        ("t_nmad_helper", 1.0, (-p, -q)),
+        ("t_mad_helper_nested", -1.0, (p, q)),
+    ];
+    for (f, c, (unfused, fused)) in cases {
+        let c = [c];
+        let args = [Arg::column(&a), Arg::column(&a), Arg::column(&c)];
+        let (up, _) = run(f, Policy::Upper, Freedoms::FUSION, &args, 1);
+        let (lo, _) = run(f, Policy::Lower, Freedoms::FUSION, &args, 1);
+        let (id, _) = run(f, Policy::Identity, Freedoms::ALL, &args, 1);
+        let (up, lo, id) = (
+            f32::from_bits(up[0]),
+            f32::from_bits(lo[0]),
+            f32::from_bits(id[0]),
+        );
+        let want = (unfused.max(fused), unfused.min(fused));
+        assert_eq!(
+            (up, lo),
+            want,
+            "{f}: upper/lower gave ({up:e}, {lo:e}); fused {fused:e} and unfused {unfused:e} \
+             must be the two ends (a product returned by a helper may fuse into the caller's sum)"
+        );
+        assert_eq!(id, unfused, "{f}: the identity computes the unfused value");
+    }
 }
 
 /// Every grouping the spec's reassociation allows for three terms (and for `dot`'s lanes),

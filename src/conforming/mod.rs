@@ -15,9 +15,9 @@
 //! grouping of a three-term sum (`(a+b)+c`, `a+(b+c)`, `(a+c)+b`; the same with a difference,
 //! `(a−b)+c`, `(a+c)−b`, `a−(b−c)` and `(a+b)−c`, `a+(b−c)`, `(a−c)+b`), of a product over a
 //! quotient (`(a·b)/c`, `(a/c)·b`, `a·(b/c)`), and of `dot`'s lanes (written order, reversed,
-//! and the outer terms first at three lanes or pairwise at four). Not modelled: a product
-//! returned by a helper function fused into its caller's sum (what a compiler may do after
-//! inlining). A correctly rounded adapter such as lavapipe uses none of that freedom, so a
+//! and the outer terms first at three lanes or pairwise at four). A helper's result in a sum or
+//! difference counts as its returned expression would after inlining: a product a helper
+//! returns may fuse into its caller's sum (`inline.rs`). A correctly rounded adapter such as lavapipe uses none of that freedom, so a
 //! figure measured there holds on one adapter.
 //!
 //! [`emulate`] rewrites any WGSL module at the naga IR level so that every such operation is
@@ -160,6 +160,7 @@
 //! plane) still raises it, so the flag over-reports; the suites read values and flags apart.
 
 mod fold;
+mod inline;
 mod rewrite;
 
 #[cfg(feature = "harness")]
@@ -508,12 +509,29 @@ fn parse(
     Ok((checked.module, checked.info))
 }
 
+/// `module` with its helpers' results inlined into its sums ([`inline`]), validated again.
+fn with_inlined_sums(
+    mut module: naga::Module,
+    emulation: &Emulation,
+) -> Result<(naga::Module, naga::valid::ModuleInfo), EmulateError> {
+    let exact = emulation.emulate_exact;
+    inline::inline_sums(&mut module, &|n| rewrite::skipped_exact(n, exact))
+        .map_err(EmulateError)?;
+    let info = naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32,
+    )
+    .validate(&module)
+    .map_err(|e| EmulateError(format!("the module with inlined sums is invalid: {e:?}")))?;
+    Ok((module, info))
+}
+
 /// Rewrite `source` so that every f32 operation the WGSL spec leaves free is evaluated as
 /// `emulation` says; see the module docs for what is covered and how the host's error is
 /// accounted for.
 pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateError> {
     // Pass 1: which vector wrappers the module needs, and the parameter lists of its functions.
-    let (m1, i1) = parse(source, "the source")?;
+    let (m1, i1) = with_inlined_sums(parse(source, "the source")?.0, emulation)?;
     let plan1 = rewrite::plan(&m1, &i1, emulation.emulate_exact);
     let mut text = String::with_capacity(source.len() + CORE_WGSL.len() + 4096);
     // Helpers first: a call may only reach a function earlier in naga's arena, and the front
@@ -603,7 +621,10 @@ pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateE
         undefined.insert(name.to_string(), wrapper);
     }
     // Pass 2: the same plan on the combined module (its own handles), applied.
-    let (mut m2, i2) = parse(&text, "the module with the helper library")?;
+    let (mut m2, i2) = with_inlined_sums(
+        parse(&text, "the module with the helper library")?.0,
+        emulation,
+    )?;
     let plan2 = rewrite::plan(&m2, &i2, emulation.emulate_exact);
     let sites = rewrite::apply(&mut m2, &plan2).map_err(EmulateError)?;
     fold::fold(&mut m2);

@@ -671,14 +671,17 @@ fn function_key(module: &Module, f: &Function, entry: Option<usize>) -> String {
     }
 }
 
+/// Whether the emulation leaves the module's function `name` as it is: one of
+/// [`super::EXACT_FUNCTIONS`], unless `emulate_exact`.
+pub(super) fn skipped_exact(name: &str, emulate_exact: bool) -> bool {
+    !emulate_exact && super::EXACT_FUNCTIONS.iter().any(|&(f, _)| f == name)
+}
+
 /// Find every site in the module's functions and entry points (the emulation's own helpers
 /// excepted, and [`super::EXACT_FUNCTIONS`] unless `emulate_exact`, left as they are).
 pub fn plan(module: &Module, info: &naga::valid::ModuleInfo, emulate_exact: bool) -> Plan {
     let mut plan = Plan::default();
-    let skipped = |n: &str| {
-        n.starts_with(PREFIX)
-            || (!emulate_exact && super::EXACT_FUNCTIONS.iter().any(|&(f, _)| f == n))
-    };
+    let skipped = |n: &str| !super::inline::is_own(n) || skipped_exact(n, emulate_exact);
     let visit = |f: &Function, fi: &naga::valid::FunctionInfo, key: String, plan: &mut Plan| {
         if f.name.as_deref().is_some_and(skipped) {
             return;
@@ -752,7 +755,7 @@ pub(super) fn map_nested(stmt: Statement, map: &mut dyn FnMut(Block) -> Block) -
     }
 }
 
-fn rebuild(block: Block, calls: &mut HashMap<Handle<Expression>, Statement>) -> Block {
+pub(super) fn rebuild(block: Block, calls: &mut HashMap<Handle<Expression>, Statement>) -> Block {
     let mut out = Block::with_capacity(block.len());
     for (stmt, span) in block.span_into_iter() {
         match stmt {
@@ -931,7 +934,7 @@ pub fn apply(module: &mut Module, plan: &Plan) -> Result<usize, String> {
         own: module
             .functions
             .iter()
-            .filter(|(_, f)| f.name.as_deref().is_some_and(|n| !n.starts_with(PREFIX)))
+            .filter(|(_, f)| f.name.as_deref().is_some_and(super::inline::is_own))
             .map(|(h, _)| h)
             .collect(),
     };
