@@ -359,6 +359,12 @@ fn normal_decoders_every_24_bit_code() {
         decode_normal_xyz10_with
     );
     check!(
+        &codes30(),
+        oct::decode_normal_oct20,
+        bn::decode_normal_oct20,
+        decode_normal_oct20_with
+    );
+    check!(
         &codes,
         oct::decode_normal_oct16,
         bn::decode_normal_oct16,
@@ -409,6 +415,12 @@ fn normal_unorm_decoders_every_24_bit_code() {
         xyz10::decode_normal_xyz10_unorm,
         bn::decode_normal_xyz10_unorm,
         decode_normal_xyz10_unorm_with
+    );
+    check!(
+        &rgb10,
+        oct::decode_normal_oct20_unorm,
+        bn::decode_normal_oct20_unorm,
+        decode_normal_oct20_unorm_with
     );
     let ch = unorm_channels(&(0..1u32 << 24).collect::<Vec<_>>());
     check!(
@@ -485,6 +497,12 @@ fn normal_precise_encoders() {
     );
     check!(
         v,
+        oct::encode_normal_oct20,
+        bn::encode_normal_oct20,
+        encode_normal_oct20_with
+    );
+    check!(
+        v,
         oct::encode_normal_oct24,
         bn::encode_normal_oct24,
         encode_normal_oct24_with
@@ -517,6 +535,12 @@ fn normal_rounding_encoders() {
         xyz10::encode_normal_xyz10,
         bn::encode_normal_xyz10,
         encode_normal_xyz10_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct20_fast,
+        bn::encode_normal_oct20_fast,
+        encode_normal_oct20_fast_with
     );
     check!(
         v,
@@ -592,6 +616,12 @@ fn normal_unorm_and_generic_encoders() {
         xyz10::encode_normal_xyz10_unorm,
         bn::encode_normal_xyz10_unorm,
         encode_normal_xyz10_unorm_with
+    );
+    check!(
+        v,
+        oct::encode_normal_oct20_unorm,
+        bn::encode_normal_oct20_unorm,
+        encode_normal_oct20_unorm_with
     );
     check!(
         v,

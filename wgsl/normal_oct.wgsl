@@ -1,5 +1,5 @@
 // prepass — octahedral unit-vector codes (Cigolle et al., "A Survey of Efficient Representations
-// for Independent Unit Vectors", JCGT 2014), 2x8, 2x12 and 2x16 bits.
+// for Independent Unit Vectors", JCGT 2014), 2x8, 2x10, 2x12 and 2x16 bits.
 // Rust twin: src/normal/oct.rs. Tests: tests/normal_oct.rs.
 // Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
@@ -337,6 +337,35 @@ fn decode_normal_oct16_unorm(c: vec2<f32>) -> vec3<f32> {
     return oct_decode(oct_unorm_bytes(vec4<f32>(c, 0.0, 0.0)), 8u);
 }
 
+// ---- 2 x 10 bits (R and G of an RGB10A2 texel; B's 10 bits and A's 2 left to the renderer) ----
+// The 2x10-bit code whose direction is closest to n: u in bits 0-9, v in bits 10-19.
+fn encode_normal_oct20(n: vec3<f32>) -> u32 {
+    return oct_encode_precise(n, 10u);
+}
+// The 2x10-bit code by rounding each axis: cheaper, not always the closest direction.
+fn encode_normal_oct20_fast(n: vec3<f32>) -> u32 {
+    return oct_encode_round(n, 10u);
+}
+// The unit vector of a 2x10-bit code; bits 20-31 are ignored.
+fn decode_normal_oct20(p: u32) -> vec3<f32> {
+    return oct_decode(p, 10u);
+}
+// Render-target form: the rgb10a2unorm channels to write, u/1023 and v/1023 in R and G (B and A
+// 0 here: they are the renderer's, e.g. a 10-bit roughness and two flag bits; the decoder
+// ignores them). Any conforming write converts k/1023 back to k.
+fn encode_normal_oct20_unorm(n: vec3<f32>) -> vec4<f32> {
+    let p = encode_normal_oct20(n);
+    return vec4<f32>(vec2<f32>(vec2<u32>(p, p >> 10u) & vec2<u32>(0x3ffu)) / 1023.0, 0.0, 0.0);
+}
+// The unit vector from sampled rgb10a2unorm channels R and G: each taken to [0, 1] from its bits
+// (NaN, negative values and -0 count as 0, values from 1 up to +Inf as 1, so no float operation
+// sees a non-finite channel) and rounded back to its code, round(1023 c). B and A ignored.
+fn decode_normal_oct20_unorm(c: vec4<f32>) -> vec3<f32> {
+    let b = bitcast<vec2<u32>>(c.xy);
+    let x = select(select(b, vec2<u32>(0x3f800000u), b >= vec2<u32>(0x3f800000u)), vec2<u32>(0u), b > vec2<u32>(0x7f800000u));
+    let k = vec2<u32>(round(bitcast<vec2<f32>>(x) * 1023.0));
+    return oct_decode(k.x | (k.y << 10u), 10u);
+}
 // ---- 2 x 12 bits (three bytes of an RGBA8 texel; alpha left zero for the material) ----
 // The 2x12-bit code whose direction is closest to n: u in bits 0-11, v in bits 12-23.
 fn encode_normal_oct24(n: vec3<f32>) -> u32 {

@@ -1,4 +1,4 @@
-//! Batch twins of the normal encodings ([`crate::normal`]): xyz8, xyz10, snorm8, xy FP16, octahedral 16/24/32 (24 also in Unity's byte order)
+//! Batch twins of the normal encodings ([`crate::normal`]): xyz8, xyz10, snorm8, xy FP16, octahedral 16/20/24/32 (24 also in Unity's byte order)
 //! (precise and rounding encoders, and the generic `bits` forms), hemi-octahedral 24, and every
 //! `_unorm` render-target form. Names, the slice contract and the vectorisation: [`crate::batch`].
 //!
@@ -446,21 +446,42 @@ fn oct24_unity_encode_unorm(n: Vec3) -> [f32; 4] {
 fn oct24_unity_decode_unorm(c: [f32; 4]) -> Vec3 {
     oct24_unity_decode(unorm_bytes_lane(c))
 }
+/// The rgb10a2unorm channel `k/1023` of the 10-bit field at the bottom of `k`.
+#[inline(always)]
+fn unorm10_lane(k: u32) -> f32 {
+    (k & 0x3ff) as f32 / 1023.0
+}
+/// The 10-bit code of a sampled rgb10a2unorm channel, from the bits as the scalar twin
+/// (`normal::xyz10`): NaN, negatives and −0 → 0, 1 up to +∞ → 1, then `round(1023·c)`.
+#[inline(always)]
+fn unorm10_code_lane(x: f32) -> u32 {
+    let b = x.to_bits();
+    let b = sel(b > 0x7f80_0000, 0, sel(b >= 0x3f80_0000, 0x3f80_0000, b));
+    round_even_small(f32::from_bits(b) * 1023.0)
+}
 #[inline(always)]
 fn xyz10_encode_unorm(n: Vec3) -> [f32; 4] {
     let p = unorm_xyz_encode_lane::<1023, 10>(n);
-    let c = |k: u32| (k & 0x3ff) as f32 / 1023.0;
-    [c(p), c(p >> 10), c(p >> 20), 0.0]
+    [
+        unorm10_lane(p),
+        unorm10_lane(p >> 10),
+        unorm10_lane(p >> 20),
+        0.0,
+    ]
 }
 #[inline(always)]
 fn xyz10_decode_unorm(c: [f32; 4]) -> Vec3 {
-    // From the bits, as the scalar twin: NaN, negatives and −0 → 0, 1 up to +∞ → 1.
-    let k = |x: f32| {
-        let b = x.to_bits();
-        let b = sel(b > 0x7f80_0000, 0, sel(b >= 0x3f80_0000, 0x3f80_0000, b));
-        round_even_small(f32::from_bits(b) * 1023.0)
-    };
+    let k = unorm10_code_lane;
     unorm_xyz_decode_lane::<1023, 10>(k(c[0]) | (k(c[1]) << 10) | (k(c[2]) << 20))
+}
+#[inline(always)]
+fn oct20_encode_unorm(n: Vec3) -> [f32; 4] {
+    let p = oct_precise_fixed::<10>(n);
+    [unorm10_lane(p), unorm10_lane(p >> 10), 0.0, 0.0]
+}
+#[inline(always)]
+fn oct20_decode_unorm(c: [f32; 4]) -> Vec3 {
+    oct_decode_fixed::<10>(unorm10_code_lane(c[0]) | (unorm10_code_lane(c[1]) << 10))
 }
 #[inline(always)]
 fn snorm8_encode_snorm(n: Vec3) -> [f32; 4] {
@@ -569,6 +590,42 @@ batch_fn!(
     (), [f32; 4] => Vec3,
     scalar: oct::decode_normal_oct24_unity_unorm,
     lane: oct24_unity_decode_unorm,
+);
+
+batch_fn!(
+    /// Batch [`oct::encode_normal_oct20`].
+    encode_normal_oct20, encode_normal_oct20_with, "normal::encode_normal_oct20",
+    (), Vec3 => u32,
+    scalar: oct::encode_normal_oct20,
+    lane: oct_precise_fixed::<10>,
+);
+batch_fn!(
+    /// Batch [`oct::encode_normal_oct20_fast`].
+    encode_normal_oct20_fast, encode_normal_oct20_fast_with, "normal::encode_normal_oct20_fast",
+    (), Vec3 => u32,
+    scalar: oct::encode_normal_oct20_fast,
+    lane: oct_round_fixed::<10>,
+);
+batch_fn!(
+    /// Batch [`oct::decode_normal_oct20`].
+    decode_normal_oct20, decode_normal_oct20_with, "normal::decode_normal_oct20",
+    (), u32 => Vec3,
+    scalar: oct::decode_normal_oct20,
+    lane: oct_decode_fixed::<10>,
+);
+batch_fn!(
+    /// Batch [`oct::encode_normal_oct20_unorm`].
+    encode_normal_oct20_unorm, encode_normal_oct20_unorm_with, "normal::encode_normal_oct20_unorm",
+    (), Vec3 => [f32; 4],
+    scalar: oct::encode_normal_oct20_unorm,
+    lane: oct20_encode_unorm,
+);
+batch_fn!(
+    /// Batch [`oct::decode_normal_oct20_unorm`].
+    decode_normal_oct20_unorm, decode_normal_oct20_unorm_with, "normal::decode_normal_oct20_unorm",
+    (), [f32; 4] => Vec3,
+    scalar: oct::decode_normal_oct20_unorm,
+    lane: oct20_decode_unorm,
 );
 
 batch_fn!(

@@ -1,4 +1,4 @@
-//! Octahedral unit-vector codes, 2×8, 2×12 and 2×16 bits — the Rust twin of
+//! Octahedral unit-vector codes, 2×8, 2×10, 2×12 and 2×16 bits — the Rust twin of
 //! `wgsl/normal_oct.wgsl` (Cigolle, Donow, Evangelakos, Mara, McGuire, Sharpe, "A Survey of
 //! Efficient Representations for Independent Unit Vectors", JCGT 3(2), 2014).
 //!
@@ -14,7 +14,9 @@
 //! `encode_normal_oct16_unorm`, `decode_normal_oct16_unorm`; `encode_normal_oct24`,
 //! `encode_normal_oct24_fast`, `decode_normal_oct24`, `encode_normal_oct24_unorm`,
 //! `decode_normal_oct24_unorm`; `encode_normal_oct32`, `encode_normal_oct32_fast`,
-//! `decode_normal_oct32`, `encode_normal_oct32_unorm`, `decode_normal_oct32_unorm`. Each has
+//! `decode_normal_oct32`, `encode_normal_oct32_unorm`, `decode_normal_oct32_unorm`. Written out
+//! for 2×10 bits (R and G of an RGB10A2 texel): `encode_normal_oct20`, `encode_normal_oct20_fast`,
+//! `decode_normal_oct20`, `encode_normal_oct20_unorm`, `decode_normal_oct20_unorm`. Each has
 //! the WGSL function's name; the bit count is the code's total (oct24 = 2×12 bits). For vectors
 //! a scene vouches for (finite, non-zero, no subnormals; see [`encode_precise_vouched`]):
 //! `encode_normal_oct16_vouched`, `encode_normal_oct16_fast_vouched`,
@@ -319,6 +321,42 @@ oct_size!(
     decode_normal_oct32_unorm,
     "2×16 bits (all of RGBA8, or RG16)"
 );
+
+/// Precise octahedral encoder, 2×10 bits (R and G of an RGB10A2 texel; see
+/// [`encode_precise`]): `u` in bits 0–9, `v` in 10–19. Twin of the WGSL function of the same
+/// name. Bad input: see [`crate::normal`].
+pub fn encode_normal_oct20(n: Vec3) -> u32 {
+    encode_precise(n, 10)
+}
+
+/// Rounding octahedral encoder, 2×10 bits (see [`encode_round`]). Bad input: see
+/// [`crate::normal`].
+pub fn encode_normal_oct20_fast(n: Vec3) -> u32 {
+    encode_round(n, 10)
+}
+
+/// Octahedral decoder, 2×10 bits (see [`decode`]); bits 20–31 are ignored.
+pub fn decode_normal_oct20(p: u32) -> Vec3 {
+    decode(p, 10)
+}
+
+/// Render-target form of [`encode_normal_oct20`]: the rgb10a2unorm channels `u/1023`, `v/1023`,
+/// then B and A 0 (they are the renderer's: a 10-bit roughness and two flag bits, say; the
+/// decoder ignores them). Any conforming write converts `k/1023` back to `k`.
+pub fn encode_normal_oct20_unorm(n: Vec3) -> [f32; 4] {
+    let p = encode_normal_oct20(n);
+    let k = |x: u32| super::xyz10::unorm10(x & 0x3ff);
+    [k(p), k(p >> 10), 0.0, 0.0]
+}
+
+/// Decode sampled rgb10a2unorm channels R and G (each rounded back to its code as
+/// [`crate::normal::xyz10::decode_normal_xyz10_unorm`] reads a channel: NaN and negatives 0,
+/// from 1 up to `+∞` 1, `round(1023·c)`), then [`decode_normal_oct20`]; B and A are ignored.
+/// Exact whenever R and G are each within ±0.49/1023 of `k/1023`.
+pub fn decode_normal_oct20_unorm(c: [f32; 4]) -> Vec3 {
+    let k = |x: f32| super::xyz10::unorm10_code(x);
+    decode_normal_oct20(k(c[0]) | (k(c[1]) << 10))
+}
 
 /// oct24's word (u in bits 0–11, v in 12–23) in Unity's byte order: byte 0 the low 8 bits of u,
 /// byte 1 the low 8 bits of v, byte 2 the high 4 bits of u | the high 4 bits of v << 4 (Unity's

@@ -40,12 +40,29 @@ pub fn decode_normal_xyz10(p: u32) -> Vec3 {
 /// Render-target form of [`encode_normal_xyz10`]: the rgb10a2unorm channels `k/1023`, alpha 0.
 pub fn encode_normal_xyz10_unorm(n: Vec3) -> [f32; 4] {
     let k = fields(encode_normal_xyz10(n));
-    [
-        k[0] as f32 / 1023.0,
-        k[1] as f32 / 1023.0,
-        k[2] as f32 / 1023.0,
-        0.0,
-    ]
+    [unorm10(k[0]), unorm10(k[1]), unorm10(k[2]), 0.0]
+}
+
+/// The rgb10a2unorm channel `k/1023` a render target stores as `k` (correctly rounded, as the
+/// WGSL's `f32(k) / 1023.0` on lavapipe; within 2.5 ULP on any conforming adapter, far inside
+/// the ±0.5/1023 a write may be off).
+pub(crate) fn unorm10(k: u32) -> f32 {
+    k as f32 / 1023.0
+}
+
+/// The 10-bit code of a sampled rgb10a2unorm channel: `c` taken to `[0, 1]` from its bits (NaN,
+/// negative values and `−0` count as 0, values from 1 up to `+∞` as 1), then `round(1023·c)`,
+/// half to even. Exact whenever `c` is within ±0.49/1023 of `k/1023`.
+pub(crate) fn unorm10_code(c: f32) -> u32 {
+    let b = c.to_bits();
+    let x = if b > 0x7f80_0000 {
+        0.0
+    } else if b >= 0x3f80_0000 {
+        1.0
+    } else {
+        c
+    };
+    (x * 1023.0).round_ties_even() as u32
 }
 
 /// Decode sampled rgb10a2unorm channels: each of x, y, z taken to `[0, 1]` (NaN, negative values
@@ -53,17 +70,7 @@ pub fn encode_normal_xyz10_unorm(n: Vec3) -> [f32; 4] {
 /// (`round(1023·c)`), then [`decode_normal_xyz10`]; alpha ignored. Exact whenever each channel is
 /// within ±0.49/1023 of `k/1023`.
 pub fn decode_normal_xyz10_unorm(c: [f32; 4]) -> Vec3 {
-    let k = [c[0], c[1], c[2]].map(|x| {
-        let b = x.to_bits();
-        let x = if b > 0x7f80_0000 {
-            0.0
-        } else if b >= 0x3f80_0000 {
-            1.0
-        } else {
-            x
-        };
-        (x * 1023.0).round_ties_even() as u32
-    });
+    let k = [c[0], c[1], c[2]].map(unorm10_code);
     decode_normal_xyz10(k[0] | (k[1] << 10) | (k[2] << 20))
 }
 

@@ -193,6 +193,10 @@ impl Scene {
                     TargetFormat::Rgba8Unorm,
                     format!("rgb: hemi-octahedral u, v (12 bits each), {a}"),
                 ),
+                NormalEncoding::Oct20 => (
+                    TargetFormat::Rgb10a2Unorm,
+                    "rg: octahedral u, v (10 bits each), b: 10 bits free, a: 2 bits free".into(),
+                ),
                 NormalEncoding::Xyz10 => (
                     TargetFormat::Rgb10a2Unorm,
                     "rgb: normal xyz10 (10 bits each), a: 2 bits free".into(),

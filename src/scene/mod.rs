@@ -88,6 +88,8 @@ pub enum NormalEncoding {
     XyFp16,
     /// Octahedral, 2×8 bits.
     Oct16,
+    /// Octahedral, 2×10 bits in R and G of RGB10A2; B (10 bits) and A (2 bits) free.
+    Oct20,
     /// Octahedral, 2×12 bits, alpha free.
     Oct24,
     /// Octahedral, 2×16 bits.
@@ -105,10 +107,11 @@ pub enum NormalEncoding {
 
 impl NormalEncoding {
     /// Every encoding.
-    pub const ALL: [NormalEncoding; 9] = [
+    pub const ALL: [NormalEncoding; 10] = [
         Self::Xyz8,
         Self::XyFp16,
         Self::Oct16,
+        Self::Oct20,
         Self::Oct24,
         Self::Oct32,
         Self::Hemioct24,

@@ -32,6 +32,13 @@ fn normal_roots(e: NormalEncoding, fast: bool, vouched: bool) -> [&'static str; 
             "encode_normal_oct16_unorm",
             "decode_normal_oct16_unorm",
         ),
+        NormalEncoding::Oct20 => (
+            "encode_normal_oct20",
+            "encode_normal_oct20_fast",
+            "decode_normal_oct20",
+            "encode_normal_oct20_unorm",
+            "decode_normal_oct20_unorm",
+        ),
         NormalEncoding::Oct24 => (
             "encode_normal_oct24",
             "encode_normal_oct24_fast",

@@ -1,10 +1,12 @@
-//! `wgsl/normal_oct.wgsl` and `normal::oct`: octahedral normals in 16, 24 and 32 bits (24 also in
+//! `wgsl/normal_oct.wgsl` and `normal::oct`: octahedral normals in 16, 20, 24 and 32 bits (24 also in
 //! Unity's byte order), and the generic Rust-only octahedral functions.
 
 use super::normal::{B127, B247};
 
 /// The unorm8 channel of byte 0x77, `119/255` (byte 2 of +z in Unity's order).
 const B119: f32 = 119.0 / 255.0;
+/// The unorm10 channel of code 511, `511/1023` (oct20's +z, precise).
+const K511: f32 = 511.0 / 1023.0;
 use super::{Func, INF, NAN, NEG_NAN, Row, SNAN, SUB_MAX, SUB_MIN, V};
 use prepass::normal::oct;
 
@@ -37,6 +39,11 @@ pub const FUNCS: &[Func] = &[
             V::Vec3(oct::decode_normal_oct16_unorm([c.x, c.y, 0.0, 0.0]).to_array())
         },
     },
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct20(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct20_fast(vec3) -> U32),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct20(u32) -> Vec3),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct20_unorm(vec3) -> Vec4),
+    func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct20_unorm(rgba) -> Vec3),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; encode_normal_oct24_fast(vec3) -> U32),
     func!(prepass::wgsl::NORMAL_OCT; normal::oct; decode_normal_oct24(u32) -> Vec3),
@@ -343,6 +350,38 @@ pub const ROWS: &[Row] = &[
     Row { func: "decode_normal_oct32", case: "all ones", args: &[V::U32(u32::MAX)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "corner (M, M) = −z" },
     Row { func: "decode_normal_oct32", case: "corner (M, 0)", args: &[V::U32(0x0000_ffff)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "every corner is −z" },
     // Render-target forms.
+    Row { func: "encode_normal_oct20", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x7fdff), why: "NaN anywhere → code of +z" },
+    Row { func: "encode_normal_oct20", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x7fdff), why: "every NaN → code of +z" },
+    Row { func: "encode_normal_oct20", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x7ffff), why: "infinities win: code of +x" },
+    Row { func: "encode_normal_oct20", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x402ff), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "encode_normal_oct20", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0xfffff), why: "infinities win: code of −z" },
+    Row { func: "encode_normal_oct20", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x7fdff), why: "all subnormal = zero → code of +z" },
+    Row { func: "encode_normal_oct20", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0xffdff), why: "subnormals count as 0: code of +y" },
+    Row { func: "encode_normal_oct20", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x7fdff), why: "code of +z" },
+    Row { func: "encode_normal_oct20", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x7fdff), why: "code of +z" },
+    Row { func: "encode_normal_oct20", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0xaaaaa), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "encode_normal_oct20", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x1ff), why: "no underflow: code of −y" },
+    Row { func: "encode_normal_oct20", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x7ffff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "encode_normal_oct20_fast", case: "NaN", args: &[V::Vec3([NAN, 1.0, 0.0])], expect: V::U32(0x80200), why: "NaN anywhere → code of +z" },
+    Row { func: "encode_normal_oct20_fast", case: "NaN (−NaN, signalling)", args: &[V::Vec3([0.0, NEG_NAN, SNAN])], expect: V::U32(0x80200), why: "every NaN → code of +z" },
+    Row { func: "encode_normal_oct20_fast", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::U32(0x803ff), why: "infinities win: code of +x" },
+    Row { func: "encode_normal_oct20_fast", case: "±Inf", args: &[V::Vec3([INF, -INF, 5.0])], expect: V::U32(0x402ff), why: "their signs: code of (1, −1, 0)/√2" },
+    Row { func: "encode_normal_oct20_fast", case: "−Inf", args: &[V::Vec3([1.0, 2.0, -INF])], expect: V::U32(0xfffff), why: "infinities win: code of −z" },
+    Row { func: "encode_normal_oct20_fast", case: "subnormal", args: &[V::Vec3([SUB_MIN, -SUB_MIN, SUB_MAX])], expect: V::U32(0x80200), why: "all subnormal = zero → code of +z" },
+    Row { func: "encode_normal_oct20_fast", case: "subnormal components", args: &[V::Vec3([SUB_MAX, 1.0, -SUB_MIN])], expect: V::U32(0xffe00), why: "subnormals count as 0: code of +y" },
+    Row { func: "encode_normal_oct20_fast", case: "zero vector", args: &[V::Vec3([0.0, 0.0, 0.0])], expect: V::U32(0x80200), why: "code of +z" },
+    Row { func: "encode_normal_oct20_fast", case: "zero vector (−0.0)", args: &[V::Vec3([-0.0, -0.0, -0.0])], expect: V::U32(0x80200), why: "code of +z" },
+    Row { func: "encode_normal_oct20_fast", case: "non-unit: huge", args: &[V::Vec3([f32::MAX, f32::MAX, f32::MAX])], expect: V::U32(0xaaaaa), why: "no overflow: code of (1, 1, 1)/√3" },
+    Row { func: "encode_normal_oct20_fast", case: "non-unit: tiny", args: &[V::Vec3([0.0, -f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x200), why: "no underflow: code of −y" },
+    Row { func: "encode_normal_oct20_fast", case: "non-unit: components 2^254 apart", args: &[V::Vec3([f32::MAX, f32::MIN_POSITIVE, 0.0])], expect: V::U32(0x803ff), why: "the tiny one vanishes: code of +x" },
+    Row { func: "decode_normal_oct20", case: "all ones (unused bits 20–31 set)", args: &[V::U32(u32::MAX)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "high bits ignored; corner (M, M) = −z" },
+    Row { func: "decode_normal_oct20", case: "unused bits 20–31 only", args: &[V::U32(0xfff0_0000)], expect: V::Vec3([0.0, 0.0, -1.0]), why: "high bits ignored; corner (0, 0) = −z" },
+    Row { func: "encode_normal_oct20_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec4([K511, K511, 0.0, 0.0]), why: "+z: code (511, 511); B and A 0 (the renderer's)" },
+    Row { func: "encode_normal_oct20_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec4([1.0, K511, 0.0, 0.0]), why: "+x: code (1023, 511)" },
+    Row { func: "encode_normal_oct20_unorm", case: "zero vector", args: &[V::Vec3([0.0, -0.0, 0.0])], expect: V::Vec4([K511, K511, 0.0, 0.0]), why: "+z" },
+    Row { func: "decode_normal_oct20_unorm", case: "NaN", args: &[V::Vec4([NAN, NAN, 0.3, 0.0])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "codes 0 (NaN read from bits): corner (0, 0) = −z; B and A ignored" },
+    Row { func: "decode_normal_oct20_unorm", case: "out of range, +Inf", args: &[V::Vec4([INF, -1.0, 0.0, 0.0])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "codes (1023, 0): corner = −z" },
+    Row { func: "decode_normal_oct20_unorm", case: "out of range", args: &[V::Vec4([2.0, 7.0, 0.0, 0.0])], expect: V::Vec3([0.0, 0.0, -1.0]), why: "taken to 1: corner (1023, 1023) = −z" },
     Row { func: "encode_normal_oct16_unorm", case: "NaN", args: &[V::Vec3([NAN, 0.0, 0.0])], expect: V::Vec2([B127, B127]), why: "+z: code (127, 127)" },
     Row { func: "encode_normal_oct16_unorm", case: "+Inf", args: &[V::Vec3([INF, 1.0, 0.0])], expect: V::Vec2([1.0, B127]), why: "+x: code (255, 127)" },
     Row { func: "encode_normal_oct16_unorm", case: "zero vector", args: &[V::Vec3([0.0, -0.0, 0.0])], expect: V::Vec2([B127, B127]), why: "+z" },

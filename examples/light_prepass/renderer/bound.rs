@@ -92,6 +92,7 @@ pub fn normal_angle_at(e: NormalEncoding, z: f64) -> f64 {
         NormalEncoding::Xyz10 => (3f64.sqrt() / 1023.0).asin(),
         NormalEncoding::Snorm8 => (3f64.sqrt() / 254.0).asin(),
         NormalEncoding::Oct16 => oct(8),
+        NormalEncoding::Oct20 => oct(10),
         NormalEncoding::Oct24 | NormalEncoding::Hemioct24 | NormalEncoding::Oct24Unity => oct(12),
         NormalEncoding::Oct32 => oct(16),
         NormalEncoding::XyFp16 => {
@@ -434,6 +435,7 @@ pub fn gbuffer_error(
             NormalEncoding::Oct32 => oct::decode_normal_oct32(p),
             // The texel's bits are the code (rgb10a2 packs x low; snorm bytes are the code's).
             NormalEncoding::Xyz10 => xyz10::decode_normal_xyz10(p),
+            NormalEncoding::Oct20 => oct::decode_normal_oct20(p),
             NormalEncoding::Snorm8 => snorm8::decode_normal_snorm8(p),
             NormalEncoding::Oct24Unity => oct::decode_normal_oct24_unity(p),
         };

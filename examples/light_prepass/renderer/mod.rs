@@ -214,6 +214,7 @@ pub fn encoding_name(e: NormalEncoding) -> &'static str {
         NormalEncoding::Oct32 => "oct32",
         NormalEncoding::Hemioct24 => "hemioct24",
         NormalEncoding::Xyz10 => "xyz10",
+        NormalEncoding::Oct20 => "oct20",
         NormalEncoding::Snorm8 => "snorm8",
         NormalEncoding::Oct24Unity => "oct24 unity",
     }

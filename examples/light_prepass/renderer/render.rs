@@ -127,6 +127,23 @@ struct Target {
     clear: wgpu::Color,
 }
 
+/// The normal target's format as `Scene::gbuffer` lays it out for encoding `e` (rgb10a2unorm for
+/// xyz10 and oct20, rgba8snorm for snorm8, rg8unorm for oct16, rgba8unorm otherwise).
+fn normal_format(e: NormalEncoding) -> wgpu::TextureFormat {
+    let scene = prepass::scene::Scene {
+        normal: prepass::scene::NormalChoice {
+            encoding: Some(e),
+            fast_encoder: false,
+        },
+        ..prepass::scene::Scene::default()
+    };
+    scene
+        .gbuffer()
+        .ok()
+        .and_then(|g| g.targets.into_iter().find(|t| t.name == "normal"))
+        .map_or(wgpu::TextureFormat::Rgba8Unorm, |t| t.format.to_wgpu())
+}
+
 fn gbuffer_targets(cfg: &Config) -> Vec<Target> {
     let zero = wgpu::Color::TRANSPARENT;
     match cfg.storage {
@@ -142,11 +159,7 @@ fn gbuffer_targets(cfg: &Config) -> Vec<Target> {
         ],
         Storage::Diet { normal, depth } => {
             let mut t = vec![Target {
-                format: if normal == NormalEncoding::Oct16 {
-                    wgpu::TextureFormat::Rg8Unorm
-                } else {
-                    wgpu::TextureFormat::Rgba8Unorm
-                },
+                format: normal_format(normal),
                 clear: zero,
             }];
             if depth == DepthStorage::Code24Rgba8 {

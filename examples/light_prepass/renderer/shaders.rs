@@ -22,6 +22,7 @@ pub fn stem(e: NormalEncoding) -> &'static str {
     match e {
         NormalEncoding::Xyz8 => "xyz8",
         NormalEncoding::Xyz10 => "xyz10",
+        NormalEncoding::Oct20 => "oct20",
         NormalEncoding::Snorm8 => "snorm8",
         NormalEncoding::Oct24Unity => "oct24_unity",
         NormalEncoding::XyFp16 => "xy_fp16",

@@ -48,6 +48,7 @@ const UNORM10X3: [Lane; 3] = lanes(10, LaneKind::Unsigned);
 const SNORM8X3: [Lane; 3] = lanes(8, LaneKind::Signed);
 const F16X2: [Lane; 2] = lanes(16, LaneKind::F16);
 const OCT8: [Lane; 2] = lanes(8, LaneKind::Unsigned);
+const OCT10: [Lane; 2] = lanes(10, LaneKind::Unsigned);
 const OCT12: [Lane; 2] = lanes(12, LaneKind::Unsigned);
 const OCT16: [Lane; 2] = lanes(16, LaneKind::Unsigned);
 
@@ -116,6 +117,7 @@ macro_rules! oct_refs {
     };
 }
 oct_refs!(8, oct16_ref_p, oct16_ref_r, oct16_ref_d);
+oct_refs!(10, oct20_ref_p, oct20_ref_r, oct20_ref_d);
 oct_refs!(12, oct24_ref_p, oct24_ref_r, oct24_ref_d);
 oct_refs!(16, oct32_ref_p, oct32_ref_r, oct32_ref_d);
 
@@ -134,15 +136,15 @@ macro_rules! oct_codec {
             twin_decode: $twin_dec,
             reference_encode: $r,
             reference_decode: $d,
-            target: Some($t),
+            target: $t,
         }
     };
 }
 
-/// Every encoding: xyz8, xy FP16, octahedral 16/24/32 precise and fast, hemi-octahedral 24
+/// Every encoding: xyz8, xy FP16, octahedral 16/20/24/32 precise and fast, hemi-octahedral 24
 /// precise and fast (errors of the hemisphere-only codes are measured over `z ≥ 0`), then the
 /// engines' forms: xyz10 (RGB10A2) and snorm8 xyz.
-pub const CODECS: [Codec; 12] = [
+pub const CODECS: [Codec; 14] = [
     Codec {
         name: "xyz8",
         stored_by: "Resistance 2; Godot 4 (its best-fit encoder, this decoder)",
@@ -184,7 +186,7 @@ pub const CODECS: [Codec; 12] = [
         oct::decode_normal_oct16,
         oct16_ref_p,
         oct16_ref_d,
-        (0.315, 0.636)
+        Some((0.315, 0.636))
     ),
     oct_codec!(
         "oct16 fast",
@@ -197,7 +199,33 @@ pub const CODECS: [Codec; 12] = [
         oct::decode_normal_oct16,
         oct16_ref_r,
         oct16_ref_d,
-        (0.337, 0.951)
+        Some((0.337, 0.951))
+    ),
+    oct_codec!(
+        "oct20",
+        "— (O3DE's RGB10A2 signed octahedron is 10:10 + z's sign, another layout)",
+        10,
+        &OCT10,
+        encode_normal_oct20,
+        decode_normal_oct20,
+        oct::encode_normal_oct20,
+        oct::decode_normal_oct20,
+        oct20_ref_p,
+        oct20_ref_d,
+        None
+    ),
+    oct_codec!(
+        "oct20 fast",
+        "— (O3DE's RGB10A2 signed octahedron is 10:10 + z's sign, another layout)",
+        10,
+        &OCT10,
+        encode_normal_oct20_fast,
+        decode_normal_oct20,
+        oct::encode_normal_oct20_fast,
+        oct::decode_normal_oct20,
+        oct20_ref_r,
+        oct20_ref_d,
+        None
     ),
     oct_codec!(
         "oct24",
@@ -210,7 +238,7 @@ pub const CODECS: [Codec; 12] = [
         oct::decode_normal_oct24,
         oct24_ref_p,
         oct24_ref_d,
-        (0.0195, 0.0395)
+        Some((0.0195, 0.0395))
     ),
     oct_codec!(
         "oct24 fast",
@@ -223,7 +251,7 @@ pub const CODECS: [Codec; 12] = [
         oct::decode_normal_oct24,
         oct24_ref_r,
         oct24_ref_d,
-        (0.0209, 0.0591)
+        Some((0.0209, 0.0591))
     ),
     oct_codec!(
         "oct32",
@@ -236,7 +264,7 @@ pub const CODECS: [Codec; 12] = [
         oct::decode_normal_oct32,
         oct32_ref_p,
         oct32_ref_d,
-        (0.00122, 0.00246)
+        Some((0.00122, 0.00246))
     ),
     oct_codec!(
         "oct32 fast",
@@ -249,7 +277,7 @@ pub const CODECS: [Codec; 12] = [
         oct::decode_normal_oct32,
         oct32_ref_r,
         oct32_ref_d,
-        (0.00131, 0.00369)
+        Some((0.00131, 0.00369))
     ),
     Codec {
         name: "hemioct24",
