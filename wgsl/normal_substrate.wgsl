@@ -141,7 +141,9 @@ fn substrate_roughness_byte(r: f32) -> u32 {
     return k;
 }
 
-// The normal's bits of the word (roughness and flags zero) whose direction is closest to n.
+// The normal's bits of the word (roughness and flags zero) whose direction is closest to n among
+// the four codes around it (near the square's edges a code mirrored across the edge can be
+// closer still; the error stays within the rounding encoder's bound, see the Rust twin).
 fn encode_substrate_normal(n: vec3<f32>) -> u32 {
     let s = substrate_sanitize(n).xyz;
     return substrate_choose(s, substrate_continuous(s));
