@@ -173,3 +173,10 @@ for v in VECS:
 for v in VECS + [(f(0.6), f(0.0), f(-0.8)), (NZ, f(1e-38), f(-1.0)), (f(2.0 ** 124), f(1.0), NZ),
                  (f(1e-30), f(1e-30), f(-1e-30))]:
     write("encoders", 31, words(*v))
+# decoders (appended): 26 the Substrate word's readers. encoders (appended): 32 the Substrate
+# normal and word encoders (vector, roughness, flags).
+for c in NCODES + [0x0, 0xFFFFFFFF, 0x3FF, 0x80100000, 0x80000000, 0x801003FC, 0x001FFC00]:
+    write("decoders", 26, words(c))
+for v in VECS:
+    for r, fl in [(f(0.5), 0), (NAN, 7), (f(-0.25), 0xFFFFFFFF), (INF, 1), (f(1.5), 2)]:
+        write("encoders", 32, words(*v) + words(r, fl))

@@ -15,7 +15,7 @@ mod common;
 use glam::Vec3;
 use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br};
 use prepass::depth24 as d24;
-use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
+use prepass::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use prepass::precision::inputs::{ChannelError, sign_pattern, unorm8_channel};
 use prepass::sweep::normal::{
     RenderTarget, adversarial_directions, bad_inputs, fibonacci_directions, stratified_codes32,
@@ -518,6 +518,34 @@ fn normal_precise_encoders() {
         hemioct::encode_normal_hemioct24,
         bn::encode_normal_hemioct24,
         encode_normal_hemioct24_with
+    );
+    check!(
+        v,
+        substrate::encode_substrate_normal,
+        bn::encode_substrate_normal,
+        encode_substrate_normal_with
+    );
+}
+
+/// Every 2^22 Substrate normal code (the roughness and flag bits carry noise) and the rounding
+/// encoder.
+#[test]
+fn substrate_every_code_and_rounding_encoder() {
+    let codes: Vec<u32> = (0..1u32 << 22)
+        .map(|k| (k << 10) | (k.wrapping_mul(2_654_435_761) >> 22))
+        .collect();
+    check!(
+        &codes,
+        substrate::decode_substrate_normal,
+        bn::decode_substrate_normal,
+        decode_substrate_normal_with
+    );
+    let v = encoder_inputs();
+    check!(
+        v,
+        substrate::encode_substrate_normal_fast,
+        bn::encode_substrate_normal_fast,
+        encode_substrate_normal_fast_with
     );
 }
 

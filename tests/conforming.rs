@@ -1530,7 +1530,7 @@ fn every_normal_encoding_under_emulation() {
             "{} {policy}: decoder |len − 1| = {len_dec:e} beyond the conforming budget {UNIT_TOLERANCE_CONFORMING:e}, or a non-finite result (max angle {}°)",
             c.name, e.decoder.max_angle_deg
         );
-        if c.name.starts_with("oct") && !c.name.ends_with("fast") {
+        if (c.name.starts_with("oct") || c.name == "substrate") && !c.name.ends_with("fast") {
             let o = precise_optimality(c, &inputs, &e.round_trip);
             let tol = optimality_tolerance_conforming_deg();
             eprintln!(

@@ -22,7 +22,13 @@ use prepass::wgsl::spirv_instruction_count;
 const DOMINATED: &[(&str, &[&str], &str)] = &[
     (
         "encode_normal_xyz8",
-        &[BEVY_OCT24, MESHOPT_K12, URP_SNORM8, UNITY_OCT24],
+        &[
+            BEVY_OCT24,
+            MESHOPT_K12,
+            URP_SNORM8,
+            UNITY_OCT24,
+            UNREAL_SUBSTRATE,
+        ],
         "kept as Resistance 2's layout and Godot's (its best-fit normals decode with this \
          decoder): the components are stored linearly, so filtering, MSAA resolve and blending \
          of the stored normal stay meaningful (no octahedral code has that); URP's snorm8 is a \
@@ -46,6 +52,7 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
             UNREAL_XYZ10,
             URP_SNORM8,
             UNITY_OCT24,
+            UNREAL_SUBSTRATE,
         ],
         "kept as Killzone 2's layout (view-space x, y in FP16, z rebuilt), for comparison with \
          the talks; for new G-buffers an octahedral code is more accurate per bit",
@@ -83,7 +90,7 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
     ),
     (
         "encode_normal_snorm8",
-        &[BEVY_OCT24, MESHOPT_K12, UNITY_OCT24],
+        &[BEVY_OCT24, MESHOPT_K12, UNITY_OCT24, UNREAL_SUBSTRATE],
         "kept as URP's snorm8 layout (linear: filtering and blending stay meaningful); an \
          octahedral code is more accurate in the same bits. Against URP's own write it is not \
          dominated on these directions",
@@ -121,6 +128,7 @@ const MESHOPT_K16: &str = "peer:meshopt oct K=16";
 const UNREAL_XYZ10: &str = "peer:unreal/bevy xyz10 (n·0.5 + 0.5)";
 const URP_SNORM8: &str = "peer:urp snorm8";
 const UNITY_OCT24: &str = "peer:unity hdrp oct 12:12 (×4095.5)";
+const UNREAL_SUBSTRATE: &str = "peer:unreal substrate oct 11:11 (trunc)";
 
 fn spirv(source: &str, function: &str) -> f64 {
     spirv_instruction_count(source, function)
@@ -338,7 +346,7 @@ fn peers_dominate_only_the_listed_functions_on_spirv_count() {
     let mut body = format!(
         "Peers: Bevy's G-buffer oct24 and `−near/d`, meshoptimizer's octahedral filter (K = 8, \
          12, 16), the JCGT survey's precise encoder (f32 dot), Unreal's and Bevy's RGB10A2 \
-         `n·0.5 + 0.5`, URP's snorm8 target, HDRP's octahedral 12:12 (`u32(f·4095.5)`), LYGIA's `linearizeDepth` and \
+         `n·0.5 + 0.5`, URP's snorm8 target, HDRP's octahedral 12:12 (`u32(f·4095.5)`), Unreal Substrate's truncated 11:11 octahedron, LYGIA's `linearizeDepth` and \
          `depth2viewZ`, re-implemented in WGSL (`tests/baselines/peer_*.wgsl`) and measured on \
          errplot's quick inputs (2^16 Fibonacci directions, every 24-bit depth code, 2^20 \
          reversed float depths) on {}. On (max error, SPIR-V count), with no more stored bits, {} of \

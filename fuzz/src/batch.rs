@@ -11,7 +11,7 @@ use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br, roughness_ggx as bg};
 use prepass::depth24 as d24;
-use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
+use prepass::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use prepass::roughness as r;
 use prepass::roughness_ggx as g;
 
@@ -453,6 +453,24 @@ pub const BATCH: &[Entry] = &[
     ),
     entry!(f32, flagged_godot8, bg::encode_roughness_godot8, encode_roughness_godot8_with;
         roughness_ggx, Input::u32),
+    entry!(
+        Vec3,
+        substrate::encode_substrate_normal,
+        bn::encode_substrate_normal,
+        encode_substrate_normal_with
+    ),
+    entry!(
+        Vec3,
+        substrate::encode_substrate_normal_fast,
+        bn::encode_substrate_normal_fast,
+        encode_substrate_normal_fast_with
+    ),
+    entry!(
+        u32,
+        substrate::decode_substrate_normal,
+        bn::decode_substrate_normal,
+        decode_substrate_normal_with
+    ),
 ];
 
 /// [`g::encode_roughness_godot8`] with the flag last, as the parameterised entries call it.

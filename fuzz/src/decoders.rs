@@ -6,7 +6,7 @@ use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::assert_within_abs;
 use prepass::depth24::{self, DEPTH24_MAX};
-use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
+use prepass::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use prepass::roughness;
 use prepass::roughness_ggx as ggx;
 
@@ -292,6 +292,23 @@ pub const DECODERS: &[Entry] = &[
                 ggx::decode_roughness_ggx8_log(b)
             );
             assert_eq!(ggx::roughness_godot8_is_dynamic(p), b >> 7);
+        },
+    },
+    Entry {
+        name: "normal::substrate::{decode_substrate_normal, decode_substrate_roughness, substrate_flags}",
+        check: |i| {
+            let p = i.u32();
+            let v = substrate::decode_substrate_normal(p);
+            assert_unit(v, format_args!("{p:#x}"));
+            assert_eq!(
+                v,
+                substrate::decode_substrate_normal(p & !0x3ff),
+                "{p:#x}: bits 0–9 ignored"
+            );
+            let r = substrate::decode_substrate_roughness(p);
+            assert!((0.0..=1.0).contains(&r), "{p:#x} → {r:?}");
+            assert_eq!(r, ggx::decode_roughness_ggx8((p >> 2) & 0xff), "{p:#x}");
+            assert!(substrate::substrate_flags(p) <= 3);
         },
     },
 ];

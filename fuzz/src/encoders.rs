@@ -7,12 +7,15 @@ use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::assert_within_abs;
 use prepass::depth24::{self, DEPTH24_MAX};
-use prepass::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
+use prepass::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use prepass::roughness;
 use prepass::roughness_ggx as ggx;
 
 /// A normal encoder's twin.
 type Encoder = fn(Vec3) -> u32;
+
+/// A Substrate word encoder's twin (normal, roughness, flags).
+type WordEncoder = fn(Vec3, f32, u32) -> u32;
 
 /// Encoders: any bit patterns in, no panic, the documented output.
 pub const ENCODERS: &[Entry] = &[
@@ -258,6 +261,39 @@ pub const ENCODERS: &[Entry] = &[
                 if inside {
                     assert_eq!(code, robust(n), "{name} vouched: {n:?}");
                 }
+            }
+        },
+    },
+    Entry {
+        name: "normal::substrate::{encode_substrate_normal, _fast, encode_substrate_word, _fast}",
+        check: |i| {
+            let (n, r, flags) = (i.vec3(), i.f32(), i.u32());
+            let pairs: [(Encoder, WordEncoder, &str); 2] = [
+                (
+                    substrate::encode_substrate_normal,
+                    substrate::encode_substrate_word,
+                    "substrate",
+                ),
+                (
+                    substrate::encode_substrate_normal_fast,
+                    substrate::encode_substrate_word_fast,
+                    "substrate fast",
+                ),
+            ];
+            for (normal, word, name) in pairs {
+                // The normal's bits are 10–31: the shared rules on the code shifted down.
+                check_encoder(n, |v| normal(v) >> 10, 22, name);
+                let w = normal(n);
+                assert_eq!(w & 0x3ff, 0, "{name} {n:?}: roughness and flag bits set");
+                let byte = ggx::encode_roughness_ggx8(r);
+                assert_eq!(
+                    word(n, r, flags),
+                    normal(n) | (byte << 2) | (flags & 3),
+                    "{name} word: {n:?}, {r:?}, {flags:#x}"
+                );
+                // The rounding and precise codes are written on codes 1..=2047 (never 0).
+                let k = substrate::codes(w);
+                assert!(k.min_element() >= 1, "{name} {n:?}: code 0 written");
             }
         },
     },

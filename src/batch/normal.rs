@@ -1,4 +1,4 @@
-//! Batch twins of the normal encodings ([`crate::normal`]): xyz8, xyz10, snorm8, xy FP16, octahedral 16/20/24/32 (24 also in Unity's byte order)
+//! Batch twins of the normal encodings ([`crate::normal`]): xyz8, xyz10, snorm8, xy FP16, octahedral 16/20/24/32 (24 also in Unity's byte order), Unreal Substrate's centred 11:11 normal
 //! (precise and rounding encoders, and the generic `bits` forms), hemi-octahedral 24, and every
 //! `_unorm` render-target form. Names, the slice contract and the vectorisation: [`crate::batch`].
 //!
@@ -12,7 +12,7 @@
 //! encoder's arithmetic.
 
 use super::{batch_fn, round_even_small};
-use crate::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
+use crate::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use glam::{Vec2, Vec3};
 
 // ---------------------------------------------------------------------------------------------
@@ -417,6 +417,98 @@ fn xyz8_encode_unorm(n: Vec3) -> [f32; 4] {
 fn xyz8_decode_unorm(c: [f32; 4]) -> Vec3 {
     unorm_xyz_decode_lane::<255, 8>(unorm_bytes_lane(c))
 }
+// ---- Unreal Substrate's centred 11:11 octahedron ([`substrate`]) ----
+
+/// `round_ties_even(x)` as an `i32` for `|x| < 2^22`: `x + 1.5·2^23` lies in `[2^23, 2^24)`,
+/// where the float spacing is 1, so the sum is `x` rounded half to even (`1.5·2^23` is even)
+/// and its bits less those of `1.5·2^23` are that integer. Vectorises without `roundps`.
+#[inline(always)]
+fn round_even_signed(x: f32) -> i32 {
+    ((x + 12_582_912.0).to_bits() as i32).wrapping_sub(0x4b40_0000)
+}
+
+/// `floor(x)` as an `i32` for `|x| < 2^22`, exactly: the nearest integer, less one where it
+/// exceeds `x` (the integer is exact in f32).
+#[inline(always)]
+fn floor_signed(x: f32) -> i32 {
+    let r = round_even_signed(x);
+    r.wrapping_sub(i32::from(r as f32 > x))
+}
+
+/// [`substrate::continuous`], branch-free: the folded projection clamped to
+/// `[−1, CONTINUOUS_TOP]`, times 1023.
+#[inline(always)]
+fn substrate_continuous(s: Vec3) -> Vec2 {
+    let a = s.abs();
+    let l1 = (a.x + a.y) + a.z;
+    let p = Vec2::new(s.x / l1, s.y / l1);
+    let sgn = Vec2::new(
+        if p.x >= 0.0 { 1.0 } else { -1.0 },
+        if p.y >= 0.0 { 1.0 } else { -1.0 },
+    );
+    let folded = (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
+    let neg = s.z < 0.0;
+    let p = Vec2::new(
+        if neg { folded.x } else { p.x },
+        if neg { folded.y } else { p.y },
+    );
+    p.clamp(Vec2::splat(-1.0), Vec2::splat(substrate::CONTINUOUS_TOP)) * 1023.0
+}
+
+/// [`substrate::lattice`] of the centred coordinates `a = k_u − 1024`, `b = k_v − 1024`: when
+/// `z < 0`, `(1023 − |b|, 1023 − |a|)` with `a`'s and `b`'s signs (`+` for 0), as selects.
+#[inline(always)]
+fn substrate_lattice(a: i32, b: i32) -> [i32; 3] {
+    let z = 1023i32
+        .wrapping_sub(a.wrapping_abs())
+        .wrapping_sub(b.wrapping_abs());
+    let fx = 1023i32.wrapping_sub(b.wrapping_abs());
+    let fy = 1023i32.wrapping_sub(a.wrapping_abs());
+    let fx = if a < 0 { fx.wrapping_neg() } else { fx };
+    let fy = if b < 0 { fy.wrapping_neg() } else { fy };
+    let pos = z >= 0;
+    [if pos { a } else { fx }, if pos { b } else { fy }, z]
+}
+
+/// The word bits of centred coordinates `(a, b)` (each in `[−1024, 1023]`).
+#[inline(always)]
+fn substrate_word(a: i32, b: i32) -> u32 {
+    ((a.wrapping_add(1024) as u32) << substrate::U_SHIFT)
+        | ((b.wrapping_add(1024) as u32) << substrate::V_SHIFT)
+}
+
+#[inline(always)]
+fn substrate_precise_lane(n: Vec3) -> u32 {
+    let s = sanitize_or_z(n);
+    let q = substrate_continuous(s);
+    let (ax, ay) = (floor_signed(q.x), floor_signed(q.y));
+    let (mut best_a, mut best_b) = (ax, ay);
+    let mut best_s2 = sin2(s, substrate_lattice(ax, ay));
+    for k in 1..4i32 {
+        let (ca, cb) = (ax.wrapping_add(k & 1), ay.wrapping_add(k >> 1));
+        let s2 = sin2(s, substrate_lattice(ca, cb));
+        let better = s2 < best_s2;
+        best_a = if better { ca } else { best_a };
+        best_b = if better { cb } else { best_b };
+        best_s2 = if better { s2 } else { best_s2 };
+    }
+    substrate_word(best_a, best_b)
+}
+
+#[inline(always)]
+fn substrate_round_lane(n: Vec3) -> u32 {
+    let q = substrate_continuous(sanitize_or_z(n));
+    substrate_word(round_even_signed(q.x), round_even_signed(q.y))
+}
+
+#[inline(always)]
+fn substrate_decode_lane(p: u32) -> Vec3 {
+    let a = (((p >> substrate::U_SHIFT) & 0x7ff) as i32).wrapping_sub(1024);
+    let b = ((p >> substrate::V_SHIFT) as i32).wrapping_sub(1024);
+    let d = substrate_lattice(a, b);
+    normalize(Vec3::new(d[0] as f32, d[1] as f32, d[2] as f32))
+}
+
 #[inline(always)]
 fn unity_bytes_lane(p: u32) -> u32 {
     let (u, v) = (p & 0xfff, (p >> 12) & 0xfff);
@@ -551,6 +643,29 @@ batch_fn!(
     (), [f32; 4] => Vec3,
     scalar: xyz8::decode_normal_xyz8_unorm,
     lane: xyz8_decode_unorm,
+);
+
+batch_fn!(
+    /// Batch [`substrate::encode_substrate_normal`].
+    encode_substrate_normal, encode_substrate_normal_with, "normal::encode_substrate_normal",
+    (), Vec3 => u32,
+    scalar: substrate::encode_substrate_normal,
+    lane: substrate_precise_lane,
+);
+batch_fn!(
+    /// Batch [`substrate::encode_substrate_normal_fast`].
+    encode_substrate_normal_fast, encode_substrate_normal_fast_with,
+    "normal::encode_substrate_normal_fast",
+    (), Vec3 => u32,
+    scalar: substrate::encode_substrate_normal_fast,
+    lane: substrate_round_lane,
+);
+batch_fn!(
+    /// Batch [`substrate::decode_substrate_normal`].
+    decode_substrate_normal, decode_substrate_normal_with, "normal::decode_substrate_normal",
+    (), u32 => Vec3,
+    scalar: substrate::decode_substrate_normal,
+    lane: substrate_decode_lane,
 );
 
 batch_fn!(

@@ -10,6 +10,7 @@
 //! | view-space x, y as FP16 in RGBA8, z rebuilt (Killzone 2) | 32 | `wgsl/normal_xy_fp16.wgsl` | [`xy_fp16`] |
 //! | octahedral, precise and rounding encoders (Cigolle et al. 2014) | 16, 24, 32 | `wgsl/normal_oct.wgsl` | [`oct`] |
 //! | hemi-octahedral, view-space `z ≥ 0` only (for comparison) | 24 | `wgsl/normal_hemioct.wgsl` | [`hemioct`] |
+//! | octahedral 11:11 on a centred grid, with roughness and flags (Unreal 5 Substrate) | 22 (+10) | `wgsl/normal_substrate.wgsl` | [`substrate`] |
 //!
 //! **Twins.** Every encoder is bit-identical to its WGSL twin on a correctly rounded adapter
 //! (checked on lavapipe over every tested input by `tests/normal_*.rs`), so a normal baked on the
@@ -49,6 +50,7 @@ pub const UNIT_TOLERANCE: f64 = 4.0 / 8_388_608.0;
 pub mod hemioct;
 pub mod oct;
 pub mod snorm8;
+pub mod substrate;
 pub mod xy_fp16;
 pub mod xyz10;
 pub mod xyz8;

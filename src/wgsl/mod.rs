@@ -70,6 +70,10 @@ pub const NORMAL_OCT: &str = include_str!("../../wgsl/normal_oct.wgsl");
 /// [`crate::normal::hemioct`]).
 pub const NORMAL_HEMIOCT: &str = include_str!("../../wgsl/normal_hemioct.wgsl");
 
+/// `wgsl/normal_substrate.wgsl`: Unreal 5 Substrate's top-layer word, an 11:11 centred octahedral
+/// normal with roughness and flags (twin: [`crate::normal::substrate`]).
+pub const NORMAL_SUBSTRATE: &str = include_str!("../../wgsl/normal_substrate.wgsl");
+
 /// Every shipped WGSL file. `tests/wgsl_validate.rs` checks this list against the directory.
 pub const FILES: &[WgslFile] = &[
     WgslFile {
@@ -103,6 +107,10 @@ pub const FILES: &[WgslFile] = &[
     WgslFile {
         name: "normal_snorm8.wgsl",
         source: NORMAL_SNORM8,
+    },
+    WgslFile {
+        name: "normal_substrate.wgsl",
+        source: NORMAL_SUBSTRATE,
     },
     WgslFile {
         name: "normal_xy_fp16.wgsl",

@@ -98,6 +98,7 @@ mod normal;
 mod normal_hemioct;
 mod normal_oct;
 mod normal_snorm8;
+mod normal_substrate;
 mod normal_xy_fp16;
 mod normal_xyz10;
 mod normal_xyz8;
@@ -291,6 +292,7 @@ pub const TABLES: &[Table] = &[
     table!(normal_xy_fp16),
     table!(normal_oct),
     table!(normal_hemioct),
+    table!(normal_substrate),
     table!(normal),
 ];
 

@@ -17,7 +17,8 @@ pub const BEVY: &str = include_str!("../../../tests/baselines/peer_bevy.wgsl");
 pub const MESHOPT: &str = include_str!("../../../tests/baselines/peer_meshopt.wgsl");
 /// The JCGT 2014 survey's precise encoder as published (largest f32 dot) and its snorm decode.
 pub const SURVEY: &str = include_str!("../../../tests/baselines/peer_survey.wgsl");
-/// Unreal 5's GBufferA normal (`n·0.5 + 0.5` in RGB10A2), which Bevy's normal prepass stores too.
+/// Unreal 5's GBufferA normal (`n·0.5 + 0.5` in RGB10A2), which Bevy's normal prepass stores too,
+/// and Substrate's top-layer normal (octahedral 11:11 on a centred grid, truncated).
 pub const UNREAL: &str = include_str!("../../../tests/baselines/peer_unreal.wgsl");
 /// Unity HDRP's normal buffer: octahedral 12:12 in three bytes (`u32(f·4095.5)`).
 pub const UNITY: &str = include_str!("../../../tests/baselines/peer_unity.wgsl");
@@ -44,7 +45,7 @@ pub struct NormalPeer {
 }
 
 /// The normal-codec peers.
-pub const NORMAL_PEERS: [NormalPeer; 10] = [
+pub const NORMAL_PEERS: [NormalPeer; 11] = [
     NormalPeer {
         name: "bevy gbuffer oct24 (×4095)",
         bits: 24,
@@ -114,6 +115,13 @@ pub const NORMAL_PEERS: [NormalPeer; 10] = [
         source: UNITY,
         encode: "peer_unity_normal_encode",
         decode: "peer_unity_normal_decode",
+    },
+    NormalPeer {
+        name: "unreal substrate oct 11:11 (trunc)",
+        bits: 22,
+        source: UNREAL,
+        encode: "peer_unreal_substrate_normal_encode",
+        decode: "peer_unreal_substrate_normal_decode",
     },
 ];
 

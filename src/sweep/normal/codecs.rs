@@ -1,9 +1,10 @@
 //! The encodings the normal sweeps measure: each one's WGSL functions, Rust twins and f64
 //! reference, in one table.
 
-use crate::normal::{hemioct, oct, snorm8, xy_fp16, xyz8, xyz10};
+use crate::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use crate::wgsl::{
-    NORMAL_HEMIOCT, NORMAL_OCT, NORMAL_SNORM8, NORMAL_XY_FP16, NORMAL_XYZ8, NORMAL_XYZ10,
+    NORMAL_HEMIOCT, NORMAL_OCT, NORMAL_SNORM8, NORMAL_SUBSTRATE, NORMAL_XY_FP16, NORMAL_XYZ8,
+    NORMAL_XYZ10,
 };
 use glam::Vec3;
 
@@ -51,6 +52,19 @@ const OCT8: [Lane; 2] = lanes(8, LaneKind::Unsigned);
 const OCT10: [Lane; 2] = lanes(10, LaneKind::Unsigned);
 const OCT12: [Lane; 2] = lanes(12, LaneKind::Unsigned);
 const OCT16: [Lane; 2] = lanes(16, LaneKind::Unsigned);
+/// Substrate's word: u in bits 10–20, v in 21–31 (`crate::normal::substrate`).
+const SUBSTRATE11: [Lane; 2] = [
+    Lane {
+        shift: substrate::U_SHIFT,
+        width: 11,
+        kind: LaneKind::Unsigned,
+    },
+    Lane {
+        shift: substrate::V_SHIFT,
+        width: 11,
+        kind: LaneKind::Unsigned,
+    },
+];
 
 /// One encoding: its WGSL functions, its Rust twins and its f64 reference encoder.
 #[derive(Clone, Copy)]
@@ -143,8 +157,9 @@ macro_rules! oct_codec {
 
 /// Every encoding: xyz8, xy FP16, octahedral 16/20/24/32 precise and fast, hemi-octahedral 24
 /// precise and fast (errors of the hemisphere-only codes are measured over `z ≥ 0`), then the
-/// engines' forms: xyz10 (RGB10A2) and snorm8 xyz.
-pub const CODECS: [Codec; 14] = [
+/// engines' forms: xyz10 (RGB10A2), snorm8 xyz and Unreal Substrate's 11:11 centred octahedron
+/// (its word's normal bits; roughness and flags zero), precise and fast.
+pub const CODECS: [Codec; 16] = [
     Codec {
         name: "xyz8",
         stored_by: "Resistance 2; Godot 4 (its best-fit encoder, this decoder)",
@@ -337,6 +352,36 @@ pub const CODECS: [Codec; 14] = [
         twin_decode: snorm8::decode_normal_snorm8,
         reference_encode: snorm8::exact::encode,
         reference_decode: snorm8::exact::decode,
+        target: None,
+    },
+    Codec {
+        name: "substrate",
+        stored_by: "Unreal 5 Substrate (top-layer word, with roughness and flags)",
+        bits: 22,
+        lanes: &SUBSTRATE11,
+        hemisphere: false,
+        source: NORMAL_SUBSTRATE,
+        encode: "encode_substrate_normal",
+        decode: "decode_substrate_normal",
+        twin_encode: substrate::encode_substrate_normal,
+        twin_decode: substrate::decode_substrate_normal,
+        reference_encode: substrate::exact::encode_precise,
+        reference_decode: substrate::exact::decode,
+        target: None,
+    },
+    Codec {
+        name: "substrate fast",
+        stored_by: "Unreal 5 Substrate (top-layer word, with roughness and flags)",
+        bits: 22,
+        lanes: &SUBSTRATE11,
+        hemisphere: false,
+        source: NORMAL_SUBSTRATE,
+        encode: "encode_substrate_normal_fast",
+        decode: "decode_substrate_normal",
+        twin_encode: substrate::encode_substrate_normal_fast,
+        twin_decode: substrate::decode_substrate_normal,
+        reference_encode: substrate::exact::encode_round,
+        reference_decode: substrate::exact::decode,
         target: None,
     },
 ];

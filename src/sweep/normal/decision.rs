@@ -69,7 +69,9 @@ pub fn scores_source(codec: &Codec) -> Option<String> {
 
 /// The four candidate codes of `n` (exact continuous coordinates), in the encoder's order.
 pub(super) fn neighbours(codec: &Codec, n: [f64; 3]) -> [u32; 4] {
-    if codec.source == NORMAL_HEMIOCT {
+    if codec.source == crate::wgsl::NORMAL_SUBSTRATE {
+        crate::normal::substrate::exact::neighbours(n)
+    } else if codec.source == NORMAL_HEMIOCT {
         hemioct::exact::neighbours(n)
     } else {
         oct::exact::neighbours(n, codec.bits / 2)
@@ -78,7 +80,9 @@ pub(super) fn neighbours(codec: &Codec, n: [f64; 3]) -> [u32; 4] {
 
 /// The exact continuous code coordinates of `n`.
 fn continuous(codec: &Codec, n: [f64; 3]) -> [f64; 2] {
-    if codec.source == NORMAL_HEMIOCT {
+    if codec.source == crate::wgsl::NORMAL_SUBSTRATE {
+        crate::normal::substrate::exact::continuous(n).map(|q| q + 1024.0)
+    } else if codec.source == NORMAL_HEMIOCT {
         hemioct::exact::continuous(n)
     } else {
         oct::exact::continuous(n, codec.bits / 2)
