@@ -180,3 +180,12 @@ for c in NCODES + [0x0, 0xFFFFFFFF, 0x3FF, 0x80100000, 0x80000000, 0x801003FC, 0
 for v in VECS:
     for r, fl in [(f(0.5), 0), (NAN, 7), (f(-0.25), 0xFFFFFFFF), (INF, 1), (f(1.5), 2)]:
         write("encoders", 32, words(*v) + words(r, fl))
+# decoders (appended): 27 decode_normal_oct20, 28 _oct20_unorm. encoders (appended): 33
+# encode_normal_oct20, 34 _oct20_fast, 35 _oct20_unorm.
+for c in NCODES + [0x7FDFF, 0x80200, 0xFFFFF, 0xFFF00000]:
+    write("decoders", 27, words(c))
+for ch in CHANNELS:
+    write("decoders", 28, words(*ch))
+for v in VECS:
+    for e in (33, 34, 35):
+        write("encoders", e, words(*v))

@@ -470,6 +470,35 @@ pub const BATCH: &[Entry] = &[
         substrate::decode_substrate_normal,
         bn::decode_substrate_normal,
         decode_substrate_normal_with
+    ),    entry!(
+        Vec3,
+        oct::encode_normal_oct20,
+        bn::encode_normal_oct20,
+        encode_normal_oct20_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct20_fast,
+        bn::encode_normal_oct20_fast,
+        encode_normal_oct20_fast_with
+    ),
+    entry!(
+        u32,
+        oct::decode_normal_oct20,
+        bn::decode_normal_oct20,
+        decode_normal_oct20_with
+    ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct20_unorm,
+        bn::encode_normal_oct20_unorm,
+        encode_normal_oct20_unorm_with
+    ),
+    entry!(
+        [f32; 4],
+        oct::decode_normal_oct20_unorm,
+        bn::decode_normal_oct20_unorm,
+        decode_normal_oct20_unorm_with
     ),
 ];
 

@@ -311,6 +311,17 @@ pub const DECODERS: &[Entry] = &[
             assert!(substrate::substrate_flags(p) <= 3);
         },
     },
+    codec!(code_decoder; oct::decode_normal_oct20, 20),
+    Entry {
+        name: "normal::oct::decode_normal_oct20_unorm",
+        check: |i| {
+            // R and G as xyz10's channels; B and A ignored.
+            let c = [i.f32(), i.f32(), i.f32(), i.f32()];
+            let v = oct::decode_normal_oct20_unorm(c);
+            assert_unit(v, format_args!("{c:?}"));
+            assert_eq!(v, oct::decode_normal_oct20(rgb10a2_code(c) & 0xf_ffff), "{c:?}");
+        },
+    },
 ];
 
 /// A code decoder with `bits` bits of code: a finite unit vector for every pattern, the bits

@@ -296,6 +296,16 @@ pub const ENCODERS: &[Entry] = &[
                 assert!(k.min_element() >= 1, "{name} {n:?}: code 0 written");
             }
         },
+    },    codec!(encoder; oct::encode_normal_oct20, 20),
+    codec!(encoder; oct::encode_normal_oct20_fast, 20),
+    Entry {
+        name: "normal::oct::encode_normal_oct20_unorm",
+        check: |i| {
+            // R and G hold u and v as unorm10; B and A are the renderer's, written 0.
+            let n = i.vec3();
+            let c = oct::encode_normal_oct20_unorm(n);
+            assert_eq!(c, rgb10a2_channels(oct::encode_normal_oct20(n)), "{n:?}");
+        },
     },
 ];
 
