@@ -240,6 +240,35 @@ pub fn publish(path: &str, name: &str, body: &str) {
     publish_block(path, name, body, None);
 }
 
+/// The README's tables give an encoding's precise encoder and its rounding one (`_fast`) in one
+/// row: each row name without " fast" with the index of its `fast` sibling (the same name with
+/// " fast" after the encoding, e.g. "oct24 fast" or "oct24 fast, vouched input"), in the
+/// precise rows' order.
+#[allow(dead_code)]
+pub fn precise_with_fast(names: &[&str]) -> Vec<(usize, Option<usize>)> {
+    let base = |n: &str| n.replacen(" fast", "", 1);
+    names
+        .iter()
+        .enumerate()
+        .filter(|(_, n)| !n.contains(" fast"))
+        .map(|(i, n)| {
+            let fast = names
+                .iter()
+                .position(|m| m.contains(" fast") && base(m) == **n);
+            (i, fast)
+        })
+        .collect()
+}
+
+/// `a`, or `a · b` when the row has a `fast` sibling's figure `b` ([`precise_with_fast`]).
+#[allow(dead_code)]
+pub fn with_fast(a: String, b: Option<String>) -> String {
+    match b {
+        Some(b) => format!("{a} · {b}"),
+        None => a,
+    }
+}
+
 /// [`publish`] for a block measured on the adapter: the block records the adapter and driver it
 /// was measured on (an HTML comment, invisible in the rendered page), and its text is compared
 /// only on that adapter and driver. On any other (another Mesa, a user's GPU) the differences are
