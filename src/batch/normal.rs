@@ -103,9 +103,10 @@ fn normalize(v: Vec3) -> Vec3 {
     v / ((v.x * v.x + v.y * v.y) + v.z * v.z).sqrt()
 }
 
-/// [`oct::continuous`] with `m = max_code(bits)` as f32.
+/// The octahedral projection of `s`, folded when `s.z < 0` (the sign of ±0 counts as +),
+/// branch-free: shared by [`oct_continuous`] and [`substrate_continuous`].
 #[inline(always)]
-fn oct_continuous(s: Vec3, m: f32) -> Vec2 {
+fn oct_fold(s: Vec3) -> Vec2 {
     let a = s.abs();
     let l1 = (a.x + a.y) + a.z;
     let p = Vec2::new(s.x / l1, s.y / l1);
@@ -115,11 +116,16 @@ fn oct_continuous(s: Vec3, m: f32) -> Vec2 {
     );
     let folded = (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
     let neg = s.z < 0.0;
-    let p = Vec2::new(
+    Vec2::new(
         if neg { folded.x } else { p.x },
         if neg { folded.y } else { p.y },
-    );
-    let t = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(oct::CONTINUOUS_TOP));
+    )
+}
+
+/// [`oct::continuous`] with `m = max_code(bits)` as f32.
+#[inline(always)]
+fn oct_continuous(s: Vec3, m: f32) -> Vec2 {
+    let t = (oct_fold(s) * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(oct::CONTINUOUS_TOP));
     t * m
 }
 
@@ -439,20 +445,7 @@ fn floor_signed(x: f32) -> i32 {
 /// `[−1, CONTINUOUS_TOP]`, times 1023.
 #[inline(always)]
 fn substrate_continuous(s: Vec3) -> Vec2 {
-    let a = s.abs();
-    let l1 = (a.x + a.y) + a.z;
-    let p = Vec2::new(s.x / l1, s.y / l1);
-    let sgn = Vec2::new(
-        if p.x >= 0.0 { 1.0 } else { -1.0 },
-        if p.y >= 0.0 { 1.0 } else { -1.0 },
-    );
-    let folded = (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
-    let neg = s.z < 0.0;
-    let p = Vec2::new(
-        if neg { folded.x } else { p.x },
-        if neg { folded.y } else { p.y },
-    );
-    p.clamp(Vec2::splat(-1.0), Vec2::splat(substrate::CONTINUOUS_TOP)) * 1023.0
+    oct_fold(s).clamp(Vec2::splat(-1.0), Vec2::splat(substrate::CONTINUOUS_TOP)) * 1023.0
 }
 
 /// [`substrate::lattice`] of the centred coordinates `a = k_u − 1024`, `b = k_v − 1024`: when

@@ -169,6 +169,19 @@ pub(crate) fn sin2_to(s: Vec3, d: glam::IVec3) -> f32 {
 
 /// Exact `f64` helpers shared by the encodings' references.
 pub mod exact {
+    /// Of `codes`, the one whose direction (`decode`) is closest in angle to `n` (the first of
+    /// equal angles): the precise encoders' f64 reference over their candidates.
+    pub fn closest(n: [f64; 3], codes: [u32; 4], decode: impl Fn(u32) -> [f64; 3]) -> u32 {
+        let mut best = (f64::INFINITY, 0);
+        for p in codes {
+            let e = crate::precision::metrics::angle_degrees(n, decode(p));
+            if e < best.0 {
+                best = (e, p);
+            }
+        }
+        best.1
+    }
+
     /// The per-channel unorm encoders' reference: the field nearest `m·(u/2 + 1/2)` per
     /// coordinate of the unit vector `u` of `n` (`+z` for the zero vector; half to even), field
     /// `k` at bit `k·width`.

@@ -454,14 +454,7 @@ pub mod exact {
 
     /// The survey's precise encoder in f64: the neighbour with the smallest angle to `n`.
     pub fn encode_precise(n: [f64; 3], bits: u32) -> u32 {
-        let mut best = (f64::INFINITY, 0);
-        for p in neighbours(n, bits) {
-            let e = crate::precision::metrics::angle_degrees(n, decode(p, bits));
-            if e < best.0 {
-                best = (e, p);
-            }
-        }
-        best.1
+        crate::normal::exact::closest(n, neighbours(n, bits), |p| decode(p, bits))
     }
 
     /// The rounding encoder in f64.

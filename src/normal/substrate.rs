@@ -215,14 +215,7 @@ pub mod exact {
 
     /// The precise encoder in f64: the neighbour with the smallest angle to `n`.
     pub fn encode_precise(n: [f64; 3]) -> u32 {
-        let mut best = (f64::INFINITY, 0);
-        for p in neighbours(n) {
-            let e = crate::precision::metrics::angle_degrees(n, decode(p));
-            if e < best.0 {
-                best = (e, p);
-            }
-        }
-        best.1
+        crate::normal::exact::closest(n, neighbours(n), decode)
     }
 
     /// The rounding encoder in f64.
