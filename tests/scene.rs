@@ -140,7 +140,11 @@ fn all_scenes() -> Vec<Scene> {
         for &position in &positions {
             for &normal in &normals {
                 for normal_input in [NormalInput::Robust, NormalInput::Vouched] {
-                    for roughness in [RoughnessChoice::None, RoughnessChoice::Log8] {
+                    for roughness in [
+                        RoughnessChoice::None,
+                        RoughnessChoice::Log8,
+                        RoughnessChoice::Ggx8,
+                    ] {
                         for &lighting in &lightings {
                             v.push(Scene {
                                 depth,
@@ -802,4 +806,71 @@ fn vouched_normal_input_selects_the_vouched_encoder() {
         assert_eq!(e.fields, ["normal_input", "normal.encoding"], "{e}");
         assert!(s.gbuffer().is_err());
     }
+}
+
+/// GGX roughness (`RoughnessChoice::Ggx8`) and Unreal Substrate's word: the roughness goes in
+/// the normal target's free alpha, in the Substrate word (no target of its own) or in an
+/// `r8unorm` target, and the lighting's roots read `α`; Substrate with the log-range code is
+/// refused, naming both fields.
+#[test]
+fn ggx_roughness_and_the_substrate_word_lay_out_as_documented() {
+    let scene = |encoding, roughness| Scene {
+        normal: NormalChoice {
+            encoding: Some(encoding),
+            fast_encoder: false,
+        },
+        roughness,
+        ..Scene::default()
+    };
+    let names = |s: &Scene| -> Vec<(&'static str, String)> {
+        s.gbuffer()
+            .unwrap()
+            .targets
+            .iter()
+            .map(|t| (t.name, t.channels.clone()))
+            .collect()
+    };
+    let oct24 = scene(NormalEncoding::Oct24, RoughnessChoice::Ggx8);
+    assert!(
+        names(&oct24)
+            .iter()
+            .any(|(n, c)| *n == "normal" && c.ends_with("a: GGX perceptual roughness")),
+        "{:?}",
+        names(&oct24)
+    );
+    let roots = oct24.roots().unwrap();
+    for f in [
+        "encode_roughness_ggx8_unorm",
+        "decode_roughness_ggx8_unorm",
+        "decode_roughness_ggx8_alpha",
+    ] {
+        assert!(roots.contains(&f), "{f}: {roots:?}");
+    }
+    let oct32 = scene(NormalEncoding::Oct32, RoughnessChoice::Ggx8);
+    assert!(names(&oct32).iter().any(|(n, _)| *n == "roughness"));
+    let sub = scene(NormalEncoding::Substrate, RoughnessChoice::Ggx8);
+    let t = names(&sub);
+    assert!(!t.iter().any(|(n, _)| *n == "roughness"), "{t:?}");
+    let normal = sub
+        .gbuffer()
+        .unwrap()
+        .targets
+        .into_iter()
+        .find(|t| t.name == "normal")
+        .unwrap();
+    assert_eq!(normal.format, TargetFormat::R32Uint);
+    let roots = sub.roots().unwrap();
+    for f in [
+        "encode_substrate_word",
+        "decode_substrate_normal",
+        "decode_substrate_roughness",
+        "decode_roughness_ggx8_alpha",
+    ] {
+        assert!(roots.contains(&f), "{f}: {roots:?}");
+    }
+    assert!(sub.wgsl().unwrap().contains("fn encode_substrate_word("));
+    let e = scene(NormalEncoding::Substrate, RoughnessChoice::Log8)
+        .roots()
+        .unwrap_err();
+    assert_eq!(e.fields, ["normal.encoding", "roughness"], "{e}");
 }

@@ -151,7 +151,13 @@ impl Scene {
                 });
             }
         }
-        let rough = self.roughness == RoughnessChoice::Log8;
+        let rough = self.roughness != RoughnessChoice::None;
+        let rough_name = if self.roughness == RoughnessChoice::Ggx8 {
+            "GGX perceptual roughness"
+        } else {
+            "log roughness"
+        };
+        let substrate = self.normal.encoding == Some(NormalEncoding::Substrate);
         let alpha_free = matches!(
             self.normal.encoding,
             Some(
@@ -163,11 +169,11 @@ impl Scene {
         );
         if let Some(e) = self.normal.encoding {
             let a = if rough && alpha_free {
-                "a: log roughness"
+                format!("a: {rough_name}")
             } else if alpha_free {
-                "a: free (material)"
+                "a: free (material)".into()
             } else {
-                ""
+                String::new()
             };
             let (format, channels) = match e {
                 NormalEncoding::Xyz8 => {
@@ -207,6 +213,17 @@ impl Scene {
                         "rg: low 8 bits of octahedral u, v; b: their high 4 bits (Unity's order), {a}"
                     ),
                 ),
+                NormalEncoding::Substrate => (
+                    TargetFormat::R32Uint,
+                    format!(
+                        "r: Substrate word — bits 10–31 octahedral 11:11, 2–9 {}, 0–1 flags (0)",
+                        if rough {
+                            "GGX perceptual roughness"
+                        } else {
+                            "roughness (0)"
+                        }
+                    ),
+                ),
                 NormalEncoding::Snorm8 => (
                     TargetFormat::Rgba8Snorm,
                     "rgb: normal snorm8, a: free (snorm material)".into(),
@@ -218,11 +235,11 @@ impl Scene {
                 channels,
             });
         }
-        if rough && !alpha_free {
+        if rough && !alpha_free && !substrate {
             targets.push(Target {
                 name: "roughness",
                 format: TargetFormat::R8Unorm,
-                channels: "r: log roughness code".into(),
+                channels: format!("r: {rough_name} code"),
             });
         }
         if self.lighting.lights != Lights::None {

@@ -103,11 +103,15 @@ pub enum NormalEncoding {
     /// Octahedral 2×12 bits in Unity's byte order (HDRP's normal buffer, URP's accurate
     /// G-buffer normals): oct24's grid, alpha free.
     Oct24Unity,
+    /// Unreal 5 Substrate's 32-bit word (`r32uint`): an 11:11 centred-grid octahedron, the
+    /// perceptual roughness byte ([`RoughnessChoice::Ggx8`]'s, or 0 when none is stored) and two
+    /// flag bits (written 0).
+    Substrate,
 }
 
 impl NormalEncoding {
     /// Every encoding.
-    pub const ALL: [NormalEncoding; 10] = [
+    pub const ALL: [NormalEncoding; 11] = [
         Self::Xyz8,
         Self::XyFp16,
         Self::Oct16,
@@ -118,6 +122,7 @@ impl NormalEncoding {
         Self::Xyz10,
         Self::Snorm8,
         Self::Oct24Unity,
+        Self::Substrate,
     ];
 
     /// Whether a cheaper rounding encoder (`_fast`) exists beside the precise one.
@@ -169,6 +174,11 @@ pub enum RoughnessChoice {
     None,
     /// 8-bit log-range code (Killzone 2), in the normal target's alpha when it has one free.
     Log8,
+    /// GGX perceptual roughness `r` (`α = r²`) in unorm8, linearly, as Bevy, Unreal, HDRP, URP
+    /// and Substrate store it (`encode_roughness_ggx8_unorm`; the lighting reads `α`,
+    /// `decode_roughness_ggx8_alpha`, and its Blinn-Phong exponent is `2/α² − 2`): in the normal
+    /// target's alpha when it has one free, in the Substrate word, else in an `r8unorm` target.
+    Ggx8,
 }
 
 /// Which dynamic lights the light pre-pass accumulates.
@@ -288,6 +298,14 @@ impl Scene {
             return bad(
                 &["normal_input", "normal.encoding"],
                 "only the octahedral encodings (oct16, oct24, oct32) have a `_vouched` encoder",
+            );
+        }
+        if self.normal.encoding == Some(NormalEncoding::Substrate)
+            && self.roughness == RoughnessChoice::Log8
+        {
+            return bad(
+                &["normal.encoding", "roughness"],
+                "the Substrate word's roughness byte holds GGX perceptual roughness: choose Ggx8 (or None)",
             );
         }
         if lit && self.normal.encoding.is_none() {

@@ -74,6 +74,14 @@ fn normal_roots(e: NormalEncoding, fast: bool, vouched: bool) -> [&'static str; 
             "encode_normal_oct24_unity_unorm",
             "decode_normal_oct24_unity_unorm",
         ),
+        // The word is the target's texel: the encoder and decoders are the render-target forms.
+        NormalEncoding::Substrate => (
+            "encode_substrate_word",
+            "encode_substrate_word_fast",
+            "decode_substrate_normal",
+            "encode_substrate_word",
+            "decode_substrate_normal",
+        ),
         NormalEncoding::Snorm8 => (
             "encode_normal_snorm8",
             "encode_normal_snorm8",
@@ -156,6 +164,14 @@ impl Scene {
                 self.normal.fast_encoder,
                 self.normal_input == NormalInput::Vouched,
             ));
+        }
+        if self.roughness == RoughnessChoice::Ggx8 {
+            if self.normal.encoding == Some(NormalEncoding::Substrate) {
+                r.extend(["decode_substrate_roughness", "decode_roughness_ggx8_alpha"]);
+            } else {
+                r.extend(["encode_roughness_ggx8_unorm", "decode_roughness_ggx8_unorm"]);
+                r.push("decode_roughness_ggx8_alpha");
+            }
         }
         if self.roughness == RoughnessChoice::Log8 {
             r.extend(["encode_log_roughness", "decode_log_roughness"]);

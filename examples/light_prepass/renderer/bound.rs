@@ -95,6 +95,8 @@ pub fn normal_angle_at(e: NormalEncoding, z: f64) -> f64 {
         NormalEncoding::Oct20 => oct(10),
         NormalEncoding::Oct24 | NormalEncoding::Hemioct24 | NormalEncoding::Oct24Unity => oct(12),
         NormalEncoding::Oct32 => oct(16),
+        // Substrate's centred 11-bit grid: steps of 1/1023 where oct's are 2/(2^bits − 1).
+        NormalEncoding::Substrate => (3.0 * 2f64.sqrt() / 2046.0).asin(),
         NormalEncoding::XyFp16 => {
             let dxy = 2f64.powi(-11) + 2f64.powf(-24.5);
             let q = 2.0 * dxy + dxy * dxy;
@@ -436,6 +438,8 @@ pub fn gbuffer_error(
             // The texel's bits are the code (rgb10a2 packs x low; snorm bytes are the code's).
             NormalEncoding::Xyz10 => xyz10::decode_normal_xyz10(p),
             NormalEncoding::Oct20 => oct::decode_normal_oct20(p),
+            // The r32uint texel is the word (the example does not offer it: see main.rs).
+            NormalEncoding::Substrate => prepass::normal::substrate::decode_substrate_normal(p),
             NormalEncoding::Snorm8 => snorm8::decode_normal_snorm8(p),
             NormalEncoding::Oct24Unity => oct::decode_normal_oct24_unity(p),
         };

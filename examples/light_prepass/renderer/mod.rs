@@ -217,6 +217,7 @@ pub fn encoding_name(e: NormalEncoding) -> &'static str {
         NormalEncoding::Oct20 => "oct20",
         NormalEncoding::Snorm8 => "snorm8",
         NormalEncoding::Oct24Unity => "oct24 unity",
+        NormalEncoding::Substrate => "substrate",
     }
 }
 

@@ -30,6 +30,7 @@ pub fn stem(e: NormalEncoding) -> &'static str {
         NormalEncoding::Oct24 => "oct24",
         NormalEncoding::Oct32 => "oct32",
         NormalEncoding::Hemioct24 => "hemioct24",
+        NormalEncoding::Substrate => "substrate",
     }
 }
 
