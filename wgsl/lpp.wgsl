@@ -103,7 +103,9 @@ fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
     let big = radius > 8.507059e37;
     let d = select(distance, distance * 5.421011e-20, big);
     let r = select(radius, radius * 5.421011e-20, big);
-    let x = clamp(max(d, 0.0) / r, 0.0, 1.0);
+    // d/r only for d below r (a huge d over a small r would overflow); 1 exactly from r on, so
+    // the window closes whatever the division's rounding.
+    let x = select(clamp(min(max(d, 0.0), r) / r, 0.0, 1.0), 1.0, d >= r);
     let w = 1.0 - x * x;
     return w * w;
 }

@@ -102,7 +102,12 @@ pub fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
     } else {
         (distance, radius)
     };
-    let x = (d.max(0.0) / r).clamp(0.0, 1.0);
+    // As the WGSL: d/r only below r (no overflow), exactly 1 from r on.
+    let x = if d >= r {
+        1.0
+    } else {
+        (d.max(0.0).min(r) / r).clamp(0.0, 1.0)
+    };
     let w = 1.0 - x * x;
     w * w
 }

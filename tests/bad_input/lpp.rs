@@ -116,6 +116,7 @@ pub const ROWS: &[Row] = &[
     Row { func: "lpp_point_attenuation", case: "subnormal radius", args: &[V::F32(1.0), V::F32(SUB_MAX)], expect: V::F32(0.0), why: "beyond the radius, flushed or not" },
     Row { func: "lpp_point_attenuation", case: "negative distance", args: &[V::F32(-1.0), V::F32(2.0)], expect: V::F32(1.0), why: "counts as 0: full light" },
     Row { func: "lpp_point_attenuation", case: "out of range: beyond the radius", args: &[V::F32(3.0), V::F32(2.0)], expect: V::F32(0.0), why: "windowed to 0" },
+    Row { func: "lpp_point_attenuation", case: "huge distance, small radius", args: &[V::F32(f32::MAX), V::F32(0.3)], expect: V::F32(0.0), why: "windowed to 0: d/r is never formed beyond r, so no overflow" },
     Row { func: "lpp_spot_attenuation", case: "out of range: cosines beyond ±1 (huge)", args: &[V::F32(3.4027746e38), V::F32(-2.2331028e38), V::F32(3.4027746e38)], expect: V::F32(1.0), why: "clamped to [−1, 1] first: no overflow" },
     Row { func: "lpp_spot_attenuation", case: "NaN", args: &[V::F32(NAN), V::F32(0.5), V::F32(0.9)], expect: V::F32(0.0), why: "no light" },
     Row { func: "lpp_spot_attenuation", case: "+Inf cos_inner", args: &[V::F32(1.0), V::F32(0.5), V::F32(INF)], expect: V::F32(0.0), why: "no light" },
