@@ -23,6 +23,8 @@ pub const UNREAL: &str = include_str!("../../../tests/baselines/peer_unreal.wgsl
 pub const UNITY: &str = include_str!("../../../tests/baselines/peer_unity.wgsl");
 /// Unity URP's default normal target (xyz in RGBA8 snorm).
 pub const URP: &str = include_str!("../../../tests/baselines/peer_urp.wgsl");
+/// Godot 4's best-fit normal (lookup-table scale, RGBA8), its lookup texel computed inline.
+pub const GODOT: &str = include_str!("../../../tests/baselines/peer_godot.wgsl");
 /// LYGIA's `linearizeDepth` and `depth2viewZ` (OpenGL conventions, finite far).
 pub const LYGIA: &str = include_str!("../../../tests/baselines/peer_lygia.wgsl");
 
@@ -44,7 +46,7 @@ pub struct NormalPeer {
 }
 
 /// The normal-codec peers.
-pub const NORMAL_PEERS: [NormalPeer; 10] = [
+pub const NORMAL_PEERS: [NormalPeer; 11] = [
     NormalPeer {
         name: "bevy gbuffer oct24 (×4095)",
         bits: 24,
@@ -114,6 +116,13 @@ pub const NORMAL_PEERS: [NormalPeer; 10] = [
         source: UNITY,
         encode: "peer_unity_normal_encode",
         decode: "peer_unity_normal_decode",
+    },
+    NormalPeer {
+        name: "godot best-fit xyz8 (lookup texel inline)",
+        bits: 24,
+        source: GODOT,
+        encode: "peer_godot_normal_encode",
+        decode: "peer_godot_normal_decode",
     },
 ];
 
