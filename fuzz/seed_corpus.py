@@ -173,3 +173,9 @@ for v in VECS:
 for v in VECS + [(f(0.6), f(0.0), f(-0.8)), (NZ, f(1e-38), f(-1.0)), (f(2.0 ** 124), f(1.0), NZ),
                  (f(1e-30), f(1e-30), f(-1e-30))]:
     write("encoders", 31, words(*v))
+# encoders (appended): 32 encode_normal_xyz8_best, 33 _best_unorm, and lattice directions
+# (multiples of one odd vector tie) and the bisector of two neighbouring codes.
+for v in VECS + [(f(1.0), f(1.0), f(1.0)), (f(255.0), f(-253.0), f(1.0)), (f(3.0), f(1.0), NZ),
+                 (f(0.70710677), f(-0.70710677), f(1e-7))]:
+    for e in (32, 33):
+        write("encoders", e, words(*v))

@@ -323,6 +323,7 @@ fn best_fit_is_at_least_as_accurate_as_godots_encoder() {
             common::run_kernel(GODOT, "peer_godot_normal_decode", &[Arg::column(&godot)], n);
         let ours = round_trip(gpu(), codec("xyz8 best-fit"), &dirs).unwrap();
         let (mut g_max, mut g_sum, mut same, mut worse) = (0.0f64, 0.0f64, 0usize, 0usize);
+        let mut worst = 0.0f64;
         for (i, v) in dirs.iter().enumerate() {
             let w = v.map(f64::from);
             let g = prepass::precision::metrics::angle_degrees(
@@ -333,8 +334,10 @@ fn best_fit_is_at_least_as_accurate_as_godots_encoder() {
             g_sum += g;
             let (a_ours, a_godot) = (exact::angle_to(w, ours.codes[i]), exact::angle_to(w, godot[i]));
             same += usize::from(ours.codes[i] == godot[i] & 0xff_ffff);
-            if a_ours > a_godot {
+            // Farther beyond f64 noise (two multiples of one odd vector are one direction).
+            if a_ours > a_godot + 1e-12 {
                 worse += 1;
+                worst = worst.max(a_ours - a_godot);
                 assert!(
                     a_ours - a_godot <= tol,
                     "{set} {v:?}: prepass {:#08x} is {:e} rad farther than Godot's {:#08x}",
@@ -346,8 +349,8 @@ fn best_fit_is_at_least_as_accurate_as_godots_encoder() {
         }
         eprintln!(
             "{set}: prepass best-fit max {:.6}° mean {:.6}°; Godot's encoder (lookup texel inline) \
-             max {g_max:.6}° mean {:.6}°; same code at {same} of {n}, prepass farther (within \
-             the f32 scoring slack) at {worse}",
+             max {g_max:.6}° mean {:.6}°; same code at {same} of {n}; prepass farther (by more \
+             than 1e-12 rad, within the f32 scoring slack) at {worse}, by at most {worst:.3e} rad",
             ours.error.max,
             ours.error.mean(),
             g_sum / n as f64
