@@ -151,7 +151,10 @@ fn best_fit_is_the_nearest_of_all_codes() {
     let widen = |v: [f32; 3]| v.map(f64::from);
     // Sine slack to angle: asin'(x) ≤ 1.0001 for sines under 0.01 (every best fit: ≤ √3/255).
     let tol = 2.0 * f64::from(BEST_FIT_SINE_SLACK) * 1.0001;
-    let chunks: Vec<Vec<[f32; 3]>> = dirs.chunks(dirs.len().div_ceil(2)).map(|c| c.to_vec()).collect();
+    let chunks: Vec<Vec<[f32; 3]>> = dirs
+        .chunks(dirs.len().div_ceil(2))
+        .map(|c| c.to_vec())
+        .collect();
     let results: Vec<(usize, usize, f64, f64)> = std::thread::scope(|sc| {
         let hs: Vec<_> = chunks
             .iter()
@@ -332,7 +335,10 @@ fn best_fit_is_at_least_as_accurate_as_godots_encoder() {
             );
             g_max = g_max.max(g);
             g_sum += g;
-            let (a_ours, a_godot) = (exact::angle_to(w, ours.codes[i]), exact::angle_to(w, godot[i]));
+            let (a_ours, a_godot) = (
+                exact::angle_to(w, ours.codes[i]),
+                exact::angle_to(w, godot[i]),
+            );
             same += usize::from(ours.codes[i] == godot[i] & 0xff_ffff);
             // Farther beyond f64 noise (two multiples of one odd vector are one direction).
             if a_ours > a_godot + 1e-12 {
