@@ -106,7 +106,7 @@ fn best_fit_check_directions() -> Vec<[f32; 3]> {
     }
     v.extend(fibonacci_directions(1024));
     v.extend(adversarial_directions().into_iter().step_by(64));
-    let mut rng = prepass::sweep::SplitMix(0xbe57_f17);
+    let mut rng = prepass::sweep::SplitMix(0x0be5_7f17);
     let ulp = |x: f32, d: i32| {
         if x == 0.0 {
             x

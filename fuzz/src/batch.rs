@@ -453,6 +453,18 @@ pub const BATCH: &[Entry] = &[
     ),
     entry!(f32, flagged_godot8, bg::encode_roughness_godot8, encode_roughness_godot8_with;
         roughness_ggx, Input::u32),
+    entry!(
+        Vec3,
+        xyz8::encode_normal_xyz8_best,
+        bn::encode_normal_xyz8_best,
+        encode_normal_xyz8_best_with
+    ),
+    entry!(
+        Vec3,
+        xyz8::encode_normal_xyz8_best_unorm,
+        bn::encode_normal_xyz8_best_unorm,
+        encode_normal_xyz8_best_unorm_with
+    ),
 ];
 
 /// [`g::encode_roughness_godot8`] with the flag last, as the parameterised entries call it.
