@@ -5,6 +5,11 @@
 //! for the coordinate `(2b − 255)/255`; the decoder normalises. Measured over 2^24
 //! spherical-Fibonacci directions on the adapter (see the README): mean 0.170°, max 0.39° angular
 //! error — the 24-bit octahedral code is about 9 times better in the same bits.
+//!
+//! [`encode_normal_xyz8_best`] writes the same format as Godot 4 does (Kaplanyan's best-fit
+//! normals): the code, of all 2^24, nearest in angle to the input, found by a search over the
+//! dominant component's 128 odd values (no lookup texture). Over 2^24 Fibonacci directions on
+//! lavapipe: mean 0.0280°, max 0.3150° (the rounding encoder: mean 0.170°, max 0.386°).
 
 use glam::Vec3;
 
@@ -48,8 +53,9 @@ pub fn decode_normal_xyz8_unorm(c: [f32; 4]) -> Vec3 {
 /// direction — the odd-integer vector `D = 2b − 255` that [`decode_normal_xyz8`] normalises — is
 /// nearest in angle to `n`. Same layout, decoder and bad-input rules as [`encode_normal_xyz8`].
 ///
-/// **The search** (derivation in [`best_fit_code`]): with `a = |s|` of the sanitised input and
-/// its dominant axis first, every odd value `m` of `D`'s dominant component is a plane; the best
+/// **The search** (derivation at `best_fit_code` in the source): with `a = |s|` of the
+/// sanitised input and its dominant axis first, every odd value `m` of `D`'s dominant component
+/// is a plane; the best
 /// code in that plane is one of the 3 × 3 odd points around where the ray meets it, scored by
 /// `|s × D|²/|D|²` (sin² of the angle, times `|s|²`), the first strictly smallest kept. Planes
 /// are visited from `m = 255` down, each skipped when a lower bound on its score already loses
@@ -212,7 +218,7 @@ pub mod exact {
     }
 
     /// The best-fit encoder's reference in f64: the plane search of
-    /// [`super::best_fit_code`] (every plane, the 3 × 3 block the proof there shows holds the
+    /// `best_fit_code` (every plane, the 3 × 3 block the proof there shows holds the
     /// best) scored by `(u·D)²/|D|²` of the unit `u` (largest wins), signs from `u` (`+` at 0).
     pub fn encode_best(n: [f64; 3]) -> u32 {
         let u = super::super::exact::unit(n).unwrap_or([0.0, 0.0, 1.0]);

@@ -345,7 +345,12 @@ pub fn normal_figures_with(
                 .map_err(|e| HarnessError::Shader(e.to_string()))
         };
         row.spirv = (cost(c.encode)?, cost(c.decode)?);
-        let base = c.name.trim_end_matches(" fast").replace(' ', "");
+        // The best-fit encoder writes xyz8's target (its scene choice is xyz8's format).
+        let base = c
+            .name
+            .trim_end_matches(" fast")
+            .trim_end_matches(" best-fit")
+            .replace(' ', "");
         if let Some(encoding) = NormalEncoding::ALL
             .into_iter()
             .find(|e| format!("{e:?}").to_lowercase() == base)
