@@ -101,11 +101,14 @@ pub enum NormalEncoding {
     /// Octahedral 2×12 bits in Unity's byte order (HDRP's normal buffer, URP's accurate
     /// G-buffer normals): oct24's grid, alpha free.
     Oct24Unity,
+    /// xyz8's format written by the best-fit encoder (Godot 4's normal_roughness: the nearest of
+    /// the 2^24 codes), read by xyz8's decoder; alpha free.
+    Xyz8Best,
 }
 
 impl NormalEncoding {
     /// Every encoding.
-    pub const ALL: [NormalEncoding; 9] = [
+    pub const ALL: [NormalEncoding; 10] = [
         Self::Xyz8,
         Self::XyFp16,
         Self::Oct16,
@@ -115,11 +118,15 @@ impl NormalEncoding {
         Self::Xyz10,
         Self::Snorm8,
         Self::Oct24Unity,
+        Self::Xyz8Best,
     ];
 
     /// Whether a cheaper rounding encoder (`_fast`) exists beside the precise one.
     pub fn has_fast_encoder(self) -> bool {
-        !matches!(self, Self::Xyz8 | Self::XyFp16 | Self::Xyz10 | Self::Snorm8)
+        !matches!(
+            self,
+            Self::Xyz8 | Self::XyFp16 | Self::Xyz10 | Self::Snorm8 | Self::Xyz8Best
+        )
     }
 
     /// Whether encoders for vouched input (`_vouched`, `_fast_vouched`) exist beside the robust

@@ -345,11 +345,11 @@ pub fn normal_figures_with(
                 .map_err(|e| HarnessError::Shader(e.to_string()))
         };
         row.spirv = (cost(c.encode)?, cost(c.decode)?);
-        // The best-fit encoder writes xyz8's target (its scene choice is xyz8's format).
+        // "xyz8 best-fit" is the scene's Xyz8Best.
         let base = c
             .name
             .trim_end_matches(" fast")
-            .trim_end_matches(" best-fit")
+            .replace(" best-fit", "best")
             .replace(' ', "");
         if let Some(encoding) = NormalEncoding::ALL
             .into_iter()
