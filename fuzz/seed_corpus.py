@@ -189,3 +189,9 @@ for ch in CHANNELS:
 for v in VECS:
     for e in (33, 34, 35):
         write("encoders", e, words(*v))
+# encoders (appended): 36 encode_normal_xyz8_best, 37 _best_unorm, and lattice directions
+# (multiples of one odd vector tie) and the bisector of two neighbouring codes.
+for v in VECS + [(f(1.0), f(1.0), f(1.0)), (f(255.0), f(-253.0), f(1.0)), (f(3.0), f(1.0), NZ),
+                 (f(0.70710677), f(-0.70710677), f(1e-7))]:
+    for e in (36, 37):
+        write("encoders", e, words(*v))

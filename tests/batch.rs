@@ -549,6 +549,31 @@ fn substrate_every_code_and_rounding_encoder() {
     );
 }
 
+/// The best-fit encoder's batch twins (the scalar twin per element) over every 16th of the 2^24
+/// Fibonacci directions and every other encoder input (adversarial, bad, special components).
+#[test]
+fn normal_best_fit_encoder() {
+    let v = encoder_inputs();
+    let sub: Vec<Vec3> = v[..1 << 24]
+        .iter()
+        .step_by(16)
+        .chain(&v[1 << 24..])
+        .copied()
+        .collect();
+    check!(
+        &sub,
+        xyz8::encode_normal_xyz8_best,
+        bn::encode_normal_xyz8_best,
+        encode_normal_xyz8_best_with
+    );
+    check!(
+        &sub,
+        xyz8::encode_normal_xyz8_best_unorm,
+        bn::encode_normal_xyz8_best_unorm,
+        encode_normal_xyz8_best_unorm_with
+    );
+}
+
 #[test]
 fn normal_rounding_encoders() {
     let v = encoder_inputs();

@@ -37,10 +37,14 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
     ),
     (
         "decode_normal_xyz8",
-        &[URP_SNORM8],
+        &[URP_SNORM8, GODOT_XYZ8],
         "the same cost (one normalise of an integer vector); the decode row carries its format's \
-         round-trip error, and URP's snorm8 lattice measures lower on these directions: a \
-         different format, not a better reader of these bytes",
+         round-trip error through the rounding encoder, and URP's snorm8 lattice measures lower \
+         on these directions: a different format, not a better reader of these bytes. Godot's \
+         reader is this decoder on the same bytes (normalize(c·2 − 1), one instruction fewer: it \
+         rounds k/255·2 − 1 where this one builds the odd integer 2k − 255 exactly); its row \
+         carries Godot's best-fit encoder, and prepass's `encode_normal_xyz8_best` through this \
+         decoder measures lower still (tests/normal_xyz8.rs)",
     ),
     (
         "encode_normal_xy_fp16",
@@ -59,9 +63,10 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
     ),
     (
         "decode_normal_xy_fp16",
-        &[UNREAL_XYZ10, URP_SNORM8],
+        &[UNREAL_XYZ10, URP_SNORM8, GODOT_XYZ8],
         "as its encoder: Killzone 2's layout, kept for comparison; its z rebuilt near the \
-         horizon is what the engines' linear formats avoid",
+         horizon is what the engines' linear formats avoid (Godot's best-fit row: its encoder's \
+         error, a decoder of another format)",
     ),
     (
         "encode_normal_oct24_fast",
@@ -94,6 +99,22 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
         "kept as URP's snorm8 layout (linear: filtering and blending stay meaningful); an \
          octahedral code is more accurate in the same bits. Against URP's own write it is not \
          dominated on these directions",
+    ),
+    (
+        "decode_normal_snorm8",
+        &[GODOT_XYZ8],
+        "a different format: Godot's decoder row carries its best-fit encoder's round-trip error \
+         over the unorm8 lattice, one SPIR-V instruction fewer; this one reads URP's snorm8 bytes",
+    ),
+    (
+        "encode_normal_xyz8_best",
+        &[BEVY_OCT24, MESHOPT_K12, SURVEY_OCT24, UNITY_OCT24],
+        "kept as Godot 4's format (best-fit normals in RGB8, read by `decode_normal_xyz8` and \
+         Godot's reader): its code is the nearest of the format's 2^24 (tests/normal_xyz8.rs, \
+         against an exhaustive search) and no farther than Godot's own encoder at any direction \
+         measured; an octahedral code is more accurate in 24 bits but is another format, which \
+         filtering and blending break. Its SPIR-V count understates its run time: a loop over \
+         128 planes",
     ),
     (
         "encode_normal_oct24_fast_vouched",
@@ -129,6 +150,8 @@ const UNREAL_XYZ10: &str = "peer:unreal/bevy xyz10 (n·0.5 + 0.5)";
 const URP_SNORM8: &str = "peer:urp snorm8";
 const UNITY_OCT24: &str = "peer:unity hdrp oct 12:12 (×4095.5)";
 const UNREAL_SUBSTRATE: &str = "peer:unreal substrate oct 11:11 (trunc)";
+const SURVEY_OCT24: &str = "peer:survey precise24 (f32 dot)";
+const GODOT_XYZ8: &str = "peer:godot best-fit xyz8 (lookup texel inline)";
 
 fn spirv(source: &str, function: &str) -> f64 {
     spirv_instruction_count(source, function)
@@ -346,7 +369,8 @@ fn peers_dominate_only_the_listed_functions_on_spirv_count() {
     let mut body = format!(
         "Peers: Bevy's G-buffer oct24 and `−near/d`, meshoptimizer's octahedral filter (K = 8, \
          12, 16), the JCGT survey's precise encoder (f32 dot), Unreal's and Bevy's RGB10A2 \
-         `n·0.5 + 0.5`, URP's snorm8 target, HDRP's octahedral 12:12 (`u32(f·4095.5)`), Unreal Substrate's truncated 11:11 octahedron, LYGIA's `linearizeDepth` and \
+         `n·0.5 + 0.5`, URP's snorm8 target, HDRP's octahedral 12:12 (`u32(f·4095.5)`), Unreal Substrate's truncated 11:11 octahedron, Godot's best-fit xyz8 (its lookup texel computed \
+         inline, so its SPIR-V count is not Godot's cost), LYGIA's `linearizeDepth` and \
          `depth2viewZ`, re-implemented in WGSL (`tests/baselines/peer_*.wgsl`) and measured on \
          errplot's quick inputs (2^16 Fibonacci directions, every 24-bit depth code, 2^20 \
          reversed float depths) on {}. On (max error, SPIR-V count), with no more stored bits, {} of \

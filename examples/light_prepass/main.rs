@@ -81,6 +81,7 @@ fn parse() -> Result<Args, String> {
                 let v = value()?;
                 normal = match v.as_str() {
                     "xyz8" => Some(NormalEncoding::Xyz8),
+                    "xyz8-best" => Some(NormalEncoding::Xyz8Best),
                     "oct16" => Some(NormalEncoding::Oct16),
                     "oct24" => Some(NormalEncoding::Oct24),
                     "oct32" => Some(NormalEncoding::Oct32),

@@ -470,7 +470,8 @@ pub const BATCH: &[Entry] = &[
         substrate::decode_substrate_normal,
         bn::decode_substrate_normal,
         decode_substrate_normal_with
-    ),    entry!(
+    ),
+    entry!(
         Vec3,
         oct::encode_normal_oct20,
         bn::encode_normal_oct20,
@@ -499,6 +500,18 @@ pub const BATCH: &[Entry] = &[
         oct::decode_normal_oct20_unorm,
         bn::decode_normal_oct20_unorm,
         decode_normal_oct20_unorm_with
+    ),
+    entry!(
+        Vec3,
+        xyz8::encode_normal_xyz8_best,
+        bn::encode_normal_xyz8_best,
+        encode_normal_xyz8_best_with
+    ),
+    entry!(
+        Vec3,
+        xyz8::encode_normal_xyz8_best_unorm,
+        bn::encode_normal_xyz8_best_unorm,
+        encode_normal_xyz8_best_unorm_with
     ),
 ];
 

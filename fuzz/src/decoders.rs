@@ -319,7 +319,11 @@ pub const DECODERS: &[Entry] = &[
             let c = [i.f32(), i.f32(), i.f32(), i.f32()];
             let v = oct::decode_normal_oct20_unorm(c);
             assert_unit(v, format_args!("{c:?}"));
-            assert_eq!(v, oct::decode_normal_oct20(rgb10a2_code(c) & 0xf_ffff), "{c:?}");
+            assert_eq!(
+                v,
+                oct::decode_normal_oct20(rgb10a2_code(c) & 0xf_ffff),
+                "{c:?}"
+            );
         },
     },
 ];

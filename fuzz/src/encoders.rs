@@ -296,7 +296,8 @@ pub const ENCODERS: &[Entry] = &[
                 assert!(k.min_element() >= 1, "{name} {n:?}: code 0 written");
             }
         },
-    },    codec!(encoder; oct::encode_normal_oct20, 20),
+    },
+    codec!(encoder; oct::encode_normal_oct20, 20),
     codec!(encoder; oct::encode_normal_oct20_fast, 20),
     Entry {
         name: "normal::oct::encode_normal_oct20_unorm",
@@ -307,6 +308,26 @@ pub const ENCODERS: &[Entry] = &[
             assert_eq!(c, rgb10a2_channels(oct::encode_normal_oct20(n)), "{n:?}");
         },
     },
+    Entry {
+        name: "normal::xyz8::encode_normal_xyz8_best",
+        check: |i| {
+            let n = i.vec3();
+            check_encoder(n, xyz8::encode_normal_xyz8_best, 24, "encoder");
+            // Never farther than the rounding encoder's code (one of its candidates), up to
+            // the derived scoring slack (twice BEST_FIT_SINE_SLACK, in sine ≈ radians).
+            if let Some(s) = prepass::normal::sanitize(n) {
+                let u = s.to_array().map(f64::from);
+                let best = xyz8::exact::angle_to(u, xyz8::encode_normal_xyz8_best(n));
+                let round = xyz8::exact::angle_to(u, xyz8::encode_normal_xyz8(n));
+                let slack = 2.0 * f64::from(xyz8::BEST_FIT_SINE_SLACK) * 1.0001;
+                assert!(
+                    best <= round + slack,
+                    "{n:?}: best fit {best:e} rad, rounding {round:e}"
+                );
+            }
+        },
+    },
+    codec!(unorm_form; xyz8::encode_normal_xyz8_best_unorm, xyz8::encode_normal_xyz8_best),
 ];
 
 /// A fixed-size encoder ([`check_encoder`]) on a direction read from the input.

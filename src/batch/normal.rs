@@ -1,4 +1,4 @@
-//! Batch twins of the normal encodings ([`crate::normal`]): xyz8, xyz10, snorm8, xy FP16, octahedral 16/20/24/32 (24 also in Unity's byte order), Unreal Substrate's centred 11:11 normal
+//! Batch twins of the normal encodings ([`crate::normal`]): xyz8 (and its best-fit encoder), xyz10, snorm8, xy FP16, octahedral 16/20/24/32 (24 also in Unity's byte order), Unreal Substrate's centred 11:11 normal
 //! (precise and rounding encoders, and the generic `bits` forms), hemi-octahedral 24, and every
 //! `_unorm` render-target form. Names, the slice contract and the vectorisation: [`crate::batch`].
 //!
@@ -629,6 +629,24 @@ batch_fn!(
     (), Vec3 => [f32; 4],
     scalar: xyz8::encode_normal_xyz8_unorm,
     lane: xyz8_encode_unorm,
+);
+batch_fn!(
+    /// Batch [`xyz8::encode_normal_xyz8_best`]: the scalar twin per element (its search over
+    /// 128 planes, most of them skipped by a data-dependent bound, does not vectorise); split
+    /// across rayon's pool for long batches, which is what makes it worth calling for baking.
+    encode_normal_xyz8_best, encode_normal_xyz8_best_with, "normal::encode_normal_xyz8_best",
+    (), Vec3 => u32,
+    scalar: xyz8::encode_normal_xyz8_best,
+    lane: xyz8::encode_normal_xyz8_best,
+);
+batch_fn!(
+    /// Batch [`xyz8::encode_normal_xyz8_best_unorm`] (the scalar twin per element, as
+    /// [`encode_normal_xyz8_best`]).
+    encode_normal_xyz8_best_unorm, encode_normal_xyz8_best_unorm_with,
+    "normal::encode_normal_xyz8_best_unorm",
+    (), Vec3 => [f32; 4],
+    scalar: xyz8::encode_normal_xyz8_best_unorm,
+    lane: xyz8::encode_normal_xyz8_best_unorm,
 );
 batch_fn!(
     /// Batch [`xyz8::decode_normal_xyz8_unorm`].

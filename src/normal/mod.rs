@@ -4,7 +4,7 @@
 //!
 //! | encoding | bits | WGSL | twin |
 //! |---|---|---|---|
-//! | x, y, z as unorm8 (Resistance 2; Godot's best-fit decoder) | 24 (+8 free) | `wgsl/normal_xyz8.wgsl` | [`xyz8`] |
+//! | x, y, z as unorm8 (Resistance 2), rounding or best-fit encoder (Godot 4's format) | 24 (+8 free) | `wgsl/normal_xyz8.wgsl` | [`xyz8`] |
 //! | x, y, z as unorm10 in RGB10A2 (Unreal 5 GBufferA, Bevy's normal prepass) | 30 (+2 free) | `wgsl/normal_xyz10.wgsl` | [`xyz10`] |
 //! | x, y, z as snorm8 (Unity URP's default normal target) | 24 (+8 free) | `wgsl/normal_snorm8.wgsl` | [`snorm8`] |
 //! | view-space x, y as FP16 in RGBA8, z rebuilt (Killzone 2) | 32 | `wgsl/normal_xy_fp16.wgsl` | [`xy_fp16`] |
@@ -16,7 +16,8 @@
 //! (checked on lavapipe over every tested input by `tests/normal_*.rs`), so a normal baked on the
 //! CPU decodes exactly like one a shader wrote there. On any conforming adapter — which may round
 //! `+ − ×` either way, err 2.5 ULP on `/` and 2 on `inverseSqrt`, fuse and reassociate — the
-//! WGSL encoder's code is within one code step of the twin's (per lane, two codes of one exact
+//! WGSL encoder's code (but the best fit's, whose promise is an angle:
+//! [`xyz8::BEST_FIT_SINE_SLACK_CONFORMING`]) is within one code step of the twin's (per lane, two codes of one exact
 //! direction counting as equal; for xy FP16, an f16 lane within one step of the subnormals that
 //! the adapter flushes to ±0 counts as one step, and `pack2x16float` may pick either
 //! neighbouring f16), every decode is finite and unit within

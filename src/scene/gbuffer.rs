@@ -162,6 +162,7 @@ impl Scene {
             self.normal.encoding,
             Some(
                 NormalEncoding::Xyz8
+                    | NormalEncoding::Xyz8Best
                     | NormalEncoding::Oct24
                     | NormalEncoding::Hemioct24
                     | NormalEncoding::Oct24Unity
@@ -179,6 +180,10 @@ impl Scene {
                 NormalEncoding::Xyz8 => {
                     (TargetFormat::Rgba8Unorm, format!("rgb: normal xyz8, {a}"))
                 }
+                NormalEncoding::Xyz8Best => (
+                    TargetFormat::Rgba8Unorm,
+                    format!("rgb: normal xyz8 (best fit), {a}"),
+                ),
                 NormalEncoding::XyFp16 => (
                     TargetFormat::Rgba8Unorm,
                     "rg: view-space x as f16, ba: y as f16".to_string(),

@@ -107,11 +107,14 @@ pub enum NormalEncoding {
     /// perceptual roughness byte ([`RoughnessChoice::Ggx8`]'s, or 0 when none is stored) and two
     /// flag bits (written 0).
     Substrate,
+    /// xyz8's format written by the best-fit encoder (Godot 4's normal_roughness: the nearest of
+    /// the 2^24 codes), read by xyz8's decoder; alpha free.
+    Xyz8Best,
 }
 
 impl NormalEncoding {
     /// Every encoding.
-    pub const ALL: [NormalEncoding; 11] = [
+    pub const ALL: [NormalEncoding; 12] = [
         Self::Xyz8,
         Self::XyFp16,
         Self::Oct16,
@@ -123,11 +126,15 @@ impl NormalEncoding {
         Self::Snorm8,
         Self::Oct24Unity,
         Self::Substrate,
+        Self::Xyz8Best,
     ];
 
     /// Whether a cheaper rounding encoder (`_fast`) exists beside the precise one.
     pub fn has_fast_encoder(self) -> bool {
-        !matches!(self, Self::Xyz8 | Self::XyFp16 | Self::Xyz10 | Self::Snorm8)
+        !matches!(
+            self,
+            Self::Xyz8 | Self::XyFp16 | Self::Xyz10 | Self::Snorm8 | Self::Xyz8Best
+        )
     }
 
     /// Whether encoders for vouched input (`_vouched`, `_fast_vouched`) exist beside the robust

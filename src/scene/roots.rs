@@ -18,6 +18,13 @@ fn normal_roots(e: NormalEncoding, fast: bool, vouched: bool) -> [&'static str; 
             "encode_normal_xyz8_unorm",
             "decode_normal_xyz8_unorm",
         ),
+        NormalEncoding::Xyz8Best => (
+            "encode_normal_xyz8_best",
+            "encode_normal_xyz8_best",
+            "decode_normal_xyz8",
+            "encode_normal_xyz8_best_unorm",
+            "decode_normal_xyz8_unorm",
+        ),
         NormalEncoding::XyFp16 => (
             "encode_normal_xy_fp16",
             "encode_normal_xy_fp16",

@@ -345,7 +345,12 @@ pub fn normal_figures_with(
                 .map_err(|e| HarnessError::Shader(e.to_string()))
         };
         row.spirv = (cost(c.encode)?, cost(c.decode)?);
-        let base = c.name.trim_end_matches(" fast").replace(' ', "");
+        // "xyz8 best-fit" is the scene's Xyz8Best.
+        let base = c
+            .name
+            .trim_end_matches(" fast")
+            .replace(" best-fit", "best")
+            .replace(' ', "");
         if let Some(encoding) = NormalEncoding::ALL
             .into_iter()
             .find(|e| format!("{e:?}").to_lowercase() == base)

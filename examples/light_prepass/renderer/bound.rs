@@ -88,7 +88,8 @@ pub fn normal_angle_at(e: NormalEncoding, z: f64) -> f64 {
             .asin()
     };
     let a = match e {
-        NormalEncoding::Xyz8 => (3f64.sqrt() / 255.0).asin(),
+        // The best fit's code is never farther than the rounding one's (a candidate).
+        NormalEncoding::Xyz8 | NormalEncoding::Xyz8Best => (3f64.sqrt() / 255.0).asin(),
         NormalEncoding::Xyz10 => (3f64.sqrt() / 1023.0).asin(),
         NormalEncoding::Snorm8 => (3f64.sqrt() / 254.0).asin(),
         NormalEncoding::Oct16 => oct(8),
@@ -429,7 +430,7 @@ pub fn gbuffer_error(
         let c = b.map(|x| f32::from(x) / 255.0);
         let p = u32::from_le_bytes(b);
         let n = match normal {
-            NormalEncoding::Xyz8 => xyz8::decode_normal_xyz8_unorm(c),
+            NormalEncoding::Xyz8 | NormalEncoding::Xyz8Best => xyz8::decode_normal_xyz8_unorm(c),
             NormalEncoding::XyFp16 => xy_fp16::decode_normal_xy_fp16_unorm(c),
             NormalEncoding::Hemioct24 => hemioct::decode_normal_hemioct24_unorm(c),
             NormalEncoding::Oct16 => oct::decode_normal_oct16(p),

@@ -208,6 +208,7 @@ impl Config {
 pub fn encoding_name(e: NormalEncoding) -> &'static str {
     match e {
         NormalEncoding::Xyz8 => "xyz8",
+        NormalEncoding::Xyz8Best => "xyz8 best-fit",
         NormalEncoding::XyFp16 => "xy fp16",
         NormalEncoding::Oct16 => "oct16",
         NormalEncoding::Oct24 => "oct24",

@@ -11,6 +11,7 @@ pub fn alpha_free(e: NormalEncoding) -> bool {
     matches!(
         e,
         NormalEncoding::Xyz8
+            | NormalEncoding::Xyz8Best
             | NormalEncoding::Oct24
             | NormalEncoding::Hemioct24
             | NormalEncoding::Oct24Unity
@@ -21,6 +22,7 @@ pub fn alpha_free(e: NormalEncoding) -> bool {
 pub fn stem(e: NormalEncoding) -> &'static str {
     match e {
         NormalEncoding::Xyz8 => "xyz8",
+        NormalEncoding::Xyz8Best => "xyz8_best",
         NormalEncoding::Xyz10 => "xyz10",
         NormalEncoding::Oct20 => "oct20",
         NormalEncoding::Snorm8 => "snorm8",
@@ -42,6 +44,15 @@ fn rt_stem(e: NormalEncoding) -> String {
         "unorm"
     };
     format!("{}_{format}", stem(e))
+}
+
+/// [`rt_stem`] of the decoder: the best fit is read by xyz8's decoder.
+fn rt_dec_stem(e: NormalEncoding) -> String {
+    if e == NormalEncoding::Xyz8Best {
+        rt_stem(NormalEncoding::Xyz8)
+    } else {
+        rt_stem(e)
+    }
 }
 
 const COMMON: &str = r#"
@@ -297,9 +308,10 @@ pub fn module(cfg: &Config, crate_wgsl: &str) -> String {
                 }
             }
             let arg = if oct16 { "t.xy" } else { "t" };
+            let dst = rt_dec_stem(normal);
             read_normal.push_str(&format!(
                 "    let t = textureLoad(g_normal, px, {s_arg});\n    \
-                 let n = decode_normal_{st}({arg});\n"
+                 let n = decode_normal_{dst}({arg});\n"
             ));
             if free {
                 read_normal.push_str("    let code = u32(round(clamp(t.a, 0.0, 1.0) * 255.0));\n");

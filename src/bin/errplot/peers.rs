@@ -24,6 +24,8 @@ pub const UNREAL: &str = include_str!("../../../tests/baselines/peer_unreal.wgsl
 pub const UNITY: &str = include_str!("../../../tests/baselines/peer_unity.wgsl");
 /// Unity URP's default normal target (xyz in RGBA8 snorm).
 pub const URP: &str = include_str!("../../../tests/baselines/peer_urp.wgsl");
+/// Godot 4's best-fit normal (lookup-table scale, RGBA8), its lookup texel computed inline.
+pub const GODOT: &str = include_str!("../../../tests/baselines/peer_godot.wgsl");
 /// LYGIA's `linearizeDepth` and `depth2viewZ` (OpenGL conventions, finite far).
 pub const LYGIA: &str = include_str!("../../../tests/baselines/peer_lygia.wgsl");
 
@@ -45,7 +47,7 @@ pub struct NormalPeer {
 }
 
 /// The normal-codec peers.
-pub const NORMAL_PEERS: [NormalPeer; 11] = [
+pub const NORMAL_PEERS: [NormalPeer; 12] = [
     NormalPeer {
         name: "bevy gbuffer oct24 (×4095)",
         bits: 24,
@@ -122,6 +124,13 @@ pub const NORMAL_PEERS: [NormalPeer; 11] = [
         source: UNREAL,
         encode: "peer_unreal_substrate_normal_encode",
         decode: "peer_unreal_substrate_normal_decode",
+    },
+    NormalPeer {
+        name: "godot best-fit xyz8 (lookup texel inline)",
+        bits: 24,
+        source: GODOT,
+        encode: "peer_godot_normal_encode",
+        decode: "peer_godot_normal_decode",
     },
 ];
 

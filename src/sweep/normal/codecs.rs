@@ -157,12 +157,13 @@ macro_rules! oct_codec {
 
 /// Every encoding: xyz8, xy FP16, octahedral 16/20/24/32 precise and fast, hemi-octahedral 24
 /// precise and fast (errors of the hemisphere-only codes are measured over `z ≥ 0`), then the
-/// engines' forms: xyz10 (RGB10A2), snorm8 xyz and Unreal Substrate's 11:11 centred octahedron
-/// (its word's normal bits; roughness and flags zero), precise and fast.
-pub const CODECS: [Codec; 16] = [
+/// engines' forms: xyz10 (RGB10A2), snorm8 xyz, Unreal Substrate's 11:11 centred octahedron
+/// (its word's normal bits; roughness and flags zero), precise and fast, and xyz8's best-fit
+/// encoder (Godot 4's).
+pub const CODECS: [Codec; 17] = [
     Codec {
         name: "xyz8",
-        stored_by: "Resistance 2; Godot 4 (its best-fit encoder, this decoder)",
+        stored_by: "Resistance 2; Godot 4 (this decoder; its encoder is `xyz8 best-fit`)",
         bits: 24,
         lanes: &UNORM8X3,
         hemisphere: false,
@@ -382,6 +383,21 @@ pub const CODECS: [Codec; 16] = [
         twin_decode: substrate::decode_substrate_normal,
         reference_encode: substrate::exact::encode_round,
         reference_decode: substrate::exact::decode,
+        target: None,
+    },
+    Codec {
+        name: "xyz8 best-fit",
+        stored_by: "Godot 4 (Forward+ normal_roughness, best-fit normals)",
+        bits: 24,
+        lanes: &UNORM8X3,
+        hemisphere: false,
+        source: NORMAL_XYZ8,
+        encode: "encode_normal_xyz8_best",
+        decode: "decode_normal_xyz8",
+        twin_encode: xyz8::encode_normal_xyz8_best,
+        twin_decode: xyz8::decode_normal_xyz8,
+        reference_encode: xyz8::exact::encode_best,
+        reference_decode: xyz8::exact::decode,
         target: None,
     },
 ];
