@@ -1846,8 +1846,8 @@ fn precise_choice_searched_on_the_decision_margin() {
         .collect();
     assert_eq!(
         precise.len(),
-        4,
-        "oct16, oct24, oct32 and hemioct24 precise"
+        5,
+        "oct16, oct20, oct24, oct32 and hemioct24 precise"
     );
     let jobs: Vec<_> = precise
         .iter()

@@ -108,11 +108,17 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
     ),
     (
         "encode_normal_xyz8_best",
-        &[BEVY_OCT24, MESHOPT_K12, SURVEY_OCT24, UNITY_OCT24],
+        &[
+            BEVY_OCT24,
+            MESHOPT_K12,
+            SURVEY_OCT24,
+            UNITY_OCT24,
+            UNREAL_SUBSTRATE,
+        ],
         "kept as Godot 4's format (best-fit normals in RGB8, read by `decode_normal_xyz8` and \
          Godot's reader): its code is the nearest of the format's 2^24 (tests/normal_xyz8.rs, \
          against an exhaustive search) and no farther than Godot's own encoder at any direction \
-         measured; an octahedral code is more accurate in 24 bits but is another format, which \
+         measured; an octahedral code is more accurate in 24 bits (or Substrate's 22) but is another format, which \
          filtering and blending break. Its SPIR-V count understates its run time: a loop over \
          128 planes",
     ),
