@@ -64,8 +64,9 @@ pub fn continuous(s: Vec3, bits: u32) -> Vec2 {
 
 /// The octahedral projection of `n` with `l1 = |x| + |y| + |z|` (or more, for the vouched
 /// encoders' zero vector): `n.xy / l1`, folded when `n.z < 0` (the sign of ±0 counts as +).
-/// Shared by [`continuous`] and the vouched encoders (the WGSL's `oct_project_vouched`).
-fn project(n: Vec3, l1: f32) -> Vec2 {
+/// Shared by [`continuous`], the vouched encoders (the WGSL's `oct_project_vouched`) and
+/// Substrate's centred grid ([`crate::normal::substrate::continuous`]).
+pub(crate) fn project(n: Vec3, l1: f32) -> Vec2 {
     let p = Vec2::new(n.x / l1, n.y / l1);
     if n.z < 0.0 {
         let sgn = Vec2::new(
@@ -429,17 +430,24 @@ pub mod exact {
         super::super::exact::unit([d.x, d.y, d.z].map(f64::from)).expect("|D|_1 = M > 0")
     }
 
-    /// Continuous code coordinates of a direction in f64.
-    pub fn continuous(n: [f64; 3], bits: u32) -> [f64; 2] {
+    /// The octahedral projection of a direction in f64: `n.xy / |n|₁`, folded when `n.z < 0`
+    /// (the sign of 0 counting as +). Shared with Substrate's centred grid.
+    pub fn project(n: [f64; 3]) -> [f64; 2] {
         let l1 = n[0].abs() + n[1].abs() + n[2].abs();
-        let mut p = [n[0] / l1, n[1] / l1];
+        let p = [n[0] / l1, n[1] / l1];
         if n[2] < 0.0 {
             let sgn = |x: f64| if x >= 0.0 { 1.0 } else { -1.0 };
-            p = [
+            return [
                 (1.0 - p[1].abs()) * sgn(p[0]),
                 (1.0 - p[0].abs()) * sgn(p[1]),
             ];
         }
+        p
+    }
+
+    /// Continuous code coordinates of a direction in f64.
+    pub fn continuous(n: [f64; 3], bits: u32) -> [f64; 2] {
+        let p = project(n);
         let m = f64::from(max_code(bits));
         p.map(|x| ((x * 0.5 + 0.5) * m).clamp(0.0, m))
     }

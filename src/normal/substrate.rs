@@ -80,15 +80,7 @@ pub fn lattice(k: UVec2) -> IVec3 {
 /// `[−1, CONTINUOUS_TOP]`; the code is `q + 1024`. As the WGSL's `substrate_continuous`.
 pub fn continuous(s: Vec3) -> Vec2 {
     let a = s.abs();
-    let l1 = (a.x + a.y) + a.z;
-    let mut p = Vec2::new(s.x / l1, s.y / l1);
-    if s.z < 0.0 {
-        let sgn = Vec2::new(
-            if p.x >= 0.0 { 1.0 } else { -1.0 },
-            if p.y >= 0.0 { 1.0 } else { -1.0 },
-        );
-        p = (Vec2::ONE - Vec2::new(p.y.abs(), p.x.abs())) * sgn;
-    }
+    let p = super::oct::project(s, (a.x + a.y) + a.z);
     p.clamp(Vec2::splat(-1.0), Vec2::splat(CONTINUOUS_TOP)) * 1023.0
 }
 
@@ -194,16 +186,7 @@ pub mod exact {
     /// Continuous centred coordinates `1023·p` of a direction in f64 (`p` its folded projection,
     /// the sign of 0 counting as +).
     pub fn continuous(n: [f64; 3]) -> [f64; 2] {
-        let l1 = n[0].abs() + n[1].abs() + n[2].abs();
-        let mut p = [n[0] / l1, n[1] / l1];
-        if n[2] < 0.0 {
-            let sgn = |x: f64| if x >= 0.0 { 1.0 } else { -1.0 };
-            p = [
-                (1.0 - p[1].abs()) * sgn(p[0]),
-                (1.0 - p[0].abs()) * sgn(p[1]),
-            ];
-        }
-        p.map(|x| x.clamp(-1.0, 1.0) * 1023.0)
+        crate::normal::oct::exact::project(n).map(|x| x.clamp(-1.0, 1.0) * 1023.0)
     }
 
     /// The four neighbour codes `floor(q) + {0,1}² + 1024` of the f64 coordinates, as words.
