@@ -61,9 +61,13 @@ fn aggregate_light_scale(m: f32) -> f32 {
 }
 
 fn aggregate_light_unit(v: vec3<f32>, smallest: u32) -> vec3<f32> {
+    // The bits are judged before abs and max see a NaN or an infinity.
+    if (!aggregate_light_finite3(v)) {
+        return vec3<f32>(0.0);
+    }
     let a = abs(v);
     let m = max(a.x, max(a.y, a.z));
-    if (!aggregate_light_finite3(v) || bitcast<u32>(m) < smallest) {
+    if (bitcast<u32>(m) < smallest) {
         return vec3<f32>(0.0);
     }
     let s = v * aggregate_light_scale(m);
@@ -103,11 +107,14 @@ fn aggregate_light_direction(acc: vec4<f32>) -> vec3<f32> {
 // the directions cancel).
 fn aggregate_light_position(acc: vec4<f32>, vertex: vec3<f32>) -> vec3<f32> {
     let v = aggregate_light_sane3(vertex, AGGREGATE_LIGHT_LIMIT);
+    // The bits are judged before abs, max and the comparisons see a NaN or an infinity.
+    if (!aggregate_light_finite3(acc.xyz) || !((bitcast<u32>(acc.w) & 0x7fffffffu) < 0x7f800000u)) {
+        return v;
+    }
     let a = abs(acc.xyz);
     let m = max(a.x, max(a.y, a.z));
     // m/W below 2^101, from the exponents, so the quotient and the sum stay finite.
-    if (!aggregate_light_finite3(acc.xyz) || !((bitcast<u32>(acc.w) & 0x7fffffffu) < 0x7f800000u)
-        || bitcast<u32>(m) < 0x00800000u || !(acc.w >= 1.1754944e-38)
+    if (bitcast<u32>(m) < 0x00800000u || !(acc.w >= 1.1754944e-38)
         || i32(bitcast<u32>(m)) - i32(bitcast<u32>(acc.w)) >= 838860800) {
         return v;
     }

@@ -9,12 +9,13 @@
 // to its byte before the bytes are weighted: unrounded, the 65536 weight on r magnifies the
 // channel's conversion error (3 ULP in WGSL's unpack4x8unorm, more on some texture units) into
 // wrong codes. Exact while every channel is within ±0.49/255 of byte/255.
-// Bad input: channels are clamped to [0, 1]; NaN (found from its bits, which finite-math
-// optimisation cannot remove) counts as 0.
+// Bad input: each channel is taken to [0, 1] from its bits, which finite-math optimisation cannot
+// remove: NaN, negative values and -0 count as 0, values from 1 up to +Inf as 1, so no float
+// operation sees a non-finite channel.
 fn depth24_from_rgb8(rgb: vec3<f32>) -> u32 {
-    let is_nan = (bitcast<vec3<u32>>(rgb) & vec3<u32>(0x7fffffffu)) > vec3<u32>(0x7f800000u);
-    let c = clamp(select(rgb, vec3<f32>(0.0), is_nan), vec3<f32>(0.0), vec3<f32>(1.0));
-    let b = vec3<u32>(round(c * 255.0));
+    let bits = bitcast<vec3<u32>>(rgb);
+    let x = select(select(bits, vec3<u32>(0x3f800000u), bits >= vec3<u32>(0x3f800000u)), vec3<u32>(0u), bits > vec3<u32>(0x7f800000u));
+    let b = vec3<u32>(round(bitcast<vec3<f32>>(x) * 255.0));
     return (b.x << 16u) | (b.y << 8u) | b.z;
 }
 

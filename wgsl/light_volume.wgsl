@@ -107,11 +107,15 @@ fn light_volume_cone_needs_depth_fail(apex: vec3<f32>, axis: vec3<f32>, range_ta
                                       near_corner_distance: f32) -> u32 {
     let h = range_tan.x;
     let k = range_tan.y;
+    // The bits first, in a test of their own: WGSL's || need not short-circuit once compiled, and
+    // no comparison, abs or max may see a NaN or an infinity.
+    if (!light_volume_finite3(apex) || !light_volume_finite3(axis) || !light_volume_finite(h)
+        || !light_volume_finite(k) || !light_volume_finite(near_corner_distance)) {
+        return 1u;
+    }
     let aa = abs(axis);
     let am = max(aa.x, max(aa.y, aa.z));
-    if (!light_volume_finite3(apex) || !light_volume_finite3(axis) || !light_volume_finite(h)
-        || !light_volume_finite(k) || !light_volume_finite(near_corner_distance) || h < 0.0
-        || k < 0.0 || near_corner_distance < 0.0 || bitcast<u32>(am) < 0x00800000u) {
+    if (h < 0.0 || k < 0.0 || near_corner_distance < 0.0 || bitcast<u32>(am) < 0x00800000u) {
         return 1u;
     }
     // One power of two scales every length so the largest lies in [1, 4): squares then neither
@@ -182,11 +186,19 @@ fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32
     let vz_bits = bitcast<u32>(vz);
     // far/near at most 2^126 (as Projection::new; exact from the bits), so f/vz stays finite; near
     // normal, so no divisor below is subnormal once tiny planes are scaled (next).
-    if (!light_volume_finite(near) || !(near >= 1.1754944e-38)
-        || !(infinite || (light_volume_finite(far) && far > near
-            && bitcast<u32>(far) - bitcast<u32>(near) <= 0x3f000000u))
-        || (vz_bits & 0x7fffffffu) > 0x7f800000u || vz_bits == 0x7f800000u) {
+    // Bits first; a comparison runs only on values they found finite (an infinite far is
+    // recognised from its bits and never compared).
+    if (!light_volume_finite(near) || (vz_bits & 0x7fffffffu) > 0x7f800000u
+        || vz_bits == 0x7f800000u || !(infinite || light_volume_finite(far))) {
         return far_end;
+    }
+    if (!(near >= 1.1754944e-38)) {
+        return far_end;
+    }
+    if (!infinite) {
+        if (!(far > near && bitcast<u32>(far) - bitcast<u32>(near) <= 0x3f000000u)) {
+            return far_end;
+        }
     }
     var v = near; // -Inf: the near plane
     if (vz_bits != 0xff800000u) {
@@ -199,10 +211,12 @@ fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32
     // scaled by 2^64 first (exact), so f − n is never subnormal.
     var n = near;
     var f = far;
-    if (!infinite && far < 8.6736174e-19) {
-        n = near * 1.8446744e19;
-        f = far * 1.8446744e19;
-        v = v * 1.8446744e19;
+    if (!infinite) {
+        if (far < 8.6736174e-19) {
+            n = near * 1.8446744e19;
+            f = far * 1.8446744e19;
+            v = v * 1.8446744e19;
+        }
     }
     if (reversed == 0u) {
         if (infinite) {
@@ -224,25 +238,38 @@ fn light_volume_window_depth(vz: f32, near: f32, far: f32, reversed: u32) -> f32
 fn light_volume_sphere_depth_bounds(center_z: f32, radius: f32, near: f32, far: f32,
                                     reversed: u32) -> vec2<f32> {
     let infinite = bitcast<u32>(far) == 0x7f800000u;
+    // Bits first; a comparison runs only on values they found finite (an infinite far is
+    // recognised from its bits and never compared).
     if (!light_volume_finite(center_z) || !light_volume_finite(radius) || !light_volume_finite(near)
-        || !(light_volume_finite(far) || infinite) || radius < 0.0 || !(near > 0.0)
-        || !(far > near)) {
+        || !(light_volume_finite(far) || infinite)) {
         return vec2<f32>(0.0, 1.0);
     }
+    if (radius < 0.0 || !(near > 0.0)) {
+        return vec2<f32>(0.0, 1.0);
+    }
+    if (!infinite) {
+        if (!(far > near)) {
+            return vec2<f32>(0.0, 1.0);
+        }
+    }
     let lo = max(center_z - radius, near);
-    // c + r may overflow (decided without computing it): it then lies beyond any finite far.
+    // c + r may overflow (decided without computing it): it then lies beyond any finite far, and
+    // at infinity for an infinite one.
     let sum_finite = !light_volume_sum_overflows(center_z, radius);
-    var hi = far;
-    if (sum_finite) {
-        hi = center_z + radius;
-    }
-    let sum = hi;
-    if (!infinite && (!sum_finite || sum > far)) {
-        hi = far;
-    }
     let hi_at_infinity = infinite && !sum_finite;
-    if (!hi_at_infinity && lo > hi) {
-        return vec2<f32>(1.0, 0.0);
+    var hi = 0.0;
+    if (!hi_at_infinity) {
+        if (sum_finite) {
+            hi = center_z + radius;
+        }
+        if (!infinite) {
+            if (!sum_finite || hi > far) {
+                hi = far;
+            }
+        }
+        if (lo > hi) {
+            return vec2<f32>(1.0, 0.0);
+        }
     }
     var k = 1.0;
     if (!infinite) {

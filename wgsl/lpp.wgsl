@@ -43,9 +43,13 @@ fn lpp_scale(m: f32) -> f32 {
 }
 
 fn lpp_direction(v: vec3<f32>) -> vec3<f32> {
+    // The bits are judged before abs and max see a NaN or an infinity.
+    if (!lpp_finite3(v)) {
+        return vec3<f32>(0.0);
+    }
     let a = abs(v);
     let m = max(a.x, max(a.y, a.z));
-    if (!lpp_finite3(v) || bitcast<u32>(m) < 0x00800000u) {
+    if (bitcast<u32>(m) < 0x00800000u) {
         return vec3<f32>(0.0);
     }
     let s = v * lpp_scale(m);
@@ -72,17 +76,20 @@ fn lpp_luminance(rgb: vec3<f32>) -> f32 {
 // Bad input: x or y NaN (from their bits) → 0, no highlight; y <= 0 acts as 0 (x^0 = 1 for
 // x > 0); y = +Inf gives 0 for x < 1.
 fn lpp_pow_cosine(x: f32, y: f32) -> f32 {
-    let nan = (bitcast<u32>(x) & 0x7fffffffu) > 0x7f800000u
-        || (bitcast<u32>(y) & 0x7fffffffu) > 0x7f800000u;
-    if (nan || x <= 0.0) {
+    // Every test before the exponent reads bits, so no comparison sees a NaN or an infinity:
+    // a set sign bit or +0 is x <= 0; a positive x's bits from 1.0 up (+Inf included) are x >= 1.
+    let xb = bitcast<u32>(x);
+    let yb = bitcast<u32>(y);
+    if ((xb & 0x7fffffffu) > 0x7f800000u || (yb & 0x7fffffffu) > 0x7f800000u
+        || xb >= 0x80000000u || xb == 0u) {
         return 0.0;
     }
-    if (x >= 1.0 || y <= 0.0) {
+    if (xb >= 0x3f800000u || yb >= 0x80000000u || yb == 0u) {
         return 1.0;
     }
     // No log2 of a subnormal and no product with an infinity: x below 2^-126 or y = +inf give
     // x^y = 0 (x < 1 here); y is capped at 2^100, where t is far below -126 already.
-    if (bitcast<u32>(x) < 0x00800000u || bitcast<u32>(y) == 0x7f800000u) {
+    if (xb < 0x00800000u || yb == 0x7f800000u) {
         return 0.0;
     }
     let t = min(y, 1.2676506e30) * log2(x);
@@ -108,6 +115,23 @@ fn lpp_point_attenuation(distance: f32, radius: f32) -> f32 {
     let x = select(clamp(min(max(d, 0.0), r) / r, 0.0, 1.0), 1.0, d >= r);
     let w = 1.0 - x * x;
     return w * w;
+}
+
+// lpp_point_attenuation(|to_light|, radius) with both lengths scaled first by one power of two
+// (exact), which takes the larger of max|to_light_i| and radius into [1, 4): |to_light|² then
+// neither overflows (an unscaled length() of a vector beyond 2^64 would) nor underflows, and the
+// ratio d/r is unchanged. Non-finite input, or a radius below 2^-126, gives 0 (read from bits
+// before any float operation; a non-finite to_light gives zero light anyway).
+fn lpp_point_falloff(to_light: vec3<f32>, radius: f32) -> f32 {
+    if (!lpp_finite3(to_light) || !lpp_finite(radius)) {
+        return 0.0;
+    }
+    if (!(radius >= 1.1754944e-38)) {
+        return 0.0;
+    }
+    let a = abs(to_light);
+    let s = lpp_scale(max(max(a.x, a.y), max(a.z, radius)));
+    return lpp_point_attenuation(length(to_light * s), radius * s);
 }
 
 // Spot cone factor: 0 outside cos_outer, 1 inside cos_inner, linear in the cosine between.
@@ -177,7 +201,7 @@ fn lpp_phong_light(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>,
 // P of a point light (colour_radius = colour, radius) with Blinn-Phong specular.
 fn lpp_point_light(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>,
                    colour_radius: vec4<f32>, power: f32) -> vec4<f32> {
-    let att = lpp_point_attenuation(length(to_light), colour_radius.w);
+    let att = lpp_point_falloff(to_light, colour_radius.w);
     return lpp_blinn_phong_light(normal, to_eye, to_light, colour_radius.xyz, att, power);
 }
 
@@ -187,8 +211,7 @@ fn lpp_spot_light(normal: vec3<f32>, to_eye: vec3<f32>, to_light: vec3<f32>,
                   colour_radius: vec4<f32>, axis_cos_outer: vec4<f32>, cos_inner: f32,
                   power: f32) -> vec4<f32> {
     let cos_angle = dot(lpp_direction(axis_cos_outer.xyz), -lpp_direction(to_light));
-    let att = lpp_point_attenuation(length(to_light), colour_radius.w)
-        * lpp_spot_attenuation(cos_angle, axis_cos_outer.w, cos_inner);
+    let att = lpp_point_falloff(to_light, colour_radius.w) * lpp_spot_attenuation(cos_angle, axis_cos_outer.w, cos_inner);
     return lpp_blinn_phong_light(normal, to_eye, to_light, colour_radius.xyz, att, power);
 }
 
@@ -241,8 +264,10 @@ fn lpp_combine_two_buffers(albedo: vec3<f32>, gloss: vec3<f32>, diffuse: vec3<f3
         + lpp_clamp_colour(gloss) * lpp_clamp_colour(specular);
 }
 
-// Clamp to [0, 65504], NaN (from its bits) to 0.
+// Clamp to [0, 65504]; NaN and -Inf give 0, +Inf 65504, judged from the bits before the clamp.
 fn lpp_clamp_colour(c: vec3<f32>) -> vec3<f32> {
-    let nan = (bitcast<vec3<u32>>(c) & vec3<u32>(0x7fffffffu)) > vec3<u32>(0x7f800000u);
-    return clamp(select(c, vec3<f32>(0.0), nan), vec3<f32>(0.0), vec3<f32>(LPP_COLOUR_MAX));
+    let bits = bitcast<vec3<u32>>(c);
+    let edge = select(vec3<f32>(0.0), vec3<f32>(LPP_COLOUR_MAX), bits == vec3<u32>(0x7f800000u));
+    let safe = select(c, edge, (bits & vec3<u32>(0x7fffffffu)) >= vec3<u32>(0x7f800000u));
+    return clamp(safe, vec3<f32>(0.0), vec3<f32>(LPP_COLOUR_MAX));
 }

@@ -112,14 +112,15 @@ fn decode_normal_hemioct24(p: u32) -> vec3<f32> {
 }
 
 // Render-target form: rgba8unorm channels (alpha 0, free for the material); the decode rounds
-// bytes back (NaN -> 0, clamped), so unpack4x8unorm's 3-ULP error cannot change the code.
+// bytes back (each channel taken to [0, 1] from its bits: NaN -> 0, +Inf -> 1), so unpack4x8unorm's 3-ULP error cannot change the code.
 fn encode_normal_hemioct24_unorm(n: vec3<f32>) -> vec4<f32> {
     return unpack4x8unorm(encode_normal_hemioct24(n));
 }
 
 // The unit vector from sampled rgba8unorm channels (bytes rounded back, then decoded).
 fn decode_normal_hemioct24_unorm(c: vec4<f32>) -> vec3<f32> {
-    let is_nan = (bitcast<vec4<u32>>(c) & vec4<u32>(0x7fffffffu)) > vec4<u32>(0x7f800000u);
-    let b = vec4<u32>(round(clamp(select(c, vec4<f32>(0.0), is_nan), vec4<f32>(0.0), vec4<f32>(1.0)) * 255.0));
+    let bits = bitcast<vec4<u32>>(c);
+    let x = select(select(bits, vec4<u32>(0x3f800000u), bits >= vec4<u32>(0x3f800000u)), vec4<u32>(0u), bits > vec4<u32>(0x7f800000u));
+    let b = vec4<u32>(round(bitcast<vec4<f32>>(x) * 255.0));
     return decode_normal_hemioct24(b.x | (b.y << 8u) | (b.z << 16u) | (b.w << 24u));
 }

@@ -298,10 +298,13 @@ fn oct_decode(p: u32, bits: u32) -> vec3<f32> {
     return normalize(oct_lattice(vec2<f32>(uv), mf, vec2<f32>(mf)));
 }
 
-// Byte k of the u32 from a unorm8 channel: round(255 c) after clamping; NaN counts as 0.
+// Byte k of the u32 from a unorm8 channel: round(255 c), c taken to [0, 1] from its bits (NaN,
+// negative values and -0 count as 0, values from 1 up to +Inf as 1: no float operation sees a
+// non-finite channel).
 fn oct_unorm_bytes(c: vec4<f32>) -> u32 {
-    let is_nan = (bitcast<vec4<u32>>(c) & vec4<u32>(0x7fffffffu)) > vec4<u32>(0x7f800000u);
-    let b = vec4<u32>(round(clamp(select(c, vec4<f32>(0.0), is_nan), vec4<f32>(0.0), vec4<f32>(1.0)) * 255.0));
+    let bits = bitcast<vec4<u32>>(c);
+    let x = select(select(bits, vec4<u32>(0x3f800000u), bits >= vec4<u32>(0x3f800000u)), vec4<u32>(0u), bits > vec4<u32>(0x7f800000u));
+    let b = vec4<u32>(round(bitcast<vec4<f32>>(x) * 255.0));
     return b.x | (b.y << 8u) | (b.z << 16u) | (b.w << 24u);
 }
 

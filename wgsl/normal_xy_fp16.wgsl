@@ -50,9 +50,13 @@ fn encode_normal_xy_fp16(n: vec3<f32>) -> u32 {
 
 // The unit vector (x, y, +sqrt(1 - x^2 - y^2)) of two halves x (bits 0-15) and y (16-31).
 fn decode_normal_xy_fp16(p: u32) -> vec3<f32> {
-    let h = unpack2x16float(p);
-    let is_nan = (bitcast<vec2<u32>>(h) & vec2<u32>(0x7fffffffu)) > vec2<u32>(0x7f800000u);
-    let xy = clamp(select(h, vec2<f32>(0.0), is_nan), vec2<f32>(-1.0), vec2<f32>(1.0));
+    // Halves read from their bits first (unpack2x16float of an infinite or NaN half is outside
+    // WGSL's finite-math domain): NaN -> +0, +-Inf -> +-1 (what the clamp gives it).
+    let m = vec2<u32>(p, p >> 16u) & vec2<u32>(0xffffu);
+    let mag = m & vec2<u32>(0x7fffu);
+    let inf = (m & vec2<u32>(0x8000u)) | vec2<u32>(0x3c00u);
+    let safe = select(m, select(vec2<u32>(0u), inf, mag == vec2<u32>(0x7c00u)), mag >= vec2<u32>(0x7c00u));
+    let xy = clamp(unpack2x16float(safe.x | (safe.y << 16u)), vec2<f32>(-1.0), vec2<f32>(1.0));
     // Normalised by hand with |v|^2 = s + z^2 written as s + max(0, 1 - s): normalize() would
     // square the sqrt, which an optimiser may or may not fold back (Mesa does), so its result
     // would depend on the compiler.
@@ -63,14 +67,16 @@ fn decode_normal_xy_fp16(p: u32) -> vec3<f32> {
 
 // Render-target form, as Killzone 2 wrote it: the rgba8unorm channels holding the four bytes of
 // the two halves, and the decode of sampled channels (bytes rounded back, so unpack4x8unorm's
-// 3-ULP error cannot flip a bit of a half). NaN channels count as 0; channels are clamped.
+// 3-ULP error cannot flip a bit of a half). Channels are taken to [0, 1] from
+// their bits (NaN -> 0, +Inf -> 1), so no float operation sees a non-finite one.
 fn encode_normal_xy_fp16_unorm(n: vec3<f32>) -> vec4<f32> {
     return unpack4x8unorm(encode_normal_xy_fp16(n));
 }
 
 // The unit vector from sampled rgba8unorm channels (bytes rounded back, then decoded).
 fn decode_normal_xy_fp16_unorm(c: vec4<f32>) -> vec3<f32> {
-    let is_nan = (bitcast<vec4<u32>>(c) & vec4<u32>(0x7fffffffu)) > vec4<u32>(0x7f800000u);
-    let b = vec4<u32>(round(clamp(select(c, vec4<f32>(0.0), is_nan), vec4<f32>(0.0), vec4<f32>(1.0)) * 255.0));
+    let bits = bitcast<vec4<u32>>(c);
+    let x = select(select(bits, vec4<u32>(0x3f800000u), bits >= vec4<u32>(0x3f800000u)), vec4<u32>(0u), bits > vec4<u32>(0x7f800000u));
+    let b = vec4<u32>(round(bitcast<vec4<f32>>(x) * 255.0));
     return decode_normal_xy_fp16(b.x | (b.y << 8u) | (b.z << 16u) | (b.w << 24u));
 }

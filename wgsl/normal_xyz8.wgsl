@@ -144,14 +144,16 @@ fn decode_normal_xyz8(p: u32) -> vec3<f32> {
 
 // Render-target form: the rgba8unorm channels to write (alpha 0: put the material there), and
 // the decode of sampled channels, bytes rounded back so unpack4x8unorm's 3-ULP error or a
-// +-0.49/255 filter cannot change the result. NaN channels count as 0; channels are clamped.
+// +-0.49/255 filter cannot change the result. Channels are taken to [0, 1] from
+// their bits (NaN -> 0, +Inf -> 1), so no float operation sees a non-finite one.
 fn encode_normal_xyz8_unorm(n: vec3<f32>) -> vec4<f32> {
     return unpack4x8unorm(encode_normal_xyz8(n));
 }
 
 // The unit vector from sampled rgba8unorm channels (bytes rounded back; alpha ignored).
 fn decode_normal_xyz8_unorm(c: vec4<f32>) -> vec3<f32> {
-    let is_nan = (bitcast<vec4<u32>>(c) & vec4<u32>(0x7fffffffu)) > vec4<u32>(0x7f800000u);
-    let b = vec4<u32>(round(clamp(select(c, vec4<f32>(0.0), is_nan), vec4<f32>(0.0), vec4<f32>(1.0)) * 255.0));
+    let bits = bitcast<vec4<u32>>(c);
+    let x = select(select(bits, vec4<u32>(0x3f800000u), bits >= vec4<u32>(0x3f800000u)), vec4<u32>(0u), bits > vec4<u32>(0x7f800000u));
+    let b = vec4<u32>(round(bitcast<vec4<f32>>(x) * 255.0));
     return decode_normal_xyz8(b.x | (b.y << 8u) | (b.z << 16u));
 }

@@ -40,10 +40,13 @@ fn ggx_linear_code(r: f32, scale: f32) -> u32 {
     return k;
 }
 
-// The byte of a unorm8 channel value: round(255 c) after clamping to [0, 1]; NaN counts as 0.
+// The byte of a unorm8 channel value: round(255 c), c taken to [0, 1] from its bits (NaN,
+// negative values and -0 count as 0, values from 1 up to +Inf as 1: no float operation sees a
+// non-finite channel).
 fn ggx_unorm_byte(c: f32) -> u32 {
-    let is_nan = (bitcast<u32>(c) & 0x7fffffffu) > 0x7f800000u;
-    return u32(round(clamp(select(c, 0.0, is_nan), 0.0, 1.0) * 255.0));
+    let bits = bitcast<u32>(c);
+    let x = select(select(bits, 0x3f800000u, bits >= 0x3f800000u), 0u, bits > 0x7f800000u);
+    return u32(round(bitcast<f32>(x) * 255.0));
 }
 
 // ---- linear r in 8 bits (Bevy, Unreal, HDRP, URP, Substrate) ----

@@ -224,6 +224,23 @@ pub fn lpp_phong_light(
     ))
 }
 
+/// [`lpp_point_attenuation`]`(|to_light|, radius)` with both lengths first scaled by one power of
+/// two (exact; WGSL `lpp_point_falloff`) that takes `max(max|to_light_i|, radius)` into `[1, 4)`:
+/// `|to_light|²` neither overflows nor underflows, and `d/r` is unchanged. Non-finite input or a
+/// radius below `2^-126` gives 0.
+fn lpp_point_falloff(to_light: Vec3, radius: f32) -> f32 {
+    if !lpp_finite3(to_light)
+        || !lpp_finite(radius)
+        || radius.is_nan()
+        || radius < f32::MIN_POSITIVE
+    {
+        return 0.0;
+    }
+    let a = to_light.abs();
+    let s = pow2_scale(a.x.max(a.y).max(a.z.max(radius)));
+    lpp_point_attenuation((to_light * s).length(), radius * s)
+}
+
 /// P of a point light (`colour_radius` = colour, radius) with Blinn-Phong specular.
 pub fn lpp_point_light(
     normal: Vec3,
@@ -232,7 +249,7 @@ pub fn lpp_point_light(
     colour_radius: Vec4,
     power: f32,
 ) -> Vec4 {
-    let att = lpp_point_attenuation(to_light.length(), colour_radius.w);
+    let att = lpp_point_falloff(to_light, colour_radius.w);
     lpp_blinn_phong_light(
         normal,
         to_eye,
@@ -255,7 +272,7 @@ pub fn lpp_spot_light(
     power: f32,
 ) -> Vec4 {
     let cos_angle = lpp_direction(axis_cos_outer.truncate()).dot(-lpp_direction(to_light));
-    let att = lpp_point_attenuation(to_light.length(), colour_radius.w)
+    let att = lpp_point_falloff(to_light, colour_radius.w)
         * lpp_spot_attenuation(cos_angle, axis_cos_outer.w, cos_inner);
     lpp_blinn_phong_light(
         normal,

@@ -80,6 +80,10 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
         "private to lpp.wgsl: finiteness test on bits, exercised by every NaN/Inf row",
     ),
     (
+        "lpp_point_falloff",
+        "private to lpp.wgsl: the scaled distance falloff of lpp_point_light and lpp_spot_light, exercised by their rows",
+    ),
+    (
         "lpp_light",
         "private to lpp.wgsl: the body of lpp_blinn_phong_light and lpp_phong_light",
     ),
