@@ -182,8 +182,10 @@ impl DepthUniform {
         ]
     }
 
-    /// The uniform from that vector (the inverse of [`to_wgsl`](Self::to_wgsl)); the shader
-    /// functions give the sky for vectors no [`Projection`] makes.
+    /// The uniform from that vector (the inverse of [`to_wgsl`](Self::to_wgsl)), unchecked. The
+    /// shader functions give the sky for entries no [`Projection`] can give (`n` or `|k.w|` not
+    /// positive and finite, a ratio outside `[+0, 1]`); other vectors no projection makes give
+    /// the formula's value on them, with no bound (see the type's doc).
     ///
     /// [`Projection`]: crate::projection::Projection
     pub fn from_wgsl(k: [f32; 4]) -> Self {
