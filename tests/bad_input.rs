@@ -259,7 +259,8 @@ fn wgsl_gives_the_documented_answers_on_dawn() {
 ///   `min`, a returned input);
 /// - an operation the arithmetic helpers do not see applied to a ±∞ or NaN (bit 2: `min`, `max`,
 ///   `clamp`, `abs`, `floor`, comparisons, the identity's builtins, an infinite or NaN
-///   `unpack2x16float` half): every function reads such inputs from their bits first;
+///   `unpack2x16float` half, `u32` or `i32` of one): every function reads such inputs from their
+///   bits first;
 /// - a row WGSL leaves indeterminate ([`V::WgslIndeterminate`]) whose evaluation stays in the
 ///   domain (then it is no indeterminate row).
 #[test]

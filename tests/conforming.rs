@@ -54,6 +54,8 @@ fn t_exp2(x: f32) -> f32 { return exp2(x); }
 fn t_log2(x: f32) -> f32 { return log2(x); }
 fn t_sin(x: f32) -> f32 { return sin(x); }
 fn t_cos(x: f32) -> f32 { return cos(x); }
+fn t_u32_of(x: f32) -> u32 { return u32(x); }
+fn t_i32_of(x: vec2<f32>) -> vec2<i32> { return vec2<i32>(x); }
 fn t_unpack4x8unorm(p: u32) -> vec4<f32> { return unpack4x8unorm(p); }
 fn t_unpack4x8snorm(p: u32) -> vec4<f32> { return unpack4x8snorm(p); }
 fn t_pack4x8unorm(v: vec4<f32>) -> u32 { return pack4x8unorm(v); }
@@ -786,6 +788,84 @@ fn sin_and_cos_reach_their_absolute_allowance_and_flag_beyond_pi() {
             for (x, flagged) in beyond.iter().zip(flags) {
                 assert!(flagged, "{policy}: {f}({x}) beyond [−π, π] is not flagged");
             }
+        }
+    }
+}
+
+/// `u32(x)` and `i32(x)` of an f32 are exact (truncated toward zero, then clamped to the values
+/// both types represent: `[0, 2^32 − 256]`, `[−2^31, 2^31 − 128]`, WGSL "Conversion of a
+/// floating point value to an integer"), so
+/// the emulation takes no freedom there; a ±∞ or NaN operand is outside the spec's domain and
+/// raises the flag under every policy (the bad-input suite relies on it), a finite one never.
+#[test]
+fn float_to_integer_conversions_flag_only_non_finite_operands() {
+    let finite = [
+        0.0f32,
+        -0.0,
+        1.5,
+        -1.5,
+        2.5,
+        255.49,
+        4294967040.0,
+        5e9,
+        -5e9,
+        2147483520.0,
+        1e-40,
+        -1e-40,
+        3e38,
+        -3e38,
+    ];
+    let bad = [f32::INFINITY, f32::NEG_INFINITY, f32::NAN, -f32::NAN];
+    for policy in ALL_POLICIES {
+        let (got, flags) = run(
+            "t_u32_of",
+            policy,
+            Freedoms::ALL,
+            &[Arg::column(&finite)],
+            finite.len(),
+        );
+        for ((x, w), flagged) in finite.iter().zip(&got).zip(&flags) {
+            assert!(!flagged, "{policy}: u32({x:e}) flagged");
+            assert_eq!(*w, x.min(4294967040.0) as u32, "{policy}: u32({x:e})");
+        }
+        let pairs: Vec<f32> = finite.iter().flat_map(|&x| [x, -x]).collect();
+        let (got, flags) = run(
+            "t_i32_of",
+            policy,
+            Freedoms::ALL,
+            &[Arg::column(&pairs)],
+            finite.len(),
+        );
+        for (i, flagged) in flags.iter().enumerate() {
+            let (x, y) = (pairs[2 * i], pairs[2 * i + 1]);
+            assert!(!flagged, "{policy}: vec2<i32>({x:e}, {y:e}) flagged");
+            assert_eq!(
+                [got[2 * i] as i32, got[2 * i + 1] as i32],
+                [x, y].map(|v| v.clamp(-2147483648.0, 2147483520.0) as i32),
+                "{policy}: vec2<i32>({x:e}, {y:e})"
+            );
+        }
+        let (_, flags) = run(
+            "t_u32_of",
+            policy,
+            Freedoms::ALL,
+            &[Arg::column(&bad)],
+            bad.len(),
+        );
+        for (x, flagged) in bad.iter().zip(flags) {
+            assert!(flagged, "{policy}: u32({x}) is not flagged");
+        }
+        // One bad lane of two is enough.
+        let mixed: Vec<f32> = bad.iter().flat_map(|&x| [1.0, x]).collect();
+        let (_, flags) = run(
+            "t_i32_of",
+            policy,
+            Freedoms::ALL,
+            &[Arg::column(&mixed)],
+            bad.len(),
+        );
+        for (x, flagged) in bad.iter().zip(flags) {
+            assert!(flagged, "{policy}: vec2<i32>(1, {x}) is not flagged");
         }
     }
 }

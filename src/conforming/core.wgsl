@@ -35,7 +35,7 @@ fn prepass_cf_undefined_if(c: bool) {
 
 // The same for an operation on a run-time ±Inf or NaN that no arithmetic helper sees (min, max,
 // clamp, abs, floor, comparisons, the identity's builtins, an infinite or NaN unpack2x16float
-// half): bit 2, so a suite can tell these apart (EmulatedKernel::run_flags).
+// half, a float-to-integer conversion): bit 2, so a suite can tell these apart (EmulatedKernel::run_flags).
 fn prepass_cf_operand_if(c: bool) {
     if (c) {
         prepass_cf_undefined = prepass_cf_undefined | 2u;
@@ -1083,6 +1083,18 @@ fn prepass_cf_f32_from_u32(site: u32, x: u32) -> f32 {
     }
     let n = prepass_cf_u32_neighbours(x);
     return prepass_cf_choose(PREPASS_CF_CONVERSION, site, f32(x), n.x, n.y);
+}
+
+// u32(x) and i32(x) of an f32: exact (truncated toward zero, saturated), but outside the domain
+// for a ±Inf or NaN x (the spec's finite-math assumption): bit 2. No freedom, so no slot read.
+fn prepass_cf_u32_from_f32(site: u32, x: f32) -> u32 {
+    prepass_cf_operand_if(!prepass_cf_finite(x));
+    return u32(x);
+}
+
+fn prepass_cf_i32_from_f32(site: u32, x: f32) -> i32 {
+    prepass_cf_operand_if(!prepass_cf_finite(x));
+    return i32(x);
 }
 
 // f32(i32), the same on the magnitude (|i32::MIN| = 2^31 is exact).

@@ -219,8 +219,8 @@ impl<'g> EmulatedKernel<'g> {
     /// [`EmulatedKernel::run`] with each evaluation's flag word as it is: bit 1 where an
     /// arithmetic helper left the domain (a result not finite, a divisor or argument outside
     /// its range), bit 2 where an operation no arithmetic helper sees (`min`, `max`, `clamp`,
-    /// `abs`, `floor`, comparisons, the identity's builtins) had a ±Inf or NaN
-    /// operand, or `unpack2x16float` gave one.
+    /// `abs`, `floor`, comparisons, the identity's builtins, `u32` or `i32` of an f32) had a
+    /// ±Inf or NaN operand, or `unpack2x16float` gave one.
     pub fn run_flags(&self, args: &[Arg<'_>], n: u64) -> Result<(Output, Vec<u32>), HarnessError> {
         let (out, tail, _) = self.run_tail(args, n, 1)?;
         Ok((out, tail))

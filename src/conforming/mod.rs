@@ -153,7 +153,8 @@
 //! operation on a NaN or an infinity, raises the flag too (the spec's finite-math assumption):
 //! bit 1 of its word from the arithmetic helpers, bit 2 from the paths they do not see (`min`,
 //! `max`, `clamp`, `abs`, `floor`, comparisons, the builtins the
-//! identity policy calls unchanged, an infinite or NaN `unpack2x16float` half;
+//! identity policy calls unchanged, an infinite or NaN `unpack2x16float` half, `u32` or `i32` of
+//! one — exact conversions, so they take no freedom and read no slot);
 //! [`crate::conforming::EmulatedKernel::run_flags`] gives the word).
 //! The flag is per evaluation, not per data dependency: an operation whose indeterminate result
 //! a `select` then discards (as `ld_near_over_far` discards `near / far` for an infinite far

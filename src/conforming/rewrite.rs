@@ -35,6 +35,13 @@ struct Site {
     operands: Vec<Handle<Expression>>,
 }
 
+/// Whether a helper takes no freedom (it only checks its operands' domain), so its site needs no
+/// number of its own: the checked float-to-integer conversions. Numbering them would renumber
+/// every later site, and so move every seeded policy's choices.
+fn unnumbered(helper: &str) -> bool {
+    helper.contains("_from_f32")
+}
+
 /// A helper the module needs: its name and, for generated ones, its WGSL.
 #[derive(Default)]
 pub struct Plan {
@@ -623,6 +630,24 @@ fn site_for(
             ))
         }
         Expression::As {
+            expr,
+            kind: kind @ (ScalarKind::Uint | ScalarKind::Sint),
+            convert: Some(4),
+        } => {
+            // u32 or i32 of an f32: exact (WGSL truncates and saturates), but outside the
+            // domain for a ±Inf or NaN operand, which no arithmetic helper sees here.
+            let lanes = lanes_of(expr)?;
+            let (core, ret) = if kind == ScalarKind::Uint {
+                ("u32_from_f32", "u32")
+            } else {
+                ("i32_from_f32", "i32")
+            };
+            Some((
+                componentwise_typed(plan, core, &[(lanes, "f32")], ret),
+                vec![expr],
+            ))
+        }
+        Expression::As {
             kind: ScalarKind::Float,
             convert: Some(2),
             ..
@@ -796,9 +821,14 @@ fn apply_to(
         let Some(&function) = helpers.get(&s.helper) else {
             return Err(format!("helper {} is missing from the module", s.helper));
         };
-        *next_site = next_site.wrapping_add(1);
+        let number = if unnumbered(&s.helper) {
+            0
+        } else {
+            *next_site = next_site.wrapping_add(1);
+            *next_site
+        };
         let id = f.expressions.append(
-            Expression::Literal(Literal::U32(next_site.wrapping_mul(1 << 16))),
+            Expression::Literal(Literal::U32(number.wrapping_mul(1 << 16))),
             Span::UNDEFINED,
         );
         let mut arguments = vec![id];
