@@ -144,6 +144,8 @@ fn all_scenes() -> Vec<Scene> {
                         RoughnessChoice::None,
                         RoughnessChoice::Log8,
                         RoughnessChoice::Ggx8,
+                        RoughnessChoice::Ggx8Log,
+                        RoughnessChoice::Godot8,
                     ] {
                         for &lighting in &lightings {
                             v.push(Scene {
@@ -810,8 +812,9 @@ fn vouched_normal_input_selects_the_vouched_encoder() {
 
 /// GGX roughness (`RoughnessChoice::Ggx8`) and Unreal Substrate's word: the roughness goes in
 /// the normal target's free alpha, in the Substrate word (no target of its own) or in an
-/// `r8unorm` target, and the lighting's roots read `α`; Substrate with the log-range code is
-/// refused, naming both fields.
+/// `r8unorm` target, and the lighting's roots read `α`; the log-r curve and Godot's 7 bits +
+/// flag (`Ggx8Log`, `Godot8`) go where linear `r` goes, with their own codecs; Substrate with
+/// anything but linear `r` is refused, naming both fields.
 #[test]
 fn ggx_roughness_and_the_substrate_word_lay_out_as_documented() {
     let scene = |encoding, roughness| Scene {
@@ -869,8 +872,53 @@ fn ggx_roughness_and_the_substrate_word_lay_out_as_documented() {
         assert!(roots.contains(&f), "{f}: {roots:?}");
     }
     assert!(sub.wgsl().unwrap().contains("fn encode_substrate_word("));
-    let e = scene(NormalEncoding::Substrate, RoughnessChoice::Log8)
-        .roots()
-        .unwrap_err();
-    assert_eq!(e.fields, ["normal.encoding", "roughness"], "{e}");
+    for rough in [
+        RoughnessChoice::Log8,
+        RoughnessChoice::Ggx8Log,
+        RoughnessChoice::Godot8,
+    ] {
+        let e = scene(NormalEncoding::Substrate, rough).roots().unwrap_err();
+        assert_eq!(e.fields, ["normal.encoding", "roughness"], "{rough:?}: {e}");
+    }
+    // The log curve and Godot's byte go where linear r goes: the free alpha, else a target.
+    for (rough, alpha, fns) in [
+        (
+            RoughnessChoice::Ggx8Log,
+            "a: GGX perceptual roughness (log curve)",
+            &[
+                "encode_roughness_ggx8_log_unorm",
+                "decode_roughness_ggx8_log_unorm",
+                "decode_roughness_ggx8_log_alpha",
+            ][..],
+        ),
+        (
+            RoughnessChoice::Godot8,
+            "a: GGX perceptual roughness (7 bits) and dynamic flag",
+            &[
+                "encode_roughness_godot8_unorm",
+                "decode_roughness_godot8_unorm",
+            ][..],
+        ),
+    ] {
+        let s = scene(NormalEncoding::Xyz8Best, rough);
+        assert!(
+            names(&s)
+                .iter()
+                .any(|(n, c)| *n == "normal" && c.ends_with(alpha)),
+            "{rough:?}: {:?}",
+            names(&s)
+        );
+        let roots = s.roots().unwrap();
+        for f in fns {
+            assert!(roots.contains(f), "{rough:?}, {f}: {roots:?}");
+        }
+        assert!(!roots.contains(&"decode_roughness_ggx8_alpha"), "{roots:?}");
+        let wgsl = s.wgsl().unwrap();
+        assert!(wgsl.contains(&format!("fn {}(", fns[0])), "{rough:?}");
+        let oct32 = scene(NormalEncoding::Oct32, rough);
+        assert!(
+            names(&oct32).iter().any(|(n, _)| *n == "roughness"),
+            "{rough:?}: no alpha free in oct32, so a roughness target"
+        );
+    }
 }

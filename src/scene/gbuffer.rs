@@ -152,10 +152,11 @@ impl Scene {
             }
         }
         let rough = self.roughness != RoughnessChoice::None;
-        let rough_name = if self.roughness == RoughnessChoice::Ggx8 {
-            "GGX perceptual roughness"
-        } else {
-            "log roughness"
+        let rough_name = match self.roughness {
+            RoughnessChoice::Ggx8 => "GGX perceptual roughness",
+            RoughnessChoice::Ggx8Log => "GGX perceptual roughness (log curve)",
+            RoughnessChoice::Godot8 => "GGX perceptual roughness (7 bits) and dynamic flag",
+            _ => "log roughness",
         };
         let substrate = self.normal.encoding == Some(NormalEncoding::Substrate);
         let alpha_free = matches!(

@@ -186,6 +186,16 @@ pub enum RoughnessChoice {
     /// `decode_roughness_ggx8_alpha`, and its Blinn-Phong exponent is `2/α² − 2`): in the normal
     /// target's alpha when it has one free, in the Substrate word, else in an `r8unorm` target.
     Ggx8,
+    /// GGX perceptual roughness on prepass's searched log curve in unorm8 (code `k` stands for
+    /// `r = 2^(6k/255 − 6)`, `r ∈ [1/64, 1]`: `encode_roughness_ggx8_log_unorm`; the lighting
+    /// reads `α`, `decode_roughness_ggx8_log_alpha`), where `Ggx8` would go: finer where the GGX
+    /// lobe is sharp (its error beside linear `r`: docs/figures.md, "GGX roughness"). Not in the
+    /// Substrate word, whose byte is linear.
+    Ggx8Log,
+    /// Godot 4's byte (Forward+): GGX perceptual roughness in 7 bits and a dynamic-object flag
+    /// (`encode_roughness_godot8_unorm(r, dynamic_object)`, `decode_roughness_godot8_unorm`,
+    /// `α = r²`), where `Ggx8` would go. Not in the Substrate word.
+    Godot8,
 }
 
 /// Which dynamic lights the light pre-pass accumulates.
@@ -308,7 +318,10 @@ impl Scene {
             );
         }
         if self.normal.encoding == Some(NormalEncoding::Substrate)
-            && self.roughness == RoughnessChoice::Log8
+            && !matches!(
+                self.roughness,
+                RoughnessChoice::None | RoughnessChoice::Ggx8
+            )
         {
             return bad(
                 &["normal.encoding", "roughness"],

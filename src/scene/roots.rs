@@ -172,13 +172,25 @@ impl Scene {
                 self.normal_input == NormalInput::Vouched,
             ));
         }
-        if self.roughness == RoughnessChoice::Ggx8 {
-            if self.normal.encoding == Some(NormalEncoding::Substrate) {
-                r.extend(["decode_substrate_roughness", "decode_roughness_ggx8_alpha"]);
-            } else {
-                r.extend(["encode_roughness_ggx8_unorm", "decode_roughness_ggx8_unorm"]);
-                r.push("decode_roughness_ggx8_alpha");
+        match self.roughness {
+            RoughnessChoice::Ggx8 => {
+                if self.normal.encoding == Some(NormalEncoding::Substrate) {
+                    r.extend(["decode_substrate_roughness", "decode_roughness_ggx8_alpha"]);
+                } else {
+                    r.extend(["encode_roughness_ggx8_unorm", "decode_roughness_ggx8_unorm"]);
+                    r.push("decode_roughness_ggx8_alpha");
+                }
             }
+            RoughnessChoice::Ggx8Log => r.extend([
+                "encode_roughness_ggx8_log_unorm",
+                "decode_roughness_ggx8_log_unorm",
+                "decode_roughness_ggx8_log_alpha",
+            ]),
+            RoughnessChoice::Godot8 => r.extend([
+                "encode_roughness_godot8_unorm",
+                "decode_roughness_godot8_unorm",
+            ]),
+            RoughnessChoice::None | RoughnessChoice::Log8 => {}
         }
         if self.roughness == RoughnessChoice::Log8 {
             r.extend(["encode_log_roughness", "decode_log_roughness"]);
