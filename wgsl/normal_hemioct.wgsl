@@ -45,11 +45,7 @@ fn hemioct_sanitize(n: vec3<f32>) -> vec3<f32> {
 // p.x - p.y); x * 0.5 is exact, so fusing the add cannot change the sum. The clamp stops at
 // 1 - 2^-23, as oct_continuous's does: floor() stays below M whichever way the scaling rounds.
 fn hemioct_continuous(s: vec3<f32>, m: u32) -> vec2<f32> {
-    return hemioct_codes(s, (abs(s.x) + abs(s.y)) + s.z, m);
-}
-// hemioct_continuous with the L1 norm l1 passed in: shared with the vouched precise encoder,
-// which keeps l1 at least 2^-126.
-fn hemioct_codes(s: vec3<f32>, l1: f32, m: u32) -> vec2<f32> {
+    let l1 = (abs(s.x) + abs(s.y)) + s.z;
     let p = s.xy / l1;
     let q = vec2<f32>(p.x + p.y, p.x - p.y);
     return clamp(q * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(0.99999988079071044921875)) * f32(m);
@@ -140,13 +136,22 @@ fn hemioct_scale_vouched(n: vec3<f32>) -> vec3<f32> {
     return c * bitcast<f32>((254u - e) << 23u);
 }
 
+// hemioct_continuous of a vouched vector scaled by hemioct_scale_vouched, for the precise
+// encoder: its L1 norm, in the contract at least 2^-126 (so unchanged), kept there, so a zero c
+// gives p = 0, the code of +z, as hemioct_sanitize's +z does. (A copy rather than a shared
+// helper, so hemioct_continuous, and the _fast encoder's SPIR-V, stay as they were.)
+fn hemioct_continuous_vouched(s: vec3<f32>, m: u32) -> vec2<f32> {
+    let l1 = max((abs(s.x) + abs(s.y)) + s.z, 1.1754943508222875e-38);
+    let p = s.xy / l1;
+    let q = vec2<f32>(p.x + p.y, p.x - p.y);
+    return clamp(q * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(0.99999988079071044921875)) * f32(m);
+}
+
 // encode_normal_hemioct24 for a vector the scene vouches for (the contract above): no
-// sanitising, the same choice. The L1 norm, in the contract at least 2^-126 (no change), is kept
-// there so the zero c gives p = 0, the code of +z, as hemioct_sanitize's +z does.
+// sanitising, the same choice.
 fn encode_normal_hemioct24_vouched(n: vec3<f32>) -> u32 {
     let s = hemioct_scale_vouched(n);
-    let a = abs(s);
-    return hemioct_choose(s, hemioct_codes(s, max((a.x + a.y) + s.z, 1.1754943508222875e-38), 4095u));
+    return hemioct_choose(s, hemioct_continuous_vouched(s, 4095u));
 }
 
 // encode_normal_hemioct24_fast for a vector the scene vouches for: unscaled (every sum of the

@@ -41,8 +41,9 @@ pub fn continuous(s: Vec3) -> Vec2 {
     codes(s, (s.x.abs() + s.y.abs()) + s.z)
 }
 
-/// [`continuous`] with the L1 norm `l1` passed in (the WGSL's `hemioct_codes`): shared with
-/// [`encode_normal_hemioct24_vouched`], which keeps `l1` at least `2^-126`.
+/// [`continuous`] with the L1 norm `l1` passed in: shared with
+/// [`encode_normal_hemioct24_vouched`], which keeps `l1` at least `2^-126` (the WGSL's
+/// `hemioct_continuous_vouched`, a copy of `hemioct_continuous` with that `max`).
 fn codes(s: Vec3, l1: f32) -> Vec2 {
     let p = Vec2::new(s.x / l1, s.y / l1);
     let q = Vec2::new(p.x + p.y, p.x - p.y);

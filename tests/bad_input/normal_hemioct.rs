@@ -30,8 +30,8 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
         "private to normal_hemioct.wgsl: continuous code coordinates, behind the encoder rows",
     ),
     (
-        "hemioct_codes",
-        "private to normal_hemioct.wgsl: continuous code coordinates for a given L1 norm, behind the encoder rows",
+        "hemioct_continuous_vouched",
+        "private to normal_hemioct.wgsl: the precise vouched encoder's continuous code coordinates, behind its rows",
     ),
     (
         "hemioct_choose",
