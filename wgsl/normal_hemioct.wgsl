@@ -116,9 +116,9 @@ fn encode_normal_hemioct24_fast(n: vec3<f32>) -> u32 {
 // view-space normal at a silhouette can point slightly away from the camera): every component
 // of n finite; every non-zero component of c at least 2^-126 max(1, |c|inf) in magnitude (no
 // subnormals, and none so small beside the largest that hemioct_sanitize's scaling would make
-// it subnormal); 0 < |c|inf = max(|x|, |y|, max(z, 0)) <= 2^124. A negative z may be any finite
-// value (the clamp drops it), so is normal_oct.wgsl's contract of c. Within it each vouched
-// encoder returns the robust encoder's code bit for bit on a correctly rounded adapter
+// it subnormal); 0 < |c|inf = max(|x|, |y|, max(z, 0)) <= 2^124: normal_oct.wgsl's contract,
+// applied to c, so a negative z may be any finite value (the clamp drops it). Within it each
+// vouched encoder returns the robust encoder's code bit for bit on a correctly rounded adapter
 // (hemioct_sanitize would change nothing but an exact power-of-two scale of c, which the
 // projection c.xy / |c|_1 does not see), so the robust forms' error bounds hold. Outside it
 // (NaN, +-Inf, subnormals, |c|inf > 2^124) WGSL leaves the result indeterminate: some u32, which
