@@ -195,3 +195,9 @@ for v in VECS + [(f(1.0), f(1.0), f(1.0)), (f(255.0), f(-253.0), f(1.0)), (f(3.0
                  (f(0.70710677), f(-0.70710677), f(1e-7))]:
     for e in (36, 37):
         write("encoders", e, words(*v))
+# encoders (appended): 38 the vouched hemi-octahedral encoders against the robust ones (vector):
+# negative z of every size (clamped; in the contract when finite), the -z half-axis (outside).
+for v in VECS + [(f(0.6), f(0.0), f(-0.8)), (NZ, f(1e-38), f(-1.0)), (f(2.0 ** 124), f(1.0), NZ),
+                 (f(1e-30), f(1e-30), f(-1e-30)), (f(1e-30), f(0.0), f(-3e38)),
+                 (PZ, NZ, f(-1.0)), (f(1.1754944e-38), f(0.0), f(-1024.0))]:
+    write("encoders", 38, words(*v))

@@ -1790,17 +1790,20 @@ fn every_normal_encoding_under_emulation() {
     common::publish_measured("docs/figures.md", "normal-encodings", &full);
 }
 
-/// The vouched-input encoders (`common::vouched_codec`: `encode_normal_oct*_vouched` and
-/// `…_fast_vouched` with the robust codecs' decoders and references) on the emulated worst
-/// adapter (upper, lower, one seed, and the search at the inputs they erred most on), as
-/// [`every_normal_encoding_under_emulation`] holds the robust ones: every round-trip decode
-/// finite and unit within the conforming budget, the emulated code within one step of the twin's,
-/// and the precise choice within the conforming optimality tolerance. Their inputs (2^14
-/// Fibonacci directions and the adversarial set: fewer than the robust encoders' 2^18, to fit
-/// CI) are inside the vouched contract. The emulated worst error is printed, not published
-/// (2026-12-06, 2^16 directions: each within 3e-5° of the robust encoder's emulated worst).
+/// The vouched-input encoders (`common::vouched_codec`: `encode_normal_oct*_vouched`,
+/// `encode_normal_hemioct24_vouched` and their `…_fast_vouched` with the robust codecs'
+/// decoders and references) on the emulated worst adapter (upper, lower, one seed, and the
+/// search at the inputs they erred most on), as [`every_normal_encoding_under_emulation`] holds
+/// the robust ones: every round-trip decode finite and unit within the conforming budget, the
+/// emulated code within one step of the twin's, and the precise choice within the conforming
+/// optimality tolerance. Their inputs (2^14 Fibonacci directions and the adversarial set: fewer
+/// than the robust encoders' 2^18, to fit CI) are inside the octahedral vouched contract; for
+/// hemioct24 those inside its own (`hemioct::is_vouched`: all but the `−z` half-axis, whose
+/// clamp is zero). The emulated worst error is printed, not published (2026-12-06, 2^16
+/// directions, octahedral: each within 3e-5° of the robust encoder's emulated worst).
 #[test]
 fn vouched_encoders_under_emulation() {
+    use prepass::normal::{hemioct, oct};
     use prepass::sweep::conforming::{
         SEARCHED_NORMAL_INPUTS, UNIT_TOLERANCE_CONFORMING, normal_figures_with,
         optimality_tolerance_conforming_deg,
@@ -1808,13 +1811,19 @@ fn vouched_encoders_under_emulation() {
     use prepass::sweep::normal::{
         adversarial_directions, fibonacci_directions, precise_optimality, stratified_codes32,
     };
-    let mut inputs = fibonacci_directions(1 << 14);
-    inputs.extend(adversarial_directions());
+    let mut all = fibonacci_directions(1 << 14);
+    all.extend(adversarial_directions());
+    assert!(all.iter().all(|&n| oct::is_vouched(n.into())));
+    // Outside hemioct's contract: only the −z half-axis.
     assert!(
-        inputs
-            .iter()
-            .all(|&n| prepass::normal::oct::is_vouched(n.into()))
+        all.iter()
+            .all(|&n| hemioct::is_vouched(n.into()) || (n[0] == 0.0 && n[1] == 0.0))
     );
+    let hemi: Vec<[f32; 3]> = all
+        .iter()
+        .copied()
+        .filter(|&n| hemioct::is_vouched(n.into()))
+        .collect();
     // The decoders are the robust codecs' (tested by every_normal_encoding_under_emulation):
     // a few codes each.
     let codes16: Vec<u32> = (0..1 << 16).step_by(251).collect();
@@ -1826,59 +1835,73 @@ fn vouched_encoders_under_emulation() {
         _ => codes32.clone(),
     };
     let policies = [Policy::Upper, Policy::Lower, Policy::Seeded(1)];
-    let names = common::OCTAHEDRAL;
-    let mut inspect = |c: &prepass::sweep::normal::Codec,
-                       policy: Policy,
-                       e: &prepass::sweep::conforming::EmulatedCodec| {
-        let (len_rt, bad_rt) = e.round_trip_length;
-        eprintln!(
-            "{:20} {policy:10}: {} codes differ from the twin; |len−1| ≤ {len_rt:.3e}; max {:.6}°",
-            c.name, e.round_trip.twin_encode.count, e.round_trip.error.max
-        );
-        assert_eq!(
-            bad_rt, 0,
-            "{} {policy}: {bad_rt} round-trip decodes not finite or beyond the conforming unit budget {UNIT_TOLERANCE_CONFORMING:e} (derivation: sweep::conforming)",
-            c.name
-        );
-        if !c.name.ends_with("fast") {
-            let o = precise_optimality(c, &inputs, &e.round_trip);
-            assert_within!(
-                o.worst_excess_deg,
-                optimality_tolerance_conforming_deg(),
-                "sweep::conforming::optimality_tolerance_conforming_deg",
-                "{} {policy}: the precise encoder's choice, degrees worse than the best neighbour",
-                c.name
+    for (names, inputs) in [
+        (&common::OCTAHEDRAL[..], &all),
+        (&common::HEMIOCTAHEDRAL[..], &hemi),
+    ] {
+        vouched_under_emulation(names, inputs, &policies, &codes_for);
+    }
+
+    fn vouched_under_emulation(
+        names: &[&str],
+        inputs: &[[f32; 3]],
+        policies: &[Policy],
+        codes_for: &dyn Fn(&prepass::sweep::normal::Codec) -> Vec<u32>,
+    ) {
+        let mut inspect =
+            |c: &prepass::sweep::normal::Codec,
+             policy: Policy,
+             e: &prepass::sweep::conforming::EmulatedCodec| {
+                let (len_rt, bad_rt) = e.round_trip_length;
+                eprintln!(
+                    "{:20} {policy:10}: {} codes differ from the twin; |len−1| ≤ {len_rt:.3e}; max {:.6}°",
+                    c.name, e.round_trip.twin_encode.count, e.round_trip.error.max
+                );
+                assert_eq!(
+                    bad_rt, 0,
+                    "{} {policy}: {bad_rt} round-trip decodes not finite or beyond the conforming unit budget {UNIT_TOLERANCE_CONFORMING:e} (derivation: sweep::conforming)",
+                    c.name
+                );
+                if !c.name.ends_with("fast") {
+                    let o = precise_optimality(c, inputs, &e.round_trip);
+                    assert_within!(
+                        o.worst_excess_deg,
+                        optimality_tolerance_conforming_deg(),
+                        "sweep::conforming::optimality_tolerance_conforming_deg",
+                        "{} {policy}: the precise encoder's choice, degrees worse than the best neighbour",
+                        c.name
+                    );
+                }
+                assert_within!(
+                    e.max_code_step,
+                    1,
+                    "the twins' promise: within one code on every conforming adapter",
+                    "{} {policy}: emulated code steps from the twin's",
+                    c.name
+                );
+            };
+        let vouched: Vec<prepass::sweep::normal::Codec> =
+            names.iter().map(|n| common::vouched_codec(n)).collect();
+        let rows = normal_figures_with(
+            gpu(),
+            &vouched,
+            inputs,
+            policies,
+            SEARCHED_NORMAL_INPUTS,
+            codes_for,
+            &mut inspect,
+        )
+        .unwrap();
+        for r in &rows {
+            let worst = r.emulated_max.iter().copied().fold(0.0, f64::max);
+            eprintln!(
+                "{:20}: adapter max {:.6}°, emulated worst {worst:.6}° (searched {:.6}°)",
+                r.name, r.adapter.max, r.searched
             );
+            assert_eq!(r.adapter.nan_count, 0, "{}: NaN round trips", r.name);
+            assert!(r.searched.is_finite(), "{}: {}", r.name, r.searched_at);
+            assert_searched_promises(r);
         }
-        assert_within!(
-            e.max_code_step,
-            1,
-            "the twins' promise: within one code on every conforming adapter",
-            "{} {policy}: emulated code steps from the twin's",
-            c.name
-        );
-    };
-    let vouched: Vec<prepass::sweep::normal::Codec> =
-        names.iter().map(|n| common::vouched_codec(n)).collect();
-    let rows = normal_figures_with(
-        gpu(),
-        &vouched,
-        &inputs,
-        &policies,
-        SEARCHED_NORMAL_INPUTS,
-        &codes_for,
-        &mut inspect,
-    )
-    .unwrap();
-    for r in &rows {
-        let worst = r.emulated_max.iter().copied().fold(0.0, f64::max);
-        eprintln!(
-            "{:20}: adapter max {:.6}°, emulated worst {worst:.6}° (searched {:.6}°)",
-            r.name, r.adapter.max, r.searched
-        );
-        assert_eq!(r.adapter.nan_count, 0, "{}: NaN round trips", r.name);
-        assert!(r.searched.is_finite(), "{}: {}", r.name, r.searched_at);
-        assert_searched_promises(r);
     }
 }
 

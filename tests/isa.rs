@@ -172,9 +172,10 @@ fn every_shipped_file_compiles_whole_on_every_target() {
 /// uniform as a renderer feeds them.
 #[test]
 fn readme_cost_table_on_real_instruction_sets() {
-    // Every encoding of the sweeps' table, in its order, then the vouched-input octahedral
-    // encoders (the same codes inside their contract; `Scene::normal_input`).
+    // Every encoding of the sweeps' table, in its order, then the vouched-input octahedral and
+    // hemi-octahedral encoders (the same codes inside their contract; `Scene::normal_input`).
     let oct = prepass::wgsl::NORMAL_OCT;
+    let hemioct = prepass::wgsl::NORMAL_HEMIOCT;
     let normals: Vec<(&str, &str, &str, &str)> = prepass::sweep::normal::CODECS
         .iter()
         .map(|c| (c.name, c.source, c.encode, c.decode))
@@ -190,6 +191,18 @@ fn readme_cost_table_on_real_instruction_sets() {
                 oct,
                 "encode_normal_oct24_fast_vouched",
                 "decode_normal_oct24",
+            ),
+            (
+                "hemioct24, vouched input",
+                hemioct,
+                "encode_normal_hemioct24_vouched",
+                "decode_normal_hemioct24",
+            ),
+            (
+                "hemioct24 fast, vouched input",
+                hemioct,
+                "encode_normal_hemioct24_fast_vouched",
+                "decode_normal_hemioct24",
             ),
         ])
         .collect();
@@ -448,7 +461,8 @@ fn the_freedoms_the_compilers_take_are_the_ones_the_emulation_models() {
     );
 }
 
-/// The vouched-input encoders (`encode_normal_oct*_vouched`, `…_fast_vouched`) beside their
+/// The vouched-input encoders (`encode_normal_oct*_vouched`, `encode_normal_hemioct24_vouched`,
+/// `…_fast_vouched`) beside their
 /// robust siblings and Bevy's G-buffer oct24 encoder (the peer `tests/baselines/peer_bevy.wgsl`),
 /// on every target: each compiles, and on every target the vouched form costs no more than its
 /// robust sibling (the same code inside the contract, with the sanitising taken out; a
@@ -457,21 +471,22 @@ fn the_freedoms_the_compilers_take_are_the_ones_the_emulation_models() {
 #[test]
 fn vouched_encoders_cost_less_than_their_robust_siblings() {
     const BEVY: &str = include_str!("baselines/peer_bevy.wgsl");
-    let names = [
-        "encode_normal_oct16",
-        "encode_normal_oct16_fast",
-        "encode_normal_oct24",
-        "encode_normal_oct24_fast",
-        "encode_normal_oct32",
-        "encode_normal_oct32_fast",
+    let (oct, hemioct) = (prepass::wgsl::NORMAL_OCT, prepass::wgsl::NORMAL_HEMIOCT);
+    let sourced = [
+        (oct, "encode_normal_oct16"),
+        (oct, "encode_normal_oct16_fast"),
+        (oct, "encode_normal_oct24"),
+        (oct, "encode_normal_oct24_fast"),
+        (oct, "encode_normal_oct32"),
+        (oct, "encode_normal_oct32_fast"),
+        (hemioct, "encode_normal_hemioct24"),
+        (hemioct, "encode_normal_hemioct24_fast"),
     ];
+    let names = sourced.map(|(_, name)| name);
     let mut list = Vec::new();
-    for name in names {
-        list.push(Function::new(prepass::wgsl::NORMAL_OCT, name));
-        list.push(Function::new(
-            prepass::wgsl::NORMAL_OCT,
-            &format!("{name}_vouched"),
-        ));
+    for (source, name) in sourced {
+        list.push(Function::new(source, name));
+        list.push(Function::new(source, &format!("{name}_vouched")));
     }
     list.push(Function::new(BEVY, "peer_bevy_gbuffer_normal_encode"));
     let report = Costing::new().cost(&list).unwrap();

@@ -1,7 +1,8 @@
 //! `wgsl/normal_hemioct.wgsl` (view-space normals, z ≥ 0, 24 bits) on the adapter: round trip
 //! over the upper half of 2^24 spherical-Fibonacci directions and the adversarial set against
 //! the f64 reproduction, precise-encoder optimality, all 2^24 codes decoded, bad input and the
-//! render-target form — against the Rust twin `src/normal/hemioct.rs`.
+//! render-target form — against the Rust twin `src/normal/hemioct.rs`; and the vouched-input
+//! encoders, the robust codes bit for bit on inputs across their contract.
 
 mod common;
 
@@ -14,56 +15,81 @@ use prepass::sweep::normal::{
     near_tie_directions, optimality_tolerance_deg, precise_optimality, reference_error, round_trip,
 };
 
+/// The upper half (`z ≥ 0`) of 2^24 Fibonacci directions and of the adversarial set.
+fn upper_sets() -> [(&'static str, Vec<[f32; 3]>); 2] {
+    let upper = |v: Vec<[f32; 3]>| v.into_iter().filter(|v| v[2] >= 0.0).collect();
+    [
+        ("fibonacci z >= 0", upper(fibonacci_directions(1 << 24))),
+        ("adversarial z >= 0", upper(adversarial_directions())),
+    ]
+}
+
 #[test]
 fn round_trip_matches_the_f64_reproduction_and_is_optimal() {
-    let upper: Vec<[f32; 3]> = fibonacci_directions(1 << 24)
-        .into_iter()
-        .filter(|v| v[2] >= 0.0)
-        .collect();
-    let adv: Vec<[f32; 3]> = adversarial_directions()
-        .into_iter()
-        .filter(|v| v[2] >= 0.0)
-        .collect();
-    for name in ["hemioct24", "hemioct24 fast"] {
-        let c = codec(name);
-        for (set, inputs) in [("fibonacci z >= 0", &upper), ("adversarial z >= 0", &adv)] {
-            let rt = round_trip(gpu(), c, inputs).unwrap();
-            common::assert_round_trip_matches_twins(&format!("{name} {set}"), c, inputs, &rt);
-            let r = reference_error(c, inputs);
+    let sets = upper_sets();
+    for name in common::HEMIOCTAHEDRAL {
+        check(codec(name), &sets);
+    }
+}
+
+/// The vouched encoders pass the robust ones' round-trip suite on their own (`check`: the WGSL
+/// equals the vouched twin, the error agrees with the f64 reproduction, the precise choice is
+/// optimal among its neighbours) over the same directions, all inside the vouched contract.
+#[test]
+fn vouched_encoders_round_trip_like_the_robust_ones() {
+    let sets = upper_sets();
+    for (set, inputs) in &sets {
+        assert!(
+            inputs.iter().all(|&n| hemioct::is_vouched(n.into())),
+            "{set}"
+        );
+    }
+    for name in common::HEMIOCTAHEDRAL {
+        check(&common::vouched_codec(name), &sets);
+    }
+}
+
+/// Round trip of `c` over `sets`: the WGSL equals the twins, the statistics agree with the f64
+/// reproduction within the derived tolerance, and a precise encoder's choice is optimal.
+fn check(c: &prepass::sweep::normal::Codec, sets: &[(&str, Vec<[f32; 3]>)]) {
+    let name = c.name;
+    for (set, inputs) in sets {
+        let rt = round_trip(gpu(), c, inputs).unwrap();
+        common::assert_round_trip_matches_twins(&format!("{name} {set}"), c, inputs, &rt);
+        let r = reference_error(c, inputs);
+        eprintln!(
+            "{name} {set}: mean {:.6}° max {:.6}° (f64 reproduction {:.6} / {:.6})",
+            rt.error.mean(),
+            rt.error.max,
+            r.mean(),
+            r.max
+        );
+        // Bound: per input the f32 encoder's choice is within optimality_tolerance_deg of
+        // the f64 choice (precise), or the same code up to f32 rounding of the continuous
+        // coordinate (fast: 2^-24 relative of M, far below one code); decoding adds
+        // √2·2^-24 rad. So the statistics agree within that tolerance.
+        let tol = optimality_tolerance_deg();
+        let why = "sweep::normal::optimality_tolerance_deg over the f64 reproduction (above)";
+        assert_within!(rt.error.max, r.max + tol, why, "{name} {set}: max, degrees");
+        assert_within!(
+            rt.error.mean(),
+            r.mean() + tol,
+            why,
+            "{name} {set}: mean, degrees"
+        );
+        if !name.ends_with("fast") {
+            let o = precise_optimality(c, inputs, &rt);
             eprintln!(
-                "{name} {set}: mean {:.6}° max {:.6}° (f64 reproduction {:.6} / {:.6})",
-                rt.error.mean(),
-                rt.error.max,
-                r.mean(),
-                r.max
+                "  worst excess {:.3e}°, {} not the f64-best",
+                o.worst_excess_deg, o.not_best
             );
-            // Bound: per input the f32 encoder's choice is within optimality_tolerance_deg of
-            // the f64 choice (precise), or the same code up to f32 rounding of the continuous
-            // coordinate (fast: 2^-24 relative of M, far below one code); decoding adds
-            // √2·2^-24 rad. So the statistics agree within that tolerance.
-            let tol = optimality_tolerance_deg();
-            let why = "sweep::normal::optimality_tolerance_deg over the f64 reproduction (above)";
-            assert_within!(rt.error.max, r.max + tol, why, "{name} {set}: max, degrees");
             assert_within!(
-                rt.error.mean(),
-                r.mean() + tol,
-                why,
-                "{name} {set}: mean, degrees"
+                o.worst_excess_deg,
+                tol,
+                "sweep::normal::optimality_tolerance_deg",
+                "{name} {set}: worst excess over the best neighbour at input {}",
+                o.argworst
             );
-            if !name.ends_with("fast") {
-                let o = precise_optimality(c, inputs, &rt);
-                eprintln!(
-                    "  worst excess {:.3e}°, {} not the f64-best",
-                    o.worst_excess_deg, o.not_best
-                );
-                assert_within!(
-                    o.worst_excess_deg,
-                    tol,
-                    "sweep::normal::optimality_tolerance_deg",
-                    "{name} {set}: worst excess over the best neighbour at input {}",
-                    o.argworst
-                );
-            }
         }
     }
 }
@@ -138,6 +164,111 @@ fn near_ties() -> Vec<[f32; 3]> {
 #[test]
 fn precise_encoder_equals_the_twin_at_near_ties() {
     common::assert_near_ties(codec("hemioct24"), &near_ties());
+}
+
+/// The vouched precise encoder equals its twin where the candidates' scores nearly tie, as the
+/// robust one does (`precise_encoder_equals_the_twin_at_near_ties`).
+#[test]
+fn vouched_precise_encoder_equals_the_twin_at_near_ties() {
+    common::assert_near_ties(&common::vouched_codec("hemioct24"), &near_ties());
+}
+
+/// Inputs inside the vouched contract (`hemioct::is_vouched`) that the unit upper directions do
+/// not reach: 2^16 Fibonacci directions of the whole sphere (`z < 0` is clamped, as the robust
+/// encoders clamp it) scaled by powers of two across the contract (2^-120 … 2^124) and by 3 and
+/// 0.3 (rounded), kept where still inside it (a scaled-down direction loses the components that
+/// became subnormal); the same directions with `z` replaced by a negative of every size (the
+/// contract lets a negative `z` be any finite value, and its scale is then `(x, y, 0)`'s); all
+/// the near-tie directions; the adversarial set; and the contract's edges (components exactly
+/// 2^-126 · max(1, ‖c‖∞), the largest exactly 2^124), with the zero vectors and the `−z`
+/// half-axis, outside the contract, filtered out.
+fn vouched_inputs() -> Vec<[f32; 3]> {
+    let base = fibonacci_directions(1 << 16);
+    let mut v: Vec<[f32; 3]> = Vec::new();
+    for k in [-120, -100, -64, -20, -1, 0, 1, 3, 20, 64, 100, 123, 124] {
+        let f = 2f32.powi(k);
+        v.extend(base.iter().map(|n| n.map(|x| x * f)));
+    }
+    for f in [3.0f32, 0.3] {
+        v.extend(base.iter().map(|n| n.map(|x| x * f)));
+    }
+    for (i, z) in [-f32::MAX, -1e30, -1.0, -1e-30, -f32::from_bits(1)]
+        .into_iter()
+        .enumerate()
+    {
+        let f = 2f32.powi([-110, -3, 0, 7, 120][i]);
+        v.extend(base.iter().map(|n| [n[0] * f, n[1] * f, z]));
+    }
+    v.extend(near_ties());
+    v.extend(adversarial_directions());
+    let tiny = f32::MIN_POSITIVE;
+    let big = prepass::normal::oct::VOUCHED_MAX;
+    for sx in [1.0f32, -1.0] {
+        for sz in [1.0f32, -1.0] {
+            v.extend([
+                [0.0 * sx, -0.0, 0.0 * sz],
+                [0.0 * sx, -0.0, -sz.abs()],
+                [tiny * sx, 1.0, 0.5 * sz],
+                [tiny * sx, -tiny, sz],
+                [big * sx, big, big * sz],
+                [big * sx, tiny * 2f32.powi(124), sz * big * 0.5],
+                [tiny * sx, 0.0, tiny * sz],
+                [tiny * sx, 0.0, -big * sz.abs()],
+                [0.5 * sx, 0.25, tiny * sz],
+            ]);
+        }
+    }
+    let before = v.len();
+    v.retain(|&n| hemioct::is_vouched(n.into()));
+    eprintln!(
+        "vouched inputs: {} of {before} inside the contract",
+        v.len()
+    );
+    v
+}
+
+/// Inside their contract the vouched encoders return the robust encoders' codes bit for bit:
+/// the WGSL of each pair on the adapter (where it evaluates like the twins, the correctly
+/// rounded case the identity is promised for; elsewhere the mismatches are only counted) and
+/// the Rust twins, over `vouched_inputs` (scaled directions of both hemispheres, negative `z` of
+/// every size, near ties, the contract's edges). So every bound of the robust encoders holds
+/// for the vouched ones.
+#[test]
+fn vouched_encoders_give_the_robust_codes_inside_their_contract() {
+    let inputs = vouched_inputs();
+    let like = common::evaluates_like_the_twins();
+    for name in common::HEMIOCTAHEDRAL {
+        let robust = codec(name);
+        let v = common::vouched_codec(name);
+        let run = |f: &str| {
+            gpu()
+                .kernel(robust.source, f)
+                .unwrap()
+                .run(&[Arg::column(&inputs)], inputs.len() as u64)
+                .unwrap()
+                .into_words()
+        };
+        let (want, got) = (run(robust.encode), run(v.encode));
+        let mut wrong = 0;
+        for (i, &n) in inputs.iter().enumerate() {
+            let (rt, vt) = ((robust.twin_encode)(n.into()), (v.twin_encode)(n.into()));
+            assert_eq!(vt, rt, "{}: twin differs from {name}'s on {n:?}", v.name);
+            if got[i] != want[i] {
+                wrong += 1;
+                assert!(
+                    !like,
+                    "{}: WGSL code {:#x} differs from {}'s {:#x} on {n:?}",
+                    v.name, got[i], robust.encode, want[i]
+                );
+            }
+        }
+        eprintln!(
+            "{}: {wrong} of {} codes differ from {}'s on the adapter (evaluates like the twins: {like})",
+            v.name,
+            inputs.len(),
+            robust.encode
+        );
+    }
 }
 
 /// The encoders before issue 21 (continuous coordinates clamped to `[0, M]` and `floor`

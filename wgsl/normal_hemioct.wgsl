@@ -9,9 +9,10 @@
 // b = 2v - M (both odd, so the halves are exact). Layout: u in bits 0-11, v in bits 12-23;
 // bits 24-31 are left zero (for the material) and ignored by the decoder.
 //
-// Bad input: as wgsl/normal_oct.wgsl (NaN, zero, all-subnormal -> +z; infinities win; any
-// finite length). A negative z is first clamped to 0 (the nearest point of the hemisphere, on
-// the equator); (0, 0, -1) thereby becomes the zero vector and encodes +z.
+// Bad input (the robust encoders; the _vouched ones assume their contract, see "Vouched input"
+// below): as wgsl/normal_oct.wgsl (NaN, zero, all-subnormal -> +z; infinities win; any finite
+// length). A negative z is first clamped to 0 (the nearest point of the hemisphere, on the
+// equator); (0, 0, -1) thereby becomes the zero vector and encodes +z.
 
 // The input made safe as oct_sanitize does (see the header), after clamping z to >= 0.
 fn hemioct_sanitize(n: vec3<f32>) -> vec3<f32> {
@@ -78,7 +79,12 @@ fn hemioct_try(s: vec3<f32>, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>) ->
 // exact; the high half's bias shifts out of the u32, the low half's is taken off).
 fn encode_normal_hemioct24(n: vec3<f32>) -> u32 {
     let s = hemioct_sanitize(n);
-    let c00 = floor(hemioct_continuous(s, 4095u));
+    return hemioct_choose(s, hemioct_continuous(s, 4095u));
+}
+// The precise encoder's choice for a sanitized (or vouched and scaled) input s and its
+// continuous coordinates c: the body of encode_normal_hemioct24, shared with its vouched form.
+fn hemioct_choose(s: vec3<f32>, c: vec2<f32>) -> u32 {
+    let c00 = floor(c);
     let h = (c00.x + c00.y) - 4095.0;
     let k = c00.x - c00.y;
     let h1 = h + 1.0;
@@ -103,6 +109,62 @@ fn encode_normal_hemioct24(n: vec3<f32>) -> u32 {
 fn encode_normal_hemioct24_fast(n: vec3<f32>) -> u32 {
     let uv = vec2<u32>(round(hemioct_continuous(hemioct_sanitize(n), 4095u)));
     return uv.x | (uv.y << 12u);
+}
+
+// ---- Vouched input: for vectors a scene vouches for (its own interpolated normals) ----
+// The contract, on c = (x, y, max(z, 0)), the hemisphere's clamp of n (kept: an interpolated
+// view-space normal at a silhouette can point slightly away from the camera): every component
+// of n finite; every non-zero component of c at least 2^-126 max(1, |c|inf) in magnitude (no
+// subnormals, and none so small beside the largest that hemioct_sanitize's scaling would make
+// it subnormal); 0 < |c|inf = max(|x|, |y|, max(z, 0)) <= 2^124: normal_oct.wgsl's contract,
+// applied to c, so a negative z may be any finite value (the clamp drops it). Within it each
+// vouched encoder returns the robust encoder's code bit for bit on a correctly rounded adapter
+// (hemioct_sanitize would change nothing but an exact power-of-two scale of c, which the
+// projection c.xy / |c|_1 does not see), so the robust forms' error bounds hold. Outside it
+// (NaN, +-Inf, subnormals, |c|inf > 2^124) WGSL leaves the result indeterminate: some u32, which
+// the decoder accepts (bits 24-31 may be set; the decoder ignores them). |c|inf = 0 (the zero
+// vector, or (0, 0, z <= 0)) is outside too: the precise vouched encoder still gives +z for it,
+// as the robust one does (a max on the L1 norm), the fast one leaves it indeterminate (0 / 0).
+
+// c = (x, y, max(z, 0)) times hemioct_sanitize's power of two 2^(127 - e), e the biased exponent
+// of its largest magnitude: exact in the contract (every non-zero component stays at least
+// 2^-126), so it is hemioct_sanitize's vector bit for bit; zero stays zero. The exponent is c's,
+// not n's: scaled by |z| of a negative z, a small c would lose bits to underflow in the scores.
+fn hemioct_scale_vouched(n: vec3<f32>) -> vec3<f32> {
+    let c = vec3<f32>(n.xy, max(n.z, 0.0));
+    let e = bitcast<u32>(max(max(abs(c.x), abs(c.y)), c.z)) >> 23u;
+    return c * bitcast<f32>((254u - e) << 23u);
+}
+
+// hemioct_continuous of a vouched vector scaled by hemioct_scale_vouched, for the precise
+// encoder: its L1 norm, in the contract at least 2^-126 (so unchanged), kept there, so a zero c
+// gives p = 0, the code of +z, as hemioct_sanitize's +z does. (A copy rather than a shared
+// helper, so hemioct_continuous, and the _fast encoder's SPIR-V, stay as they were.)
+fn hemioct_continuous_vouched(s: vec3<f32>, m: u32) -> vec2<f32> {
+    let l1 = max((abs(s.x) + abs(s.y)) + s.z, 1.1754943508222875e-38);
+    let p = s.xy / l1;
+    let q = vec2<f32>(p.x + p.y, p.x - p.y);
+    return clamp(q * 0.5 + 0.5, vec2<f32>(0.0), vec2<f32>(0.99999988079071044921875)) * f32(m);
+}
+
+// encode_normal_hemioct24 for a vector the scene vouches for (the contract above): no
+// sanitising, the same choice.
+fn encode_normal_hemioct24_vouched(n: vec3<f32>) -> u32 {
+    let s = hemioct_scale_vouched(n);
+    return hemioct_choose(s, hemioct_continuous_vouched(s, 4095u));
+}
+
+// encode_normal_hemioct24_fast for a vector the scene vouches for: unscaled (every sum of the
+// L1 norm, of non-negative normal floats at most 3 * 2^124, commutes with the power of two, so
+// does a correctly rounded quotient; the divisor lies in the spec's [2^-126, 2^126] for `/`),
+// and without hemioct_continuous's clamp, which changes no code: |p.x| + |p.y| <= 1 up to a few
+// ULP, so t = q/2 + 1/2 is in [0, 1] up to a few ULP, and round(t M) of a t above the clamp's
+// top 1 - 2^-23 is M, as rounding the top gives; below 0 it is -0. The code u + v 2^12 is summed
+// in f32 (whole numbers below 2^24: exact, fused or not) and converted once.
+fn encode_normal_hemioct24_fast_vouched(n: vec3<f32>) -> u32 {
+    let p = n.xy / ((abs(n.x) + abs(n.y)) + max(n.z, 0.0));
+    let r = round((vec2<f32>(p.x + p.y, p.x - p.y) * 0.5 + 0.5) * 4095.0);
+    return u32(r.y * 4096.0 + r.x);
 }
 
 // The unit vector (z >= 0) of a 2x12-bit hemi-oct code; bits 24-31 are ignored.

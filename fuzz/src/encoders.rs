@@ -328,6 +328,32 @@ pub const ENCODERS: &[Entry] = &[
         },
     },
     codec!(unorm_form; xyz8::encode_normal_xyz8_best_unorm, xyz8::encode_normal_xyz8_best),
+    Entry {
+        name: "normal::hemioct::encode_normal_hemioct24_vouched, _fast_vouched (vouched input)",
+        check: |i| {
+            let n = i.vec3();
+            // Any input: no panic. Inside the contract: the robust encoder's code.
+            let pairs: [(Encoder, Encoder, &str); 2] = [
+                (
+                    hemioct::encode_normal_hemioct24_vouched,
+                    hemioct::encode_normal_hemioct24,
+                    "hemioct24",
+                ),
+                (
+                    hemioct::encode_normal_hemioct24_fast_vouched,
+                    hemioct::encode_normal_hemioct24_fast,
+                    "hemioct24 fast",
+                ),
+            ];
+            let inside = hemioct::is_vouched(n);
+            for (vouched, robust, name) in pairs {
+                let code = vouched(n);
+                if inside {
+                    assert_eq!(code, robust(n), "{name} vouched: {n:?}");
+                }
+            }
+        },
+    },
 ];
 
 /// A fixed-size encoder ([`check_encoder`]) on a direction read from the input.

@@ -140,7 +140,10 @@ impl NormalEncoding {
     /// Whether encoders for vouched input (`_vouched`, `_fast_vouched`) exist beside the robust
     /// ones ([`NormalInput::Vouched`]).
     pub fn has_vouched_encoder(self) -> bool {
-        matches!(self, Self::Oct16 | Self::Oct24 | Self::Oct32)
+        matches!(
+            self,
+            Self::Oct16 | Self::Oct24 | Self::Oct32 | Self::Hemioct24
+        )
     }
 }
 
@@ -163,13 +166,15 @@ pub enum NormalInput {
     Robust,
     /// The scene vouches for its normals (its own interpolated normals): every component finite,
     /// every non-zero one at least `2^-126·max(1, ‖n‖∞)` in magnitude (no subnormals), and
-    /// `0 < ‖n‖∞ ≤ 2^124`. The G-buffer pass calls the `_vouched` encoder
-    /// (`encode_normal_oct24_vouched`, `encode_normal_oct24_fast_vouched`, …): the robust
-    /// encoder's code bit for bit inside that contract without its bad-input handling, and some
-    /// code (indeterminate in WGSL; every decoder accepts it) outside it. Only the octahedral
-    /// encodings (`Oct16`, `Oct24`, `Oct32`) have the vouched form
-    /// ([`NormalEncoding::has_vouched_encoder`]); the contract in full:
-    /// [`crate::normal::oct::encode_precise_vouched`].
+    /// `0 < ‖n‖∞ ≤ 2^124` — for `Hemioct24` the same of `(x, y, max(z, 0))`, the hemisphere's
+    /// clamp it keeps, so a negative `z` may be any finite value. The G-buffer pass calls the
+    /// `_vouched` encoder (`encode_normal_oct24_vouched`, `encode_normal_oct24_fast_vouched`,
+    /// `encode_normal_hemioct24_vouched`, …): the robust encoder's code bit for bit inside that
+    /// contract without its bad-input handling, and some code (indeterminate in WGSL; every
+    /// decoder accepts it) outside it. Only the octahedral encodings (`Oct16`, `Oct24`, `Oct32`)
+    /// and `Hemioct24` have the vouched form ([`NormalEncoding::has_vouched_encoder`]); the
+    /// contracts in full: [`crate::normal::oct::encode_precise_vouched`],
+    /// [`crate::normal::hemioct::encode_normal_hemioct24_vouched`].
     Vouched,
 }
 
@@ -314,7 +319,7 @@ impl Scene {
         {
             return bad(
                 &["normal_input", "normal.encoding"],
-                "only the octahedral encodings (oct16, oct24, oct32) have a `_vouched` encoder",
+                "only the octahedral encodings (oct16, oct24, oct32, hemioct24) have a `_vouched` encoder",
             );
         }
         if self.normal.encoding == Some(NormalEncoding::Substrate)

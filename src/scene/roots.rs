@@ -106,6 +106,8 @@ fn normal_roots(e: NormalEncoding, fast: bool, vouched: bool) -> [&'static str; 
         (NormalEncoding::Oct24, true, true) => "encode_normal_oct24_fast_vouched",
         (NormalEncoding::Oct32, false, true) => "encode_normal_oct32_vouched",
         (NormalEncoding::Oct32, true, true) => "encode_normal_oct32_fast_vouched",
+        (NormalEncoding::Hemioct24, false, true) => "encode_normal_hemioct24_vouched",
+        (NormalEncoding::Hemioct24, true, true) => "encode_normal_hemioct24_fast_vouched",
         // `Scene::validate` refuses vouched input for the other encodings.
         (_, _, true) => unreachable!("validated: {e:?} has no vouched encoder"),
     };

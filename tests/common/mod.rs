@@ -594,6 +594,11 @@ pub const OCTAHEDRAL: [&str; 6] = [
     "oct32 fast",
 ];
 
+/// The hemi-octahedral codecs, each with a vouched-input form ([`vouched_codec`]; the contract
+/// `prepass::normal::hemioct::is_vouched`).
+#[allow(dead_code)]
+pub const HEMIOCTAHEDRAL: [&str; 2] = ["hemioct24", "hemioct24 fast"];
+
 /// The vouched encoders as codecs: the robust codec `name` with its encoder (WGSL and twin)
 /// swapped for the vouched form, the decoder, references and targets kept (the vouched code is
 /// the robust one inside the contract, so the same targets hold).
@@ -630,6 +635,16 @@ pub fn vouched_codec(name: &str) -> prepass::sweep::normal::Codec {
             "oct32 vouched fast",
             "encode_normal_oct32_fast_vouched",
             prepass::normal::oct::encode_normal_oct32_fast_vouched,
+        ),
+        "hemioct24" => (
+            "hemioct24 vouched",
+            "encode_normal_hemioct24_vouched",
+            prepass::normal::hemioct::encode_normal_hemioct24_vouched,
+        ),
+        "hemioct24 fast" => (
+            "hemioct24 vouched fast",
+            "encode_normal_hemioct24_fast_vouched",
+            prepass::normal::hemioct::encode_normal_hemioct24_fast_vouched,
         ),
         _ => panic!("{name} has no vouched form"),
     };
