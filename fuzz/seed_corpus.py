@@ -195,3 +195,15 @@ for v in VECS + [(f(1.0), f(1.0), f(1.0)), (f(255.0), f(-253.0), f(1.0)), (f(3.0
                  (f(0.70710677), f(-0.70710677), f(1e-7))]:
     for e in (36, 37):
         write("encoders", e, words(*v))
+# decoders (appended): 29 decode_normal_signed_oct, 30 _signed_oct_unorm. encoders (appended):
+# 38 encode_normal_signed_oct, 39 _signed_oct_fast, 40 _signed_oct_unorm and z's sign bit
+# (the equator's signed zeros, the poles, the rounding ties of (1, -1, 0)).
+for c in NCODES + [0x17FDFF, 0x7FDFF, 0x180200, 0x3FF, 0x1003FF, 0xFFFFF, 0x1FFFFF, 0xFFE00000]:
+    write("decoders", 29, words(c))
+for ch in CHANNELS + [(f(0.5), f(0.5), f(511 / 1023), PZ), (f(0.5), f(0.5), f(512 / 1023), NAN),
+                      (f(1.0), PZ, NINF, INF)]:
+    write("decoders", 30, words(*ch))
+for v in VECS + [(f(0.6), f(0.8), NZ), (f(0.6), f(0.8), SUB), (f(1.0), f(-1.0), f(1e-7)),
+                 (f(0.0), f(0.0), f(-1.0)), (f(1.0), f(1.0), f(1.0))]:
+    for e in (38, 39, 40):
+        write("encoders", e, words(*v))
