@@ -28,7 +28,10 @@
 //! `sin∠ ≤ 2√6·h`, `h = 1/2046 + 4·2^-24` (half a code and the f32 coordinates' error):
 //! **≤ 0.1373°** for the rounding encoder and O3DE's own (the same codes), and for the precise
 //! encoder that plus `prepass::sweep::normal::optimality_tolerance_deg` (derived and measured in
-//! `tests/normal_signed_oct.rs`). Measured figures are in that file's output and the docs.
+//! `tests/normal_signed_oct.rs`). Measured over 2^20 spherical-Fibonacci directions on lavapipe:
+//! precise mean 0.0593°, max 0.1360°; rounding (and O3DE's encoder, the same codes) mean
+//! 0.0596°, max 0.1360° — the cells' worst points are their centres, where every candidate is
+//! as far; oct20 (the full octahedron in the same R and G) errs up to 0.1575°.
 //!
 //! **Bad input:** as [`crate::normal`] (NaN, zero, all-subnormal → `+z`; infinities win; any
 //! finite length). `z = ±0` after that writes bit 20 clear, as O3DE's `saturate(0·FLT_MAX) = 0`.
