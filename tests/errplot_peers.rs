@@ -144,16 +144,6 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
          against 0.0596° over 2^20 directions)",
     ),
     (
-        "decode_normal_signed_oct",
-        &[O3DE_SIGNED_OCT],
-        "the same directions (either decoder reads either's texels within 2e-5°, \
-         tests/normal_signed_oct.rs); this one normalises the exact integer vector \
-         (u − v, u + v − 1023, ±(1023 − |·| − |·|)), within √2·2^-24 rad of the code's \
-         direction, where O3DE's rounds k/1023 first; its row's max error is the encoder's \
-         (the same codes), differing in the fifth digit by the readers' rounding at the worst \
-         direction",
-    ),
-    (
         "encode_normal_signed_oct_fast",
         &[O3DE_SIGNED_OCT],
         "bit for bit O3DE's codes for unit input away from subnormals (tests/normal_signed_oct.rs); \

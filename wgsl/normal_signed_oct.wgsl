@@ -77,10 +77,12 @@ fn signed_oct_continuous(s: vec3<f32>) -> vec2<f32> {
 }
 
 // The integer direction of codes c = (u, v) (whole numbers, in f32) on the upper hemisphere
-// (see the header): (u - v, (u + v) - M, (M - |x|) - |y|), each an integer below 2^11: exact.
+// (see the header): (u - v, (u + v) - M) as a matrix product with entries +-1, and
+// z = M - (|x| + |y|); every value an integer below 2^11, so every operation is exact on any
+// conforming adapter, fused or not.
 fn signed_oct_lattice(c: vec2<f32>) -> vec3<f32> {
-    let h = vec2<f32>(c.x - c.y, (c.x + c.y) - 1023.0);
-    return vec3<f32>(h, (1023.0 - abs(h.x)) - abs(h.y));
+    let h = mat2x2<f32>(1.0, 1.0, -1.0, 1.0) * c - vec2<f32>(0.0, 1023.0);
+    return vec3<f32>(h, 1023.0 - dot(abs(h), vec2<f32>(1.0)));
 }
 
 // One step of the precise encoder's choice, as normal_hemioct.wgsl's hemioct_try: the code
@@ -142,10 +144,11 @@ fn encode_normal_signed_oct_fast(n: vec3<f32>) -> u32 {
 }
 
 // The unit vector of a signed-octahedral code: normalize(D), z negated (to -0 on the equator)
-// when bit 20 is clear; bits 21-31 are ignored.
+// when bit 20 is clear -- z >= 0, so negating is setting its sign bit, bit 20 clear moved to bit
+// 31; bits 21-31 are ignored.
 fn decode_normal_signed_oct(p: u32) -> vec3<f32> {
-    let d = signed_oct_lattice(vec2<f32>(vec2<u32>(p & 0x3ffu, (p >> 10u) & 0x3ffu)));
-    let z = select(-d.z, d.z, (p & 0x100000u) != 0u);
+    let d = signed_oct_lattice(vec2<f32>(vec2<u32>(p, p >> 10u) & vec2<u32>(0x3ffu)));
+    let z = bitcast<f32>(bitcast<u32>(d.z) | ((~p & 0x100000u) << 11u));
     return normalize(vec3<f32>(d.xy, z));
 }
 
