@@ -201,3 +201,15 @@ for v in VECS + [(f(0.6), f(0.0), f(-0.8)), (NZ, f(1e-38), f(-1.0)), (f(2.0 ** 1
                  (f(1e-30), f(1e-30), f(-1e-30)), (f(1e-30), f(0.0), f(-3e38)),
                  (PZ, NZ, f(-1.0)), (f(1.1754944e-38), f(0.0), f(-1024.0))]:
     write("encoders", 38, words(*v))
+# decoders (appended): 29 decode_normal_signed_oct, 30 _signed_oct_unorm. encoders (appended):
+# 39 encode_normal_signed_oct, 40 _signed_oct_fast, 41 _signed_oct_unorm and z's sign bit
+# (the equator's signed zeros, the poles, the rounding ties of (1, -1, 0)).
+for c in NCODES + [0x17FDFF, 0x7FDFF, 0x180200, 0x3FF, 0x1003FF, 0xFFFFF, 0x1FFFFF, 0xFFE00000]:
+    write("decoders", 29, words(c))
+for ch in CHANNELS + [(f(0.5), f(0.5), f(511 / 1023), PZ), (f(0.5), f(0.5), f(512 / 1023), NAN),
+                      (f(1.0), PZ, NINF, INF)]:
+    write("decoders", 30, words(*ch))
+for v in VECS + [(f(0.6), f(0.8), NZ), (f(0.6), f(0.8), SUB), (f(1.0), f(-1.0), f(1e-7)),
+                 (f(0.0), f(0.0), f(-1.0)), (f(1.0), f(1.0), f(1.0))]:
+    for e in (39, 40, 41):
+        write("encoders", e, words(*v))

@@ -15,7 +15,7 @@ mod common;
 use glam::Vec3;
 use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br};
 use prepass::depth24 as d24;
-use prepass::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
+use prepass::normal::{hemioct, oct, signed_oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use prepass::precision::inputs::{ChannelError, sign_pattern, unorm8_channel};
 use prepass::sweep::normal::{
     RenderTarget, adversarial_directions, bad_inputs, fibonacci_directions, stratified_codes32,
@@ -546,6 +546,61 @@ fn substrate_every_code_and_rounding_encoder() {
         substrate::encode_substrate_normal_fast,
         bn::encode_substrate_normal_fast,
         encode_substrate_normal_fast_with
+    );
+}
+
+/// O3DE's signed octahedron: every 2^21 code (bits 21–31 carrying noise) through the decoder,
+/// the render-target decoder on every code's exact channels and on channels read from special
+/// bit patterns (NaN, ±Inf, ±0, subnormals, B either side of 1/2), and the precise, rounding and
+/// render-target encoders over the encoder inputs.
+#[test]
+fn signed_oct_every_code_and_encoders() {
+    let codes: Vec<u32> = (0..1u32 << 21)
+        .map(|k| k | (k.wrapping_mul(2_654_435_761) & !0x1f_ffff))
+        .collect();
+    check!(
+        &codes,
+        signed_oct::decode_normal_signed_oct,
+        bn::decode_normal_signed_oct,
+        decode_normal_signed_oct_with
+    );
+    let k = |x: u32| (x & 0x3ff) as f32 / 1023.0;
+    let mut channels: Vec<[f32; 4]> = (0..1u32 << 21)
+        .map(|p| [k(p), k(p >> 10), ((p >> 20) & 1) as f32, 0.5])
+        .collect();
+    let s = special_components();
+    let b = [0.0, 1.0, 511.0 / 1023.0, 512.0 / 1023.0, 0.5, 0.7];
+    for &x in &s {
+        for &y in &s {
+            for &z in s.iter().chain(&b) {
+                channels.push([x, y, z, x]);
+            }
+        }
+    }
+    check!(
+        &channels,
+        signed_oct::decode_normal_signed_oct_unorm,
+        bn::decode_normal_signed_oct_unorm,
+        decode_normal_signed_oct_unorm_with
+    );
+    let v = encoder_inputs();
+    check!(
+        v,
+        signed_oct::encode_normal_signed_oct,
+        bn::encode_normal_signed_oct,
+        encode_normal_signed_oct_with
+    );
+    check!(
+        v,
+        signed_oct::encode_normal_signed_oct_fast,
+        bn::encode_normal_signed_oct_fast,
+        encode_normal_signed_oct_fast_with
+    );
+    check!(
+        v,
+        signed_oct::encode_normal_signed_oct_unorm,
+        bn::encode_normal_signed_oct_unorm,
+        encode_normal_signed_oct_unorm_with
     );
 }
 

@@ -1283,7 +1283,7 @@ fn identity_reproduces_every_shipped_module_bit_for_bit() {
 #[test]
 fn exact_functions_are_exact_on_their_domain() {
     use prepass::conforming::EXACT_FUNCTIONS;
-    use prepass::wgsl::{NORMAL_HEMIOCT, NORMAL_OCT};
+    use prepass::wgsl::{NORMAL_HEMIOCT, NORMAL_OCT, NORMAL_SIGNED_OCT};
     let codes = |bits: u32| -> Vec<[f32; 2]> {
         let m = (1u32 << bits) - 1;
         let mut v: Vec<[u32; 2]> = Vec::new();
@@ -1309,6 +1309,7 @@ fn exact_functions_are_exact_on_their_domain() {
         (NORMAL_OCT, "oct_lattice", 12),
         (NORMAL_OCT, "oct_lattice", 16),
         (NORMAL_HEMIOCT, "hemioct_lattice", 12),
+        (NORMAL_SIGNED_OCT, "signed_oct_lattice", 10),
     ] {
         let c = codes(bits);
         let mf = ((1u32 << bits) - 1) as f32;
@@ -1613,6 +1614,8 @@ fn every_normal_encoding_under_emulation() {
     let codes_for = |c: &prepass::sweep::normal::Codec| match c.bits {
         16 => codes16.clone(),
         24 => codes24.clone(),
+        // The signed octahedron: every 7th of its 2^21 codes, and the last.
+        21 => (0..1 << 21).step_by(7).chain([(1 << 21) - 1]).collect(),
         // xyz10: the stratified 32-bit sample's low 30 bits.
         30 => codes32.iter().map(|p| p & 0x3fff_ffff).collect(),
         _ => codes32.clone(),
@@ -1644,7 +1647,9 @@ fn every_normal_encoding_under_emulation() {
             "{} {policy}: decoder |len − 1| = {len_dec:e} beyond the conforming budget {UNIT_TOLERANCE_CONFORMING:e}, or a non-finite result (max angle {}°)",
             c.name, e.decoder.max_angle_deg
         );
-        if (c.name.starts_with("oct") || c.name == "substrate") && !c.name.ends_with("fast") {
+        if (c.name.starts_with("oct") || c.name == "substrate" || c.name == "signed oct")
+            && !c.name.ends_with("fast")
+        {
             let o = precise_optimality(c, &inputs, &e.round_trip);
             let tol = optimality_tolerance_conforming_deg();
             eprintln!(
@@ -1949,8 +1954,8 @@ fn precise_choice_searched_on_the_decision_margin() {
         .collect();
     assert_eq!(
         precise.len(),
-        5,
-        "oct16, oct20, oct24, oct32 and hemioct24 precise"
+        6,
+        "oct16, oct20, oct24, oct32, hemioct24 and the signed octahedron precise"
     );
     let jobs: Vec<_> = precise
         .iter()

@@ -28,6 +28,7 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
             URP_SNORM8,
             UNITY_OCT24,
             UNREAL_SUBSTRATE,
+            O3DE_SIGNED_OCT,
         ],
         "kept as Resistance 2's layout and Godot's (its best-fit normals decode with this \
          decoder): the components are stored linearly, so filtering, MSAA resolve and blending \
@@ -57,6 +58,7 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
             URP_SNORM8,
             UNITY_OCT24,
             UNREAL_SUBSTRATE,
+            O3DE_SIGNED_OCT,
         ],
         "kept as Killzone 2's layout (view-space x, y in FP16, z rebuilt), for comparison with \
          the talks; for new G-buffers an octahedral code is more accurate per bit",
@@ -95,7 +97,13 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
     ),
     (
         "encode_normal_snorm8",
-        &[BEVY_OCT24, MESHOPT_K12, UNITY_OCT24, UNREAL_SUBSTRATE],
+        &[
+            BEVY_OCT24,
+            MESHOPT_K12,
+            UNITY_OCT24,
+            UNREAL_SUBSTRATE,
+            O3DE_SIGNED_OCT,
+        ],
         "kept as URP's snorm8 layout (linear: filtering and blending stay meaningful); an \
          octahedral code is more accurate in the same bits. Against URP's own write it is not \
          dominated on these directions",
@@ -114,6 +122,7 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
             SURVEY_OCT24,
             UNITY_OCT24,
             UNREAL_SUBSTRATE,
+            O3DE_SIGNED_OCT,
         ],
         "kept as Godot 4's format (best-fit normals in RGB8, read by `decode_normal_xyz8` and \
          Godot's reader): its code is the nearest of the format's 2^24 (tests/normal_xyz8.rs, \
@@ -121,6 +130,26 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
          measured; an octahedral code is more accurate in 24 bits (or Substrate's 22) but is another format, which \
          filtering and blending break. Its SPIR-V count understates its run time: a loop over \
          128 planes",
+    ),
+    (
+        "encode_normal_signed_oct",
+        &[O3DE_SIGNED_OCT],
+        "O3DE's own format and lattice: its max error is the rounding encoder's (the cells' \
+         worst points are their centres, where every candidate is as far), and the peer's row \
+         measures lower only through its f32 reader, which rounds k/1023, R − G and R + G − 1 \
+         where prepass's decoder normalises the exact integer vector (each reads the other's \
+         texels within 2e-5°, tests/normal_signed_oct.rs); the extra instructions are the \
+         bad-input contract (O3DE's divides by |n|₁: the zero vector gives NaN, NaN an \
+         undefined code) and the choice among four candidates, which lowers the mean (0.0593° \
+         against 0.0596° over 2^20 directions)",
+    ),
+    (
+        "encode_normal_signed_oct_fast",
+        &[O3DE_SIGNED_OCT],
+        "bit for bit O3DE's codes for unit input away from subnormals (tests/normal_signed_oct.rs); \
+         the extra instructions are the bad-input contract (NaN, zero and subnormal vectors → +z, \
+         infinities, any finite length without overflow) that O3DE's formula leaves undefined; \
+         the max differs in the fifth digit through the readers' rounding",
     ),
     (
         "encode_normal_oct24_fast_vouched",
@@ -158,6 +187,7 @@ const UNITY_OCT24: &str = "peer:unity hdrp oct 12:12 (×4095.5)";
 const UNREAL_SUBSTRATE: &str = "peer:unreal substrate oct 11:11 (trunc)";
 const SURVEY_OCT24: &str = "peer:survey precise24 (f32 dot)";
 const GODOT_XYZ8: &str = "peer:godot best-fit xyz8 (lookup texel inline)";
+const O3DE_SIGNED_OCT: &str = "peer:o3de signed oct 10:10 + sign (rgb10a2)";
 
 fn spirv(source: &str, function: &str) -> f64 {
     spirv_instruction_count(source, function)
@@ -382,7 +412,7 @@ fn peers_dominate_only_the_listed_functions_on_spirv_count() {
         "Peers: Bevy's G-buffer oct24 and `−near/d`, meshoptimizer's octahedral filter (K = 8, \
          12, 16), the JCGT survey's precise encoder (f32 dot), Unreal's and Bevy's RGB10A2 \
          `n·0.5 + 0.5`, URP's snorm8 target, HDRP's octahedral 12:12 (`u32(f·4095.5)`), Unreal Substrate's truncated 11:11 octahedron, Godot's best-fit xyz8 (its lookup texel computed \
-         inline, so its SPIR-V count is not Godot's cost), LYGIA's `linearizeDepth` and \
+         inline, so its SPIR-V count is not Godot's cost), O3DE's signed octahedron in RGB10A2, LYGIA's `linearizeDepth` and \
          `depth2viewZ`, re-implemented in WGSL (`tests/baselines/peer_*.wgsl`) and measured on \
          errplot's quick inputs (2^16 Fibonacci directions, every 24-bit depth code, 2^20 \
          reversed float depths) on {}. On (max error, SPIR-V count), with no more stored bits, {} of \

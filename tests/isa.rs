@@ -319,6 +319,7 @@ fn precise_over_rounding_encoders_on_every_target() {
         ("normal_oct", "encode_normal_oct24"),
         ("normal_oct", "encode_normal_oct32"),
         ("normal_hemioct", "encode_normal_hemioct24"),
+        ("normal_signed_oct", "encode_normal_signed_oct"),
     ];
     let mut list = Vec::new();
     for (stem, name) in pairs {

@@ -27,7 +27,7 @@ light_prepass: render a light pre-pass frame headless and write PNGs.
   --out DIR              output folder (default light_prepass-out)
   --size WxH             resolution (default 1280x720)
   --lights N             random point and spot lights (default 256; 3 bad-input lights are added)
-  --normal NAME          xyz8 | oct16 | oct24 | oct32 | xy-fp16 | hemioct24 | xyz10 | oct20 | snorm8 | oct24-unity | fat (default oct24)
+  --normal NAME          xyz8 | oct16 | oct24 | oct32 | xy-fp16 | hemioct24 | xyz10 | oct20 | signed-oct | snorm8 | oct24-unity | fat (default oct24)
   --depth NAME           d32f | d24-rgba8 (default d32f; fat stores f32 view depth)
   --convention NAME      reversed | standard (default reversed)
   --far F                far plane, or inf (default inf: infinite projection)
@@ -89,6 +89,7 @@ fn parse() -> Result<Args, String> {
                     "hemioct24" => Some(NormalEncoding::Hemioct24),
                     "xyz10" => Some(NormalEncoding::Xyz10),
                     "oct20" => Some(NormalEncoding::Oct20),
+                    "signed-oct" => Some(NormalEncoding::SignedOct),
                     "snorm8" => Some(NormalEncoding::Snorm8),
                     "oct24-unity" => Some(NormalEncoding::Oct24Unity),
                     "fat" => None,

@@ -11,7 +11,7 @@ use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::batch::{Level, depth24 as bd, normal as bn, roughness as br, roughness_ggx as bg};
 use prepass::depth24 as d24;
-use prepass::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
+use prepass::normal::{hemioct, oct, signed_oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use prepass::roughness as r;
 use prepass::roughness_ggx as g;
 
@@ -512,6 +512,36 @@ pub const BATCH: &[Entry] = &[
         xyz8::encode_normal_xyz8_best_unorm,
         bn::encode_normal_xyz8_best_unorm,
         encode_normal_xyz8_best_unorm_with
+    ),
+    entry!(
+        Vec3,
+        signed_oct::encode_normal_signed_oct,
+        bn::encode_normal_signed_oct,
+        encode_normal_signed_oct_with
+    ),
+    entry!(
+        Vec3,
+        signed_oct::encode_normal_signed_oct_fast,
+        bn::encode_normal_signed_oct_fast,
+        encode_normal_signed_oct_fast_with
+    ),
+    entry!(
+        u32,
+        signed_oct::decode_normal_signed_oct,
+        bn::decode_normal_signed_oct,
+        decode_normal_signed_oct_with
+    ),
+    entry!(
+        Vec3,
+        signed_oct::encode_normal_signed_oct_unorm,
+        bn::encode_normal_signed_oct_unorm,
+        encode_normal_signed_oct_unorm_with
+    ),
+    entry!(
+        [f32; 4],
+        signed_oct::decode_normal_signed_oct_unorm,
+        bn::decode_normal_signed_oct_unorm,
+        decode_normal_signed_oct_unorm_with
     ),
 ];
 

@@ -6,7 +6,7 @@ use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::assert_within_abs;
 use prepass::depth24::{self, DEPTH24_MAX};
-use prepass::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
+use prepass::normal::{hemioct, oct, signed_oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use prepass::roughness;
 use prepass::roughness_ggx as ggx;
 
@@ -322,6 +322,28 @@ pub const DECODERS: &[Entry] = &[
             assert_eq!(
                 v,
                 oct::decode_normal_oct20(rgb10a2_code(c) & 0xf_ffff),
+                "{c:?}"
+            );
+        },
+    },
+    codec!(code_decoder; signed_oct::decode_normal_signed_oct, 21),
+    Entry {
+        name: "normal::signed_oct::decode_normal_signed_oct_unorm",
+        check: |i| {
+            // R and G as xyz10's channels; z > 0 when B's code (as xyz10 reads it) is at least
+            // 512; A ignored.
+            let c = [i.f32(), i.f32(), i.f32(), i.f32()];
+            let v = signed_oct::decode_normal_signed_oct_unorm(c);
+            assert_unit(v, format_args!("{c:?}"));
+            let k = rgb10a2_code(c);
+            let sign = if (k >> 20) & 0x3ff >= 512 {
+                signed_oct::SIGN_BIT
+            } else {
+                0
+            };
+            assert_eq!(
+                v,
+                signed_oct::decode_normal_signed_oct((k & 0xf_ffff) | sign),
                 "{c:?}"
             );
         },

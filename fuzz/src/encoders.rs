@@ -7,7 +7,7 @@ use crate::{Entry, Input};
 use glam::Vec3;
 use prepass::assert_within_abs;
 use prepass::depth24::{self, DEPTH24_MAX};
-use prepass::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
+use prepass::normal::{hemioct, oct, signed_oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use prepass::roughness;
 use prepass::roughness_ggx as ggx;
 
@@ -351,6 +351,28 @@ pub const ENCODERS: &[Entry] = &[
                 if inside {
                     assert_eq!(code, robust(n), "{name} vouched: {n:?}");
                 }
+            }
+        },
+    },
+    codec!(encoder; signed_oct::encode_normal_signed_oct, 21),
+    codec!(encoder; signed_oct::encode_normal_signed_oct_fast, 21),
+    Entry {
+        name: "normal::signed_oct::encode_normal_signed_oct_unorm, and z's sign bit",
+        check: |i| {
+            // R and G hold u and v as unorm10, B is bit 20 (0 or 1), A is the renderer's (0).
+            let n = i.vec3();
+            let p = signed_oct::encode_normal_signed_oct(n);
+            let mut want = rgb10a2_channels(p & 0xf_ffff);
+            want[2] = ((p >> 20) & 1) as f32;
+            assert_eq!(signed_oct::encode_normal_signed_oct_unorm(n), want, "{n:?}");
+            // Both encoders set bit 20 exactly when the sanitised z is positive (+z for the
+            // degenerate inputs).
+            let z = prepass::normal::sanitize(n).map_or(1.0, |s| s.z);
+            for enc in [
+                signed_oct::encode_normal_signed_oct,
+                signed_oct::encode_normal_signed_oct_fast,
+            ] {
+                assert_eq!(enc(n) & signed_oct::SIGN_BIT != 0, z > 0.0, "{n:?}");
             }
         },
     },

@@ -1,5 +1,6 @@
 //! Batch twins of the normal encodings ([`crate::normal`]): xyz8 (and its best-fit encoder), xyz10, snorm8, xy FP16, octahedral 16/20/24/32 (24 also in Unity's byte order), Unreal Substrate's centred 11:11 normal
-//! (precise and rounding encoders, and the generic `bits` forms), hemi-octahedral 24, and every
+//! (precise and rounding encoders, and the generic `bits` forms), hemi-octahedral 24, O3DE's
+//! signed octahedron, and every
 //! `_unorm` render-target form. Names, the slice contract and the vectorisation: [`crate::batch`].
 //!
 //! Each function writes exactly what its scalar twin returns for every input (checked by
@@ -12,7 +13,7 @@
 //! encoder's arithmetic.
 
 use super::{batch_fn, round_even_small};
-use crate::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
+use crate::normal::{hemioct, oct, signed_oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use glam::{Vec2, Vec3};
 
 // ---------------------------------------------------------------------------------------------
@@ -279,6 +280,69 @@ fn hemioct_round_lane(n: Vec3) -> u32 {
 fn hemioct_decode_lane(p: u32) -> Vec3 {
     let d = hemioct_lattice(p & 0xfff, (p >> 12) & 0xfff);
     normalize(Vec3::new(d[0] as f32, d[1] as f32, d[2] as f32))
+}
+
+/// [`signed_oct::lattice`] for `(u, v)` (the upper hemisphere: `z ≥ 0`); every value is below
+/// 2^11.
+#[inline(always)]
+fn signed_oct_lattice(u: u32, v: u32) -> [i32; 3] {
+    let m = signed_oct::M as i32;
+    let x = (u as i32).wrapping_sub(v as i32);
+    let y = (u as i32).wrapping_add(v as i32).wrapping_sub(m);
+    [
+        x,
+        y,
+        m.wrapping_sub(x.wrapping_abs())
+            .wrapping_sub(y.wrapping_abs()),
+    ]
+}
+
+/// [`signed_oct::continuous`]: O3DE's order of operations.
+#[inline(always)]
+fn signed_oct_continuous(s: Vec3) -> Vec2 {
+    let a = s.abs();
+    let l1 = (a.x + a.y) + a.z;
+    let p = Vec2::new(s.x / l1, s.y / l1);
+    let y0 = p.y * 0.5 + 0.5;
+    let rg = Vec2::new(p.x * 0.5 + y0, p.x * -0.5 + y0);
+    rg.clamp(Vec2::ZERO, Vec2::splat(signed_oct::CONTINUOUS_TOP)) * signed_oct::M as f32
+}
+
+#[inline(always)]
+fn signed_oct_precise_lane(n: Vec3) -> u32 {
+    let s = sanitize_or_z(n);
+    let a = Vec3::new(s.x, s.y, s.z.abs());
+    let (u, v) = best_of_four(a, signed_oct_continuous(s), signed_oct_lattice);
+    u | (v << 10) | sel(s.z > 0.0, signed_oct::SIGN_BIT, 0)
+}
+
+#[inline(always)]
+fn signed_oct_round_lane(n: Vec3) -> u32 {
+    let s = sanitize_or_z(n);
+    let c = signed_oct_continuous(s);
+    round_even_small(c.x) | (round_even_small(c.y) << 10) | sel(s.z > 0.0, signed_oct::SIGN_BIT, 0)
+}
+
+/// The twin's decode: z (an integer ≥ 0, so `+0` or positive as f32) negated when bit 20 is
+/// clear by setting its sign bit, which is the twin's `−z` (`−0` on the equator).
+#[inline(always)]
+fn signed_oct_decode_lane(p: u32) -> Vec3 {
+    let d = signed_oct_lattice(p & 0x3ff, (p >> 10) & 0x3ff);
+    let z = (d[2] as f32).to_bits() | sel(p & signed_oct::SIGN_BIT == 0, 0x8000_0000, 0);
+    normalize(Vec3::new(d[0] as f32, d[1] as f32, f32::from_bits(z)))
+}
+
+#[inline(always)]
+fn signed_oct_encode_unorm(n: Vec3) -> [f32; 4] {
+    let p = signed_oct_precise_lane(n);
+    let b = f32::from_bits(sel(p & signed_oct::SIGN_BIT != 0, 0x3f80_0000, 0));
+    [unorm10_lane(p), unorm10_lane(p >> 10), b, 0.0]
+}
+
+#[inline(always)]
+fn signed_oct_decode_unorm(c: [f32; 4]) -> Vec3 {
+    let sign = sel(unorm10_code_lane(c[2]) >= 512, signed_oct::SIGN_BIT, 0);
+    signed_oct_decode_lane(unorm10_code_lane(c[0]) | (unorm10_code_lane(c[1]) << 10) | sign)
 }
 
 /// The per-channel unorm encoders (xyz8: `M = 255`, `W = 8`; xyz10: `1023`, `10`):
@@ -994,4 +1058,43 @@ batch_fn!(
     (), [f32; 4] => Vec3,
     scalar: hemioct::decode_normal_hemioct24_unorm,
     lane: hemioct_decode_unorm,
+);
+
+batch_fn!(
+    /// Batch [`signed_oct::encode_normal_signed_oct`].
+    encode_normal_signed_oct, encode_normal_signed_oct_with, "normal::encode_normal_signed_oct",
+    (), Vec3 => u32,
+    scalar: signed_oct::encode_normal_signed_oct,
+    lane: signed_oct_precise_lane,
+);
+batch_fn!(
+    /// Batch [`signed_oct::encode_normal_signed_oct_fast`].
+    encode_normal_signed_oct_fast, encode_normal_signed_oct_fast_with,
+    "normal::encode_normal_signed_oct_fast",
+    (), Vec3 => u32,
+    scalar: signed_oct::encode_normal_signed_oct_fast,
+    lane: signed_oct_round_lane,
+);
+batch_fn!(
+    /// Batch [`signed_oct::decode_normal_signed_oct`].
+    decode_normal_signed_oct, decode_normal_signed_oct_with, "normal::decode_normal_signed_oct",
+    (), u32 => Vec3,
+    scalar: signed_oct::decode_normal_signed_oct,
+    lane: signed_oct_decode_lane,
+);
+batch_fn!(
+    /// Batch [`signed_oct::encode_normal_signed_oct_unorm`].
+    encode_normal_signed_oct_unorm, encode_normal_signed_oct_unorm_with,
+    "normal::encode_normal_signed_oct_unorm",
+    (), Vec3 => [f32; 4],
+    scalar: signed_oct::encode_normal_signed_oct_unorm,
+    lane: signed_oct_encode_unorm,
+);
+batch_fn!(
+    /// Batch [`signed_oct::decode_normal_signed_oct_unorm`].
+    decode_normal_signed_oct_unorm, decode_normal_signed_oct_unorm_with,
+    "normal::decode_normal_signed_oct_unorm",
+    (), [f32; 4] => Vec3,
+    scalar: signed_oct::decode_normal_signed_oct_unorm,
+    lane: signed_oct_decode_unorm,
 );

@@ -358,6 +358,11 @@ pub const EXACT_FUNCTIONS: &[(&str, &str)] = &[
         "wgsl/normal_hemioct.wgsl: called with whole-number codes c <= 4095, every value it \
          computes is an integer of magnitude below 2^14",
     ),
+    (
+        "signed_oct_lattice",
+        "wgsl/normal_signed_oct.wgsl: called with whole-number codes c <= 1023, every value it \
+         computes is an integer of magnitude below 2^11",
+    ),
 ];
 
 /// What to emulate.

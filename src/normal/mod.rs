@@ -10,6 +10,7 @@
 //! | view-space x, y as FP16 in RGBA8, z rebuilt (Killzone 2) | 32 | `wgsl/normal_xy_fp16.wgsl` | [`xy_fp16`] |
 //! | octahedral, precise and rounding encoders (Cigolle et al. 2014) | 16, 24, 32 | `wgsl/normal_oct.wgsl` | [`oct`] |
 //! | hemi-octahedral, view-space `z ≥ 0` only (for comparison) | 24 | `wgsl/normal_hemioct.wgsl` | [`hemioct`] |
+//! | O3DE's signed octahedron: hemi-octahedral 10:10 of `(x, y, |z|)` and z's sign, in RGB10A2 | 21 (+11) | `wgsl/normal_signed_oct.wgsl` | [`signed_oct`] |
 //! | octahedral 11:11 on a centred grid, with roughness and flags (Unreal 5 Substrate) | 22 (+10) | `wgsl/normal_substrate.wgsl` | [`substrate`] |
 //!
 //! **Twins.** Every encoder is bit-identical to its WGSL twin on a correctly rounded adapter
@@ -50,6 +51,7 @@ pub const UNIT_TOLERANCE: f64 = 4.0 / 8_388_608.0;
 
 pub mod hemioct;
 pub mod oct;
+pub mod signed_oct;
 pub mod snorm8;
 pub mod substrate;
 pub mod xy_fp16;

@@ -209,6 +209,11 @@ impl Scene {
                     TargetFormat::Rgb10a2Unorm,
                     "rg: octahedral u, v (10 bits each), b: 10 bits free, a: 2 bits free".into(),
                 ),
+                NormalEncoding::SignedOct => (
+                    TargetFormat::Rgb10a2Unorm,
+                    "rg: signed-octahedral u, v (10 bits each), b: z's sign (0 or 1), a: 2 bits free"
+                        .into(),
+                ),
                 NormalEncoding::Xyz10 => (
                     TargetFormat::Rgb10a2Unorm,
                     "rgb: normal xyz10 (10 bits each), a: 2 bits free".into(),

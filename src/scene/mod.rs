@@ -110,11 +110,14 @@ pub enum NormalEncoding {
     /// xyz8's format written by the best-fit encoder (Godot 4's normal_roughness: the nearest of
     /// the 2^24 codes), read by xyz8's decoder; alpha free.
     Xyz8Best,
+    /// O3DE's signed octahedron in RGB10A2: R and G the hemi-octahedral 10:10 code of
+    /// `(x, y, |z|)`, B z's sign (0 or 1), A (2 bits) free.
+    SignedOct,
 }
 
 impl NormalEncoding {
     /// Every encoding.
-    pub const ALL: [NormalEncoding; 12] = [
+    pub const ALL: [NormalEncoding; 13] = [
         Self::Xyz8,
         Self::XyFp16,
         Self::Oct16,
@@ -127,6 +130,7 @@ impl NormalEncoding {
         Self::Oct24Unity,
         Self::Substrate,
         Self::Xyz8Best,
+        Self::SignedOct,
     ];
 
     /// Whether a cheaper rounding encoder (`_fast`) exists beside the precise one.

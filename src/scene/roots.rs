@@ -67,6 +67,13 @@ fn normal_roots(e: NormalEncoding, fast: bool, vouched: bool) -> [&'static str; 
             "encode_normal_hemioct24_unorm",
             "decode_normal_hemioct24_unorm",
         ),
+        NormalEncoding::SignedOct => (
+            "encode_normal_signed_oct",
+            "encode_normal_signed_oct_fast",
+            "decode_normal_signed_oct",
+            "encode_normal_signed_oct_unorm",
+            "decode_normal_signed_oct_unorm",
+        ),
         NormalEncoding::Xyz10 => (
             "encode_normal_xyz10",
             "encode_normal_xyz10",

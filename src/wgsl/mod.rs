@@ -74,6 +74,10 @@ pub const NORMAL_HEMIOCT: &str = include_str!("../../wgsl/normal_hemioct.wgsl");
 /// normal with roughness and flags (twin: [`crate::normal::substrate`]).
 pub const NORMAL_SUBSTRATE: &str = include_str!("../../wgsl/normal_substrate.wgsl");
 
+/// `wgsl/normal_signed_oct.wgsl`: O3DE's signed octahedron in RGB10A2, 10:10 hemi-octahedral
+/// codes of `(x, y, |z|)` and z's sign (twin: [`crate::normal::signed_oct`]).
+pub const NORMAL_SIGNED_OCT: &str = include_str!("../../wgsl/normal_signed_oct.wgsl");
+
 /// Every shipped WGSL file. `tests/wgsl_validate.rs` checks this list against the directory.
 pub const FILES: &[WgslFile] = &[
     WgslFile {
@@ -103,6 +107,10 @@ pub const FILES: &[WgslFile] = &[
     WgslFile {
         name: "normal_oct.wgsl",
         source: NORMAL_OCT,
+    },
+    WgslFile {
+        name: "normal_signed_oct.wgsl",
+        source: NORMAL_SIGNED_OCT,
     },
     WgslFile {
         name: "normal_snorm8.wgsl",

@@ -97,6 +97,7 @@ mod lpp;
 mod normal;
 mod normal_hemioct;
 mod normal_oct;
+mod normal_signed_oct;
 mod normal_snorm8;
 mod normal_substrate;
 mod normal_xy_fp16;
@@ -293,6 +294,7 @@ pub const TABLES: &[Table] = &[
     table!(normal_oct),
     table!(normal_hemioct),
     table!(normal_substrate),
+    table!(normal_signed_oct),
     table!(normal),
 ];
 

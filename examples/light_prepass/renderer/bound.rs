@@ -98,6 +98,9 @@ pub fn normal_angle_at(e: NormalEncoding, z: f64) -> f64 {
         NormalEncoding::Oct32 => oct(16),
         // Substrate's centred 11-bit grid: steps of 1/1023 where oct's are 2/(2^bits − 1).
         NormalEncoding::Substrate => (3.0 * 2f64.sqrt() / 2046.0).asin(),
+        // The signed octahedron's hemi-octahedral 10-bit grid: sin ≤ 2√6·h, h = 1/2046
+        // (`tests/normal_signed_oct.rs`).
+        NormalEncoding::SignedOct => (2.0 * 6f64.sqrt() / 2046.0).asin(),
         NormalEncoding::XyFp16 => {
             let dxy = 2f64.powi(-11) + 2f64.powf(-24.5);
             let q = 2.0 * dxy + dxy * dxy;
@@ -439,6 +442,8 @@ pub fn gbuffer_error(
             // The texel's bits are the code (rgb10a2 packs x low; snorm bytes are the code's).
             NormalEncoding::Xyz10 => xyz10::decode_normal_xyz10(p),
             NormalEncoding::Oct20 => oct::decode_normal_oct20(p),
+            // B (bits 20–29) is 1023 or 0: bit 20 is the code's sign bit, bits 21–31 ignored.
+            NormalEncoding::SignedOct => prepass::normal::signed_oct::decode_normal_signed_oct(p),
             // The r32uint texel is the word (the example does not offer it: see main.rs).
             NormalEncoding::Substrate => prepass::normal::substrate::decode_substrate_normal(p),
             NormalEncoding::Snorm8 => snorm8::decode_normal_snorm8(p),

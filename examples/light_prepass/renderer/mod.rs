@@ -219,6 +219,7 @@ pub fn encoding_name(e: NormalEncoding) -> &'static str {
         NormalEncoding::Snorm8 => "snorm8",
         NormalEncoding::Oct24Unity => "oct24 unity",
         NormalEncoding::Substrate => "substrate",
+        NormalEncoding::SignedOct => "signed oct",
     }
 }
 

@@ -128,7 +128,7 @@ struct Target {
 }
 
 /// The normal target's format as `Scene::gbuffer` lays it out for encoding `e` (rgb10a2unorm for
-/// xyz10 and oct20, rgba8snorm for snorm8, rg8unorm for oct16, rgba8unorm otherwise).
+/// xyz10, oct20 and the signed octahedron, rgba8snorm for snorm8, rg8unorm for oct16, rgba8unorm otherwise).
 fn normal_format(e: NormalEncoding) -> wgpu::TextureFormat {
     let scene = prepass::scene::Scene {
         normal: prepass::scene::NormalChoice {

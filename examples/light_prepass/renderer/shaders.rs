@@ -33,6 +33,7 @@ pub fn stem(e: NormalEncoding) -> &'static str {
         NormalEncoding::Oct32 => "oct32",
         NormalEncoding::Hemioct24 => "hemioct24",
         NormalEncoding::Substrate => "substrate",
+        NormalEncoding::SignedOct => "signed_oct",
     }
 }
 

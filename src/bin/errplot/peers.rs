@@ -26,6 +26,8 @@ pub const UNITY: &str = include_str!("../../../tests/baselines/peer_unity.wgsl")
 pub const URP: &str = include_str!("../../../tests/baselines/peer_urp.wgsl");
 /// Godot 4's best-fit normal (lookup-table scale, RGBA8), its lookup texel computed inline.
 pub const GODOT: &str = include_str!("../../../tests/baselines/peer_godot.wgsl");
+/// O3DE's signed octahedron (RGB10A2: hemi-octahedral 10:10 of `(x, y, |z|)`, z's sign in B).
+pub const O3DE: &str = include_str!("../../../tests/baselines/peer_o3de.wgsl");
 /// LYGIA's `linearizeDepth` and `depth2viewZ` (OpenGL conventions, finite far).
 pub const LYGIA: &str = include_str!("../../../tests/baselines/peer_lygia.wgsl");
 
@@ -47,7 +49,7 @@ pub struct NormalPeer {
 }
 
 /// The normal-codec peers.
-pub const NORMAL_PEERS: [NormalPeer; 12] = [
+pub const NORMAL_PEERS: [NormalPeer; 13] = [
     NormalPeer {
         name: "bevy gbuffer oct24 (×4095)",
         bits: 24,
@@ -131,6 +133,13 @@ pub const NORMAL_PEERS: [NormalPeer; 12] = [
         source: GODOT,
         encode: "peer_godot_normal_encode",
         decode: "peer_godot_normal_decode",
+    },
+    NormalPeer {
+        name: "o3de signed oct 10:10 + sign (rgb10a2)",
+        bits: 21,
+        source: O3DE,
+        encode: "peer_o3de_signed_oct_encode",
+        decode: "peer_o3de_signed_oct_decode",
     },
 ];
 

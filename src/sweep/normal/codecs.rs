@@ -1,10 +1,10 @@
 //! The encodings the normal sweeps measure: each one's WGSL functions, Rust twins and f64
 //! reference, in one table.
 
-use crate::normal::{hemioct, oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
+use crate::normal::{hemioct, oct, signed_oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use crate::wgsl::{
-    NORMAL_HEMIOCT, NORMAL_OCT, NORMAL_SNORM8, NORMAL_SUBSTRATE, NORMAL_XY_FP16, NORMAL_XYZ8,
-    NORMAL_XYZ10,
+    NORMAL_HEMIOCT, NORMAL_OCT, NORMAL_SIGNED_OCT, NORMAL_SNORM8, NORMAL_SUBSTRATE, NORMAL_XY_FP16,
+    NORMAL_XYZ8, NORMAL_XYZ10,
 };
 use glam::Vec3;
 
@@ -62,6 +62,25 @@ const SUBSTRATE11: [Lane; 2] = [
     Lane {
         shift: substrate::V_SHIFT,
         width: 11,
+        kind: LaneKind::Unsigned,
+    },
+];
+/// O3DE's signed octahedron: u in bits 0–9, v in 10–19, z's sign in bit 20
+/// (`crate::normal::signed_oct`).
+const SIGNED_OCT10: [Lane; 3] = [
+    Lane {
+        shift: 0,
+        width: 10,
+        kind: LaneKind::Unsigned,
+    },
+    Lane {
+        shift: 10,
+        width: 10,
+        kind: LaneKind::Unsigned,
+    },
+    Lane {
+        shift: 20,
+        width: 1,
         kind: LaneKind::Unsigned,
     },
 ];
@@ -158,9 +177,9 @@ macro_rules! oct_codec {
 /// Every encoding: xyz8, xy FP16, octahedral 16/20/24/32 precise and fast, hemi-octahedral 24
 /// precise and fast (errors of the hemisphere-only codes are measured over `z ≥ 0`), then the
 /// engines' forms: xyz10 (RGB10A2), snorm8 xyz, Unreal Substrate's 11:11 centred octahedron
-/// (its word's normal bits; roughness and flags zero), precise and fast, and xyz8's best-fit
-/// encoder (Godot 4's).
-pub const CODECS: [Codec; 17] = [
+/// (its word's normal bits; roughness and flags zero), precise and fast, xyz8's best-fit
+/// encoder (Godot 4's), and O3DE's signed octahedron (RGB10A2), precise and fast.
+pub const CODECS: [Codec; 19] = [
     Codec {
         name: "xyz8",
         stored_by: "Resistance 2; Godot 4 (this decoder; its encoder is `xyz8 best-fit`)",
@@ -398,6 +417,36 @@ pub const CODECS: [Codec; 17] = [
         twin_decode: xyz8::decode_normal_xyz8,
         reference_encode: xyz8::exact::encode_best,
         reference_decode: xyz8::exact::decode,
+        target: None,
+    },
+    Codec {
+        name: "signed oct",
+        stored_by: "O3DE (Atom's signed octahedron in RGB10A2)",
+        bits: 21,
+        lanes: &SIGNED_OCT10,
+        hemisphere: false,
+        source: NORMAL_SIGNED_OCT,
+        encode: "encode_normal_signed_oct",
+        decode: "decode_normal_signed_oct",
+        twin_encode: signed_oct::encode_normal_signed_oct,
+        twin_decode: signed_oct::decode_normal_signed_oct,
+        reference_encode: signed_oct::exact::encode_precise,
+        reference_decode: signed_oct::exact::decode,
+        target: None,
+    },
+    Codec {
+        name: "signed oct fast",
+        stored_by: "O3DE (Atom's signed octahedron in RGB10A2)",
+        bits: 21,
+        lanes: &SIGNED_OCT10,
+        hemisphere: false,
+        source: NORMAL_SIGNED_OCT,
+        encode: "encode_normal_signed_oct_fast",
+        decode: "decode_normal_signed_oct",
+        twin_encode: signed_oct::encode_normal_signed_oct_fast,
+        twin_decode: signed_oct::decode_normal_signed_oct,
+        reference_encode: signed_oct::exact::encode_round,
+        reference_decode: signed_oct::exact::decode,
         target: None,
     },
 ];

@@ -25,8 +25,9 @@ use crate::wgsl::{NORMAL_HEMIOCT, NORMAL_OCT};
 /// The function a decision search runs, appended to the codec's file by [`scores_source`]:
 /// `fn(n: vec3<f32>, bits: u32) -> vec4<f32>`, the four candidates' scores in the encoder's
 /// order (0,0), (1,0), (0,1), (1,1) with `bits` per axis (the hemi-octahedral file's is 12
-/// whatever `bits` says), so oct16 and oct24 share one module; each calls the `try` function
-/// its encoder calls (`oct_try`, `oct_try_wide` for oct32, `hemioct_try`), and only that one,
+/// and the signed octahedron's 10 whatever `bits` says), so oct16 and oct24 share one module;
+/// each calls the `try` function its encoder calls (`oct_try`, `oct_try_wide` for oct32,
+/// `hemioct_try`, `signed_oct_try`), and only that one,
 /// so the emulated module is no larger than the encoder's.
 pub const SCORES_FN: &str = "prepass_candidate_scores";
 
@@ -58,6 +59,11 @@ pub fn scores_source(codec: &Codec) -> Option<String> {
              let c00 = floor(hemioct_continuous(s, 4095u));\n    return {};\n",
             scores("hemioct_try(s, c00, vec2<f32>(OFF), none).z"),
         ),
+        s if s == crate::wgsl::NORMAL_SIGNED_OCT => format!(
+            "    let s0 = signed_oct_sanitize(n);\n    let s = vec3<f32>(s0.xy, abs(s0.z));\n    \
+             let c00 = floor(signed_oct_continuous(s0));\n    return {};\n",
+            scores("signed_oct_try(s, c00, vec2<f32>(OFF), none).z"),
+        ),
         _ => return None,
     };
     Some(format!(
@@ -71,6 +77,8 @@ pub fn scores_source(codec: &Codec) -> Option<String> {
 pub(super) fn neighbours(codec: &Codec, n: [f64; 3]) -> [u32; 4] {
     if codec.source == crate::wgsl::NORMAL_SUBSTRATE {
         crate::normal::substrate::exact::neighbours(n)
+    } else if codec.source == crate::wgsl::NORMAL_SIGNED_OCT {
+        crate::normal::signed_oct::exact::neighbours(n)
     } else if codec.source == NORMAL_HEMIOCT {
         hemioct::exact::neighbours(n)
     } else {
@@ -82,6 +90,8 @@ pub(super) fn neighbours(codec: &Codec, n: [f64; 3]) -> [u32; 4] {
 fn continuous(codec: &Codec, n: [f64; 3]) -> [f64; 2] {
     if codec.source == crate::wgsl::NORMAL_SUBSTRATE {
         crate::normal::substrate::exact::continuous(n).map(|q| q + 1024.0)
+    } else if codec.source == crate::wgsl::NORMAL_SIGNED_OCT {
+        crate::normal::signed_oct::exact::continuous(n)
     } else if codec.source == NORMAL_HEMIOCT {
         hemioct::exact::continuous(n)
     } else {

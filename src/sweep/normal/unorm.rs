@@ -89,6 +89,10 @@ pub enum RenderTarget {
     Rgb10a2Unorm,
     /// `rgba8snorm`: x, y, z as two's complement bytes 0–2, channel `b/127`; alpha zero.
     Rgba8Snorm,
+    /// `rgb10a2unorm` holding O3DE's signed octahedron (`crate::normal::signed_oct`): R and G
+    /// the 10-bit codes in bits 0–19, `k/1023`; B 1023 (1.0) when bit 20 is set, else 0; alpha
+    /// zero.
+    Rgb10a2SignedOct,
 }
 
 impl RenderTarget {
@@ -97,6 +101,10 @@ impl RenderTarget {
         match self {
             Self::Rgb10a2Unorm => (crate::normal::xyz10::fields(p).map(|k| k as i32), 1023.0),
             Self::Rgba8Snorm => (crate::normal::snorm8::bytes(p), 127.0),
+            Self::Rgb10a2SignedOct => {
+                let f = crate::normal::xyz10::fields(p).map(|k| k as i32);
+                ([f[0], f[1], if f[2] & 1 == 1 { 1023 } else { 0 }], 1023.0)
+            }
         }
     }
 
