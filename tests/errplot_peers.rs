@@ -65,10 +65,12 @@ const DOMINATED: &[(&str, &[&str], &str)] = &[
     ),
     (
         "decode_normal_xy_fp16",
-        &[UNREAL_XYZ10, URP_SNORM8, GODOT_XYZ8],
+        &[UNREAL_XYZ10, URP_SNORM8, UNREAL_SUBSTRATE, GODOT_XYZ8],
         "as its encoder: Killzone 2's layout, kept for comparison; its z rebuilt near the \
          horizon is what the engines' linear formats avoid (Godot's best-fit row: its encoder's \
-         error, a decoder of another format)",
+         error, a decoder of another format); its halves are read from their bits first, so no \
+         infinite or NaN half reaches a float operation; those instructions make Substrate's \
+         reader (another format) no longer than it",
     ),
     (
         "encode_normal_oct24_fast",

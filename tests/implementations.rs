@@ -459,14 +459,18 @@ fn normals(exec: &dyn Executor, out: &mut Vec<Figure>) {
 /// integer vector (every codec but xy fp16): by the triangle inequality, the exact (f64) angle
 /// from each input to its twin code's direction, at most `exact_worst`, plus the decoder's turn
 /// from that direction, at most `sweep::conforming::decode_angle_conforming_deg`; rounded up to
-/// the table's 4 decimals (a looser bound). xy fp16 rebuilds z with a square root, which that
-/// turn does not cover, and the library states no decoder bound for it: `None`.
+/// the table's 4 decimals (a looser bound). xy fp16 rebuilds z with a square root, whose turn
+/// is bounded apart: `sweep::conforming::decode_angle_conforming_xy_fp16_deg`.
 fn round_trip_bound(c: &prepass::sweep::normal::Codec, exact_worst: f64) -> Option<f64> {
-    use prepass::sweep::conforming::decode_angle_conforming_deg;
-    if c.name == "xy fp16" {
-        return None;
-    }
-    Some(((exact_worst + decode_angle_conforming_deg()) * 1e4).ceil() / 1e4)
+    use prepass::sweep::conforming::{
+        decode_angle_conforming_deg, decode_angle_conforming_xy_fp16_deg,
+    };
+    let turn = if c.name == "xy fp16" {
+        decode_angle_conforming_xy_fp16_deg()
+    } else {
+        decode_angle_conforming_deg()
+    };
+    Some(((exact_worst + turn) * 1e4).ceil() / 1e4)
 }
 
 fn depth24_and_roughness(exec: &dyn Executor, out: &mut Vec<Figure>) {

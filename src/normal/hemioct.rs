@@ -235,13 +235,6 @@ mod tests {
                 encode_normal_hemioct24_fast,
             ),
         ];
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
         let (tiny, big) = (f32::MIN_POSITIVE, super::super::oct::VOUCHED_MAX);
         let mut special = Vec::new();
         for sx in [1.0f32, -1.0] {
@@ -267,36 +260,7 @@ mod tests {
                 }
             }
         }
-        let (mut inside, mut total) = (0, 0);
-        for k in 0..200_000 {
-            let r = next();
-            // Exponents concentrated near 127 (unit vectors) for half the draws, anywhere else.
-            let comp = |bits: u64| {
-                let b = bits as u32;
-                if k % 2 == 0 {
-                    f32::from_bits((b & 0x807f_ffff) | ((120 + (b >> 23) % 10) << 23))
-                } else {
-                    f32::from_bits(b)
-                }
-            };
-            let n = Vec3::new(comp(r), comp(r >> 21 ^ next()), comp(next()));
-            for v in [n, n * 0.75, n * 1e-30, n * 1e30] {
-                total += 1;
-                let ok = is_vouched(v);
-                inside += usize::from(ok);
-                for (vouched, robust) in pairs {
-                    let code = vouched(v);
-                    if ok {
-                        assert_eq!(code, robust(v), "{v:?}");
-                    }
-                }
-            }
-        }
-        // The draws must reach the contract often, or the test checks little.
-        assert!(
-            inside * 4 > total,
-            "{inside} of {total} inside the contract"
-        );
+        super::super::vouched_draws_agree(&pairs, is_vouched);
     }
 
     /// The precise vouched form gives a zero clamp `c` (outside the contract) the robust code of

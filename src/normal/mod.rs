@@ -208,3 +208,47 @@ pub mod exact {
         (l > 0.0 && l.is_finite()).then(|| v.map(|x| x / l))
     }
 }
+
+/// The vouched encoders' unit tests' random draws (`oct`'s and `hemioct`'s): 200,000 xorshift
+/// vectors, half with exponents near 1 (unit vectors) and half of any bits (so many fall outside
+/// the contract, some on its edges), each also scaled by 0.75, 1e-30 and 1e30. Every pair's
+/// vouched twin never panics and, where `is_vouched` holds, gives its robust twin's code; at
+/// least a quarter of the draws must be inside the contract, or the check says little.
+#[cfg(test)]
+fn vouched_draws_agree(pairs: &[(fn(Vec3) -> u32, fn(Vec3) -> u32)], is_vouched: fn(Vec3) -> bool) {
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    let (mut inside, mut total) = (0, 0);
+    for k in 0..200_000 {
+        let r = next();
+        let comp = |bits: u64| {
+            let b = bits as u32;
+            if k % 2 == 0 {
+                f32::from_bits((b & 0x807f_ffff) | ((120 + (b >> 23) % 10) << 23))
+            } else {
+                f32::from_bits(b)
+            }
+        };
+        let n = Vec3::new(comp(r), comp(r >> 21 ^ next()), comp(next()));
+        for v in [n, n * 0.75, n * 1e-30, n * 1e30] {
+            total += 1;
+            let ok = is_vouched(v);
+            inside += usize::from(ok);
+            for (vouched, robust) in pairs {
+                let code = vouched(v);
+                if ok {
+                    assert_eq!(code, robust(v), "{v:?}");
+                }
+            }
+        }
+    }
+    assert!(
+        inside * 4 > total,
+        "{inside} of {total} inside the contract"
+    );
+}

@@ -26,6 +26,24 @@ pub fn decode_angle_conforming_deg() -> f64 {
     (2f64.sqrt() * 5.0 * 2f64.powi(-24)).to_degrees() + 1e-12
 }
 
+/// How far `decode_normal_xy_fp16` may turn a code's direction on any conforming adapter, in
+/// degrees, against the exact direction `(x, y, √max(0, 1 − x² − y²))` normalised. With
+/// `u = 2^-24` and `S = x² + y²` (the halves and their clamp are exact): `s = dot(xy, xy)` errs at
+/// most `4u·S` (two products and a sum, each to either neighbour, `2u`; a fused form errs less),
+/// and `1 − s` another `2u`, so `z² = max(0, 1 − s)` is within `δ = 6u` (for `S ≤ 1`; beyond,
+/// both sides clamp to 0 and the computed one is within `4u·S − (S − 1) ≤ 6u` near `S = 1`) of
+/// the exact `Z²` (plus `2^-126` for a flushed product: `8u` covers both). `|√a − √b| ≤ √|a − b|`,
+/// so `|z − Z| ≤ √(8u) + 9u` (`sqrt`'s own error, as `1/inverseSqrt`: under `9u` relative, and
+/// `z ≤ 1`). The vector `(x, y, z)` is then within that distance of `(x, y, Z)`, whose length is
+/// at least 1, so it turns by at most `asin(√(8u) + 9u)`; the final `/ sqrt(s + z²)` rounds each
+/// component by 2.5 ULP, a further `√2·5u` turn (as [`decode_angle_conforming_deg`]). The
+/// square root makes this about 0.04°, not the octahedral decoders' 2.4e-5°: near the horizon
+/// a few rounding units in `1 − s` move `z` by their square root.
+pub fn decode_angle_conforming_xy_fp16_deg() -> f64 {
+    let u = 2f64.powi(-24);
+    ((8.0 * u).sqrt() + 9.0 * u).asin().to_degrees() + decode_angle_conforming_deg()
+}
+
 /// The slack the precise encoder's choice may have over the best neighbour on any conforming
 /// adapter: [`super::normal::optimality_tolerance_deg`] times 5. That tolerance is a sum of
 /// roundings of `+ − ×` (each `u` relative where correctly rounded, `2u` on any conforming
