@@ -209,13 +209,17 @@ pub mod exact {
     }
 }
 
+/// A vouched encoder and its robust sibling.
+#[cfg(test)]
+type VouchedPair = (fn(Vec3) -> u32, fn(Vec3) -> u32);
+
 /// The vouched encoders' unit tests' random draws (`oct`'s and `hemioct`'s): 200,000 xorshift
 /// vectors, half with exponents near 1 (unit vectors) and half of any bits (so many fall outside
 /// the contract, some on its edges), each also scaled by 0.75, 1e-30 and 1e30. Every pair's
 /// vouched twin never panics and, where `is_vouched` holds, gives its robust twin's code; at
 /// least a quarter of the draws must be inside the contract, or the check says little.
 #[cfg(test)]
-fn vouched_draws_agree(pairs: &[(fn(Vec3) -> u32, fn(Vec3) -> u32)], is_vouched: fn(Vec3) -> bool) {
+fn vouched_draws_agree(pairs: &[VouchedPair], is_vouched: fn(Vec3) -> bool) {
     let mut state = 0x9e37_79b9_7f4a_7c15u64;
     let mut next = || {
         state ^= state << 13;
