@@ -235,40 +235,7 @@ fn vouched_inputs() -> Vec<[f32; 3]> {
 /// for the vouched ones.
 #[test]
 fn vouched_encoders_give_the_robust_codes_inside_their_contract() {
-    let inputs = vouched_inputs();
-    let like = common::evaluates_like_the_twins();
-    for name in common::HEMIOCTAHEDRAL {
-        let robust = codec(name);
-        let v = common::vouched_codec(name);
-        let run = |f: &str| {
-            gpu()
-                .kernel(robust.source, f)
-                .unwrap()
-                .run(&[Arg::column(&inputs)], inputs.len() as u64)
-                .unwrap()
-                .into_words()
-        };
-        let (want, got) = (run(robust.encode), run(v.encode));
-        let mut wrong = 0;
-        for (i, &n) in inputs.iter().enumerate() {
-            let (rt, vt) = ((robust.twin_encode)(n.into()), (v.twin_encode)(n.into()));
-            assert_eq!(vt, rt, "{}: twin differs from {name}'s on {n:?}", v.name);
-            if got[i] != want[i] {
-                wrong += 1;
-                assert!(
-                    !like,
-                    "{}: WGSL code {:#x} differs from {}'s {:#x} on {n:?}",
-                    v.name, got[i], robust.encode, want[i]
-                );
-            }
-        }
-        eprintln!(
-            "{}: {wrong} of {} codes differ from {}'s on the adapter (evaluates like the twins: {like})",
-            v.name,
-            inputs.len(),
-            robust.encode
-        );
-    }
+    common::assert_vouched_codes_are_the_robust_ones(&common::HEMIOCTAHEDRAL, &vouched_inputs());
 }
 
 /// The encoders before issue 21 (continuous coordinates clamped to `[0, M]` and `floor`

@@ -654,6 +654,48 @@ pub fn vouched_codec(name: &str) -> prepass::sweep::normal::Codec {
     c
 }
 
+/// Inside their contract the vouched encoders of the robust codecs `names` return the robust
+/// codes bit for bit, over `inputs` (all inside the contract): the Rust twins always, and the
+/// WGSL on the adapter where it evaluates like the twins (the correctly rounded case the
+/// identity is promised for); elsewhere the adapter's mismatches are only counted and printed.
+#[allow(dead_code)]
+pub fn assert_vouched_codes_are_the_robust_ones(names: &[&str], inputs: &[[f32; 3]]) {
+    use prepass::harness::Arg;
+    let like = evaluates_like_the_twins();
+    for &name in names {
+        let robust = prepass::sweep::normal::codec(name);
+        let v = vouched_codec(name);
+        let run = |f: &str| {
+            gpu()
+                .kernel(robust.source, f)
+                .unwrap()
+                .run(&[Arg::column(inputs)], inputs.len() as u64)
+                .unwrap()
+                .into_words()
+        };
+        let (want, got) = (run(robust.encode), run(v.encode));
+        let mut wrong = 0;
+        for (i, &n) in inputs.iter().enumerate() {
+            let (rt, vt) = ((robust.twin_encode)(n.into()), (v.twin_encode)(n.into()));
+            assert_eq!(vt, rt, "{}: twin differs from {name}'s on {n:?}", v.name);
+            if got[i] != want[i] {
+                wrong += 1;
+                assert!(
+                    !like,
+                    "{}: WGSL code {:#x} differs from {}'s {:#x} on {n:?}",
+                    v.name, got[i], robust.encode, want[i]
+                );
+            }
+        }
+        eprintln!(
+            "{}: {wrong} of {} codes differ from {}'s on the adapter (evaluates like the twins: {like})",
+            v.name,
+            inputs.len(),
+            robust.encode
+        );
+    }
+}
+
 /// The round trip of a per-channel (linear) normal codec over 2^24 Fibonacci directions and the
 /// adversarial set: the twins' promise ([`assert_round_trip_matches_twins`]), no NaN, no bit
 /// outside `code_mask`, and the max angle within the derived `bound_deg` (named `bound`) plus
