@@ -8,10 +8,11 @@ after adding an entry: python3 fuzz/seed_batch.py."""
 import hashlib, os, struct
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ENTRIES = 72  # len(BATCH)
+ENTRIES = 82  # len(BATCH)
 GENERIC = {33, 34, 35}  # bits byte first
 ROUGHNESS = {36, 37}  # max_power f32 first
 FLAGGED = {56}  # a u32 dynamic-object flag first
+VOUCHED = set(range(74, 82))  # _vouched encoders: also a batch inside their contract
 WORDS = [0x7FC00000, 0xFFC00001, 0x7F800001, 0x7F800000, 0xFF800000, 0, 0x80000000, 1, 0x80000001,
          0x007FFFFF, 0x00800000, 0x3F800000, 0xBF800000, 0x7F7FFFFF, 0xFF7FFFFF, 0x3F000001,
          0x00FFFFFF, 0x01000000, 0xFFFFFFFF, 0xFF123456, 0x0000FFFF, 0x00007FFF, 0x3F3504F3]
@@ -23,6 +24,11 @@ def write(data):
         fh.write(data)
 
 payload = b"".join(struct.pack("<I", w) for w in WORDS * 12)
+# Vectors inside the vouched contract (finite, no subnormals, largest at most 2^124, and for
+# hemioct any negative z): directions at scales from 2^-126 to 2^124, axes, zeros beside.
+INSIDE = [0.6, -0.8, 0.0, 2.0**-126, 1.0, -2.0**-126, 2.0**124, -0.25, 2.0**124, 1e-3, 2e-3,
+          -3.4e38, -0.0, 0.0, 5.0, 0.3, 0.3, -0.9, 1e30, -7e29, 2e29, 1.2e-37, 3e-38, -5e-38]
+vouched = b"".join(struct.pack("<f", x) for x in INSIDE * 12)
 for e in range(ENTRIES):
     params = [b""]
     if e in GENERIC:
@@ -34,3 +40,5 @@ for e in range(ENTRIES):
     for p in params:
         for n in (0, 20, 62):  # lengths 1, 21, 63
             write(bytes([e]) + p + bytes([n]) + payload)
+            if e in VOUCHED:
+                write(bytes([e]) + p + bytes([n]) + vouched)

@@ -5,6 +5,8 @@
 //! - 32-bit decoders: the scalar suites' stratified sample (`stratified_codes32`);
 //! - encoders: the 2^24 spherical-Fibonacci directions, the adversarial set, the bad inputs
 //!   and a grid of special values (NaN, ±Inf, ±0, subnormals, extremes);
+//! - the `_vouched` encoders: bit for bit inside their contract (random, scaled and edge-case
+//!   vectors), and a valid code, without a panic, on every other input;
 //! - the slice contract (mismatched lengths panic) and unavailable levels panic.
 //!
 //! Pure CPU; each comparison streams in chunks of 2^18 so memory stays small. The speed beside
@@ -47,6 +49,14 @@ impl Bits for Vec3 {
 impl Bits for [f32; 4] {
     fn bits(self) -> [u32; 4] {
         self.map(f32::to_bits)
+    }
+}
+/// Substrate's word encoders' input `(n, roughness, flags)`: the flags are left out of the
+/// four words, and shown by the failure message's `Debug` form beside them.
+impl Bits for (Vec3, f32, u32) {
+    fn bits(self) -> [u32; 4] {
+        let (n, r, _) = self;
+        [n.x.to_bits(), n.y.to_bits(), n.z.to_bits(), r.to_bits()]
     }
 }
 
@@ -937,4 +947,232 @@ fn roughness_ggx_encoders_and_decoders() {
         bg::encode_roughness_ggx8_log,
         encode_roughness_ggx8_log_with
     );
+}
+
+/// Substrate's whole-word encoders: every 4th encoder input, each with a roughness (every
+/// `f32` within 3 ULP of each byte boundary `(k + 1/2)/255`, the special components, a spread
+/// of `[0, 1]`) and flags (a hash with every high bit pattern) beside it.
+#[test]
+fn substrate_word_encoders() {
+    let mut rs = special_components();
+    for k in 0..255u32 {
+        let c = ((f64::from(k) + 0.5) / 255.0) as f32;
+        rs.extend((c.to_bits() - 3..=c.to_bits() + 3).map(f32::from_bits));
+    }
+    rs.extend((0..=4096).map(|k| k as f32 / 4096.0));
+    let words: Vec<(Vec3, f32, u32)> = encoder_inputs()
+        .iter()
+        .step_by(4)
+        .enumerate()
+        .map(|(i, &n)| {
+            let i = i as u32;
+            (n, rs[i as usize % rs.len()], i.wrapping_mul(0x9e37_79b9))
+        })
+        .collect();
+    check!(
+        &words,
+        |(n, r, f)| substrate::encode_substrate_word(n, r, f),
+        bn::encode_substrate_word,
+        encode_substrate_word_with
+    );
+    check!(
+        &words,
+        |(n, r, f)| substrate::encode_substrate_word_fast(n, r, f),
+        bn::encode_substrate_word_fast,
+        encode_substrate_word_fast_with
+    );
+}
+
+/// splitmix64: the vouched tests' deterministic random stream.
+fn splitmix(state: &mut u64) -> u64 {
+    *state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    let mut z = *state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// Inputs inside a vouched contract (`inside`): the encoder inputs that are; the Fibonacci
+/// directions (every 64th) scaled by every power of two from 2^-126 to 2^124 and by
+/// non-powers; 2^21 random vectors (a random largest exponent over the whole range, the other
+/// components up to 40 binades below it or zero, random signs and significands); and edge
+/// cases: axes at the extremes, components at exactly the contract's least magnitude
+/// `2^-126·max(1, ‖n‖∞)`, `‖n‖∞ = 2^124`, and (for hemioct) negative `z` of any finite size.
+fn vouched_inputs(inside: fn(Vec3) -> bool) -> Vec<Vec3> {
+    let mut v: Vec<Vec3> = encoder_inputs().to_vec();
+    let fib: Vec<Vec3> = encoder_inputs()[..1 << 24]
+        .iter()
+        .step_by(64)
+        .copied()
+        .collect();
+    for (k, e) in (-126i32..=124).enumerate() {
+        let p = 2f32.powi(e);
+        v.extend(fib.iter().skip(k % 7).step_by(7).map(|&d| d * p));
+    }
+    for scale in [3.7e-30f32, 1.0e-3, 0.75, 7.5, 1.7e37, 1.3e-37, 2.1e37] {
+        v.extend(fib.iter().step_by(3).map(|&d| d * scale));
+    }
+    let mut st = 0x5eed_u64;
+    for _ in 0..1 << 21 {
+        let r = splitmix(&mut st);
+        let top = 1 + (r % 251) as u32; // biased exponent of the largest, 2^-126..2^124
+        let comp = |r: u64| {
+            if r & 0xf == 0 {
+                return 0.0;
+            }
+            let e = top.saturating_sub(((r >> 4) % 41) as u32).max(1);
+            let sign = ((r >> 12) & 1) as u32;
+            f32::from_bits(sign << 31 | e << 23 | ((r >> 13) as u32 & 0x7f_ffff))
+        };
+        let r2 = splitmix(&mut st);
+        v.push(Vec3::new(comp(r), comp(r2), comp(r2 >> 32)));
+    }
+    let (min, max) = (f32::MIN_POSITIVE, oct::VOUCHED_MAX);
+    for s in [min, 1.0, 1.5, max] {
+        for a in [Vec3::X, Vec3::Y, Vec3::Z] {
+            v.extend([a * s, -a * s]);
+        }
+    }
+    let least = max * min; // 2^-2, the least non-zero magnitude beside 2^124
+    v.extend([
+        Vec3::new(max, least, 0.0),
+        Vec3::new(-least, max, -least),
+        Vec3::new(least, -least, max),
+        Vec3::new(max, -max, max),
+        Vec3::new(1.0, min, -min),
+        Vec3::new(min, min, min),
+        Vec3::new(-min, min, -min),
+        Vec3::new(0.5, -0.25, 1e-30),
+        Vec3::new(1e-3, 2e-3, -f32::MAX),
+        Vec3::new(-3.0, 0.0, -1e38),
+        Vec3::new(1.0, 0.0, -0.0),
+        Vec3::new(0.0, -min, -2.0),
+    ]);
+    v.retain(|&n| inside(n));
+    v
+}
+
+/// The vouched encoders: bit for bit inside the contract (and for the precise forms on the
+/// vectors they define outside it, the zero vector and hemioct's zero clamp: +z); on every
+/// encoder input, inside or not, every level returns a valid code and does not panic.
+#[test]
+fn normal_vouched_encoders() {
+    type Pair = (
+        &'static str,
+        fn(Vec3) -> u32,
+        fn(Level, &[Vec3], &mut [u32]),
+        fn(&[Vec3], &mut [u32]),
+        u32,
+    );
+    let oct_pairs: [Pair; 6] = [
+        (
+            "oct16",
+            oct::encode_normal_oct16_vouched,
+            bn::encode_normal_oct16_vouched_with,
+            bn::encode_normal_oct16_vouched,
+            0xffff,
+        ),
+        (
+            "oct16 fast",
+            oct::encode_normal_oct16_fast_vouched,
+            bn::encode_normal_oct16_fast_vouched_with,
+            bn::encode_normal_oct16_fast_vouched,
+            0xffff,
+        ),
+        (
+            "oct24",
+            oct::encode_normal_oct24_vouched,
+            bn::encode_normal_oct24_vouched_with,
+            bn::encode_normal_oct24_vouched,
+            0xff_ffff,
+        ),
+        (
+            "oct24 fast",
+            oct::encode_normal_oct24_fast_vouched,
+            bn::encode_normal_oct24_fast_vouched_with,
+            bn::encode_normal_oct24_fast_vouched,
+            0xff_ffff,
+        ),
+        (
+            "oct32",
+            oct::encode_normal_oct32_vouched,
+            bn::encode_normal_oct32_vouched_with,
+            bn::encode_normal_oct32_vouched,
+            u32::MAX,
+        ),
+        (
+            "oct32 fast",
+            oct::encode_normal_oct32_fast_vouched,
+            bn::encode_normal_oct32_fast_vouched_with,
+            bn::encode_normal_oct32_fast_vouched,
+            u32::MAX,
+        ),
+    ];
+    let hemi_pairs: [Pair; 2] = [
+        (
+            "hemioct24",
+            hemioct::encode_normal_hemioct24_vouched,
+            bn::encode_normal_hemioct24_vouched_with,
+            bn::encode_normal_hemioct24_vouched,
+            0xff_ffff,
+        ),
+        (
+            "hemioct24 fast",
+            hemioct::encode_normal_hemioct24_fast_vouched,
+            bn::encode_normal_hemioct24_fast_vouched_with,
+            bn::encode_normal_hemioct24_fast_vouched,
+            0xff_ffff,
+        ),
+    ];
+    // The vectors the precise forms define outside the contract: a zero vector (for hemioct,
+    // a zero clamp `(0, 0, z ≤ 0)`) encodes +z.
+    let zeros = [Vec3::ZERO, Vec3::new(-0.0, 0.0, -0.0)];
+    let zero_clamps = [
+        Vec3::ZERO,
+        Vec3::new(-0.0, 0.0, -0.0),
+        Vec3::new(0.0, -0.0, -3.0),
+    ];
+    for (pairs, inside, zeros) in [
+        (
+            &oct_pairs[..],
+            oct::is_vouched as fn(Vec3) -> bool,
+            &zeros[..],
+        ),
+        (&hemi_pairs[..], hemioct::is_vouched, &zero_clamps[..]),
+    ] {
+        let v = vouched_inputs(inside);
+        eprintln!("vouched inputs inside the contract: {}", v.len());
+        assert!(v.len() > 18_000_000, "{}", v.len());
+        for &(name, scalar, with, plain, _) in pairs {
+            check(&format!("normal::{name} vouched"), &v, scalar, with, plain);
+            if !name.ends_with("fast") {
+                check(
+                    &format!("normal::{name} vouched, zero"),
+                    zeros,
+                    scalar,
+                    with,
+                    plain,
+                );
+            }
+        }
+    }
+    // Outside the contract: a valid code from every level, no panic.
+    let all = encoder_inputs();
+    let mut out = vec![0u32; all.len()];
+    for &(name, _, with, plain, mask) in oct_pairs.iter().chain(&hemi_pairs) {
+        for &level in levels() {
+            with(level, all, &mut out);
+            if let Some(i) = out.iter().position(|&c| c & !mask != 0) {
+                panic!(
+                    "{name} vouched [{level}]: {:?} gives {:#x}, not a code",
+                    all[i], out[i]
+                );
+            }
+        }
+        plain(all, &mut out);
+        assert!(
+            out.iter().all(|&c| c & !mask == 0),
+            "{name} vouched [plain]"
+        );
+    }
 }

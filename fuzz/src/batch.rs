@@ -39,6 +39,13 @@ impl Bits for [f32; 4] {
         self.map(f32::to_bits)
     }
 }
+/// Substrate's word encoders' input `(n, roughness, flags)` (the flags show in the `Debug` form).
+impl Bits for (Vec3, f32, u32) {
+    fn bits(self) -> [u32; 4] {
+        let (n, r, _) = self;
+        [n.x.to_bits(), n.y.to_bits(), n.z.to_bits(), r.to_bits()]
+    }
+}
 
 /// Inputs read from the fuzz bytes: a length byte, then that many values.
 trait Read: Bits {
@@ -62,6 +69,11 @@ impl Read for Vec3 {
 impl Read for [f32; 4] {
     fn read(i: &mut Input) -> Self {
         [i.f32(), i.f32(), i.f32(), i.f32()]
+    }
+}
+impl Read for (Vec3, f32, u32) {
+    fn read(i: &mut Input) -> Self {
+        (i.vec3(), i.f32(), i.u32())
     }
 }
 
@@ -97,6 +109,66 @@ fn same<I: Bits, O: Bits>(
     }
     plain(src, &mut got);
     compare("plain", &got);
+}
+
+/// A `_vouched` encoder's batch twin: at every level and in the plain form, the scalar twin's
+/// code where `inside` (the contract) holds, and elsewhere some valid code (no bit outside
+/// `mask`); no panic anywhere.
+#[track_caller]
+fn same_inside(
+    name: &str,
+    src: &[Vec3],
+    scalar: fn(Vec3) -> u32,
+    inside: fn(Vec3) -> bool,
+    mask: u32,
+    with: impl Fn(Level, &[Vec3], &mut [u32]),
+    plain: impl Fn(&[Vec3], &mut [u32]),
+) {
+    let mut got = vec![0u32; src.len()];
+    let compare = |form: &str, got: &[u32]| {
+        for (k, (&g, &n)) in got.iter().zip(src).enumerate() {
+            if inside(n) {
+                let w = scalar(n);
+                assert!(
+                    g == w,
+                    "{name} [{form}]: input #{k} {n:?} (inside the contract): batch {g:#x} but scalar twin {w:#x}"
+                );
+            } else {
+                assert!(
+                    g & !mask == 0,
+                    "{name} [{form}]: input #{k} {n:?} (outside the contract): {g:#x} is not a code"
+                );
+            }
+        }
+    };
+    for level in Level::all_available() {
+        with(level, src, &mut got);
+        compare(&level.to_string(), &got);
+    }
+    plain(src, &mut got);
+    compare("plain", &got);
+}
+
+/// An [`Entry`] for a `_vouched` encoder through [`same_inside`]:
+/// `vouched!(scalar, inside, mask, module::f, f_with)`, named `batch::<module>::<f>`.
+macro_rules! vouched {
+    ($scalar:path, $inside:path, $mask:expr, $module:ident :: $f:ident, $fw:ident) => {
+        Entry {
+            name: concat!("batch::", stringify!($module), "::", stringify!($f)),
+            check: |i| {
+                let src: Vec<Vec3> = inputs(i);
+                same_inside(
+                    stringify!($f),
+                    &src,
+                    $scalar,
+                    $inside,
+                    $mask,
+                    |l, s, d| $module::$fw(l, s, d),
+                    |s, d| $module::$f(s, d),
+                );
+            },
+        }
+    };
 }
 
 /// An [`Entry`] comparing a batch twin with its scalar twin through [`same`]:
@@ -543,7 +615,88 @@ pub const BATCH: &[Entry] = &[
         bn::decode_normal_signed_oct_unorm,
         decode_normal_signed_oct_unorm_with
     ),
+    // Appended (the corpus picks entries by index): Substrate's whole word, the vouched
+    // encoders.
+    entry!(
+        (Vec3, f32, u32),
+        substrate_word,
+        bn::encode_substrate_word,
+        encode_substrate_word_with
+    ),
+    entry!(
+        (Vec3, f32, u32),
+        substrate_word_fast,
+        bn::encode_substrate_word_fast,
+        encode_substrate_word_fast_with
+    ),
+    vouched!(
+        oct::encode_normal_oct16_vouched,
+        oct::is_vouched,
+        0xffff,
+        bn::encode_normal_oct16_vouched,
+        encode_normal_oct16_vouched_with
+    ),
+    vouched!(
+        oct::encode_normal_oct16_fast_vouched,
+        oct::is_vouched,
+        0xffff,
+        bn::encode_normal_oct16_fast_vouched,
+        encode_normal_oct16_fast_vouched_with
+    ),
+    vouched!(
+        oct::encode_normal_oct24_vouched,
+        oct::is_vouched,
+        0xff_ffff,
+        bn::encode_normal_oct24_vouched,
+        encode_normal_oct24_vouched_with
+    ),
+    vouched!(
+        oct::encode_normal_oct24_fast_vouched,
+        oct::is_vouched,
+        0xff_ffff,
+        bn::encode_normal_oct24_fast_vouched,
+        encode_normal_oct24_fast_vouched_with
+    ),
+    vouched!(
+        oct::encode_normal_oct32_vouched,
+        oct::is_vouched,
+        u32::MAX,
+        bn::encode_normal_oct32_vouched,
+        encode_normal_oct32_vouched_with
+    ),
+    vouched!(
+        oct::encode_normal_oct32_fast_vouched,
+        oct::is_vouched,
+        u32::MAX,
+        bn::encode_normal_oct32_fast_vouched,
+        encode_normal_oct32_fast_vouched_with
+    ),
+    vouched!(
+        hemioct::encode_normal_hemioct24_vouched,
+        hemioct::is_vouched,
+        0xff_ffff,
+        bn::encode_normal_hemioct24_vouched,
+        encode_normal_hemioct24_vouched_with
+    ),
+    vouched!(
+        hemioct::encode_normal_hemioct24_fast_vouched,
+        hemioct::is_vouched,
+        0xff_ffff,
+        bn::encode_normal_hemioct24_fast_vouched,
+        encode_normal_hemioct24_fast_vouched_with
+    ),
 ];
+
+/// [`substrate::encode_substrate_word`] on one `(n, roughness, flags)`, as the word entries
+/// call it.
+fn substrate_word((n, r, flags): (Vec3, f32, u32)) -> u32 {
+    substrate::encode_substrate_word(n, r, flags)
+}
+
+/// [`substrate::encode_substrate_word_fast`] on one `(n, roughness, flags)`.
+fn substrate_word_fast((n, r, flags): (Vec3, f32, u32)) -> u32 {
+    substrate::encode_substrate_word_fast(n, r, flags)
+}
 
 /// [`g::encode_roughness_godot8`] with the flag last, as the parameterised entries call it.
 fn flagged_godot8(r: f32, dynamic_object: u32) -> u32 {

@@ -1,11 +1,13 @@
 //! Batch twins: every encoder and decoder of [`crate::normal`], [`crate::depth24`],
 //! [`crate::roughness`] and the byte forms of [`crate::roughness_ggx`] over slices, vectorised, **bit-identical to the scalar twins for every
 //! input** (NaN, infinities, subnormals and out-of-range codes included), so data encoded here
-//! decodes exactly like the WGSL's on a correctly rounded adapter.
+//! decodes exactly like the WGSL's on a correctly rounded adapter. (The `_vouched` normal
+//! encoders are bit-identical on every input inside their contract; outside it they return
+//! some valid code: [`normal`].)
 //!
 //! | family | batch twins | scalar twins |
 //! |---|---|---|
-//! | normals: xyz8, xyz10, snorm8, xy FP16, oct16/24/32 (precise, rounding), hemioct24, `_unorm` forms | [`normal`] | [`crate::normal`] |
+//! | normals: xyz8, xyz10, snorm8, xy FP16, oct16/20/24/32 (precise, rounding, vouched), hemioct24 (also vouched), signed octahedron, Substrate (normal and whole word), `_unorm` forms | [`normal`] | [`crate::normal`] |
 //! | 24-bit depth: pack, recover (packed, RGB8), hyperbolic depth, `unpack4x8unorm` | [`depth24`] | [`crate::depth24`] |
 //! | log-range roughness: encode, decode | [`roughness`] | [`crate::roughness`] |
 //! | GGX roughness in 8 bits: linear, Godot, log curve; encode, decode | [`roughness_ggx`] | [`crate::roughness_ggx`] |

@@ -1,11 +1,16 @@
 //! Batch twins of the normal encodings ([`crate::normal`]): xyz8 (and its best-fit encoder), xyz10, snorm8, xy FP16, octahedral 16/20/24/32 (24 also in Unity's byte order), Unreal Substrate's centred 11:11 normal
+//! and its whole word (normal, roughness byte, flags)
 //! (precise and rounding encoders, and the generic `bits` forms), hemi-octahedral 24, O3DE's
-//! signed octahedron, and every
+//! signed octahedron, the `_vouched` encoders of oct16/24/32 and hemioct24, and every
 //! `_unorm` render-target form. Names, the slice contract and the vectorisation: [`crate::batch`].
 //!
 //! Each function writes exactly what its scalar twin returns for every input (checked by
 //! `tests/batch.rs` on every level this CPU has), so the error bounds, bad-input rules and
-//! layouts are the scalar twins': see the linked function.
+//! layouts are the scalar twins': see the linked function. **The exception: the `_vouched`
+//! encoders** equal their scalar twins on every input inside the twin's contract
+//! ([`oct::is_vouched`], [`hemioct::is_vouched`]); outside it, where the scalar twin's code is
+//! itself unspecified, they return some valid code (each axis in `[0, M]`, the bits above the
+//! code zero) and never panic.
 //!
 //! **The precise octahedral encoders** evaluate the scalar twin's four candidate scores
 //! `|s × D|²/|D|²` in the same order with the same operations and keep the first strictly
@@ -109,7 +114,13 @@ fn normalize(v: Vec3) -> Vec3 {
 #[inline(always)]
 fn oct_fold(s: Vec3) -> Vec2 {
     let a = s.abs();
-    let l1 = (a.x + a.y) + a.z;
+    oct_fold_l1(s, (a.x + a.y) + a.z)
+}
+
+/// [`oct_fold`] with the L1 norm passed in (the vouched encoders guard it, or divide by the
+/// unscaled one): `oct::project`, branch-free.
+#[inline(always)]
+fn oct_fold_l1(s: Vec3, l1: f32) -> Vec2 {
     let p = Vec2::new(s.x / l1, s.y / l1);
     let sgn = Vec2::new(
         if p.x >= 0.0 { 1.0 } else { -1.0 },
@@ -256,7 +267,13 @@ fn oct_decode_lane(p: u32, bits: u32, m: u32) -> Vec3 {
 
 #[inline(always)]
 fn hemioct_continuous(s: Vec3) -> Vec2 {
-    let l1 = (s.x.abs() + s.y.abs()) + s.z;
+    hemioct_codes(s, (s.x.abs() + s.y.abs()) + s.z)
+}
+
+/// [`hemioct_continuous`] with the L1 norm passed in (`hemioct::codes`; the vouched encoder
+/// keeps it at least `2^-126`).
+#[inline(always)]
+fn hemioct_codes(s: Vec3, l1: f32) -> Vec2 {
     let p = Vec2::new(s.x / l1, s.y / l1);
     let q = Vec2::new(p.x + p.y, p.x - p.y);
     (q * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(oct::CONTINUOUS_TOP)) * hemioct::M as f32
@@ -566,6 +583,84 @@ fn substrate_decode_lane(p: u32) -> Vec3 {
     normalize(Vec3::new(d[0] as f32, d[1] as f32, d[2] as f32))
 }
 
+/// Substrate's whole word from `(n, roughness, flags)`: the normal bits of `normal`, the
+/// roughness byte ([`crate::roughness_ggx::encode_roughness_ggx8`]'s lane) at bit 2, the low 2
+/// flag bits.
+#[inline(always)]
+fn substrate_word_with(normal: impl Fn(Vec3) -> u32, (n, r, flags): (Vec3, f32, u32)) -> u32 {
+    normal(n) | (super::roughness_ggx::linear_lane(r, 256.0) << 2) | (flags & 3)
+}
+#[inline(always)]
+fn substrate_word_lane(w: (Vec3, f32, u32)) -> u32 {
+    substrate_word_with(substrate_precise_lane, w)
+}
+#[inline(always)]
+fn substrate_word_fast_lane(w: (Vec3, f32, u32)) -> u32 {
+    substrate_word_with(substrate_round_lane, w)
+}
+
+// ---- Vouched encoders ([`oct::encode_precise_vouched`], [`oct::encode_round_vouched`],
+// hemioct's): the scalar twins' operations in order; only where those leave the result to a
+// saturating float-to-int conversion (outside the contract) do the lanes differ. ----
+
+/// `oct::scale_vouched` (and hemioct's, given the clamped vector): `n·2^(127 − e)`, `e` the
+/// biased exponent of `‖n‖∞` taken as glam's `max_element` takes it, the `u32` arithmetic
+/// wrapping as the twin's.
+#[inline(always)]
+fn scale_vouched_lane(n: Vec3) -> Vec3 {
+    let a = n.abs();
+    let max = |a: f32, b: f32| if a > b { a } else { b };
+    let e = max(max(a.x, a.y), a.z).to_bits() >> 23;
+    n * f32::from_bits(254u32.wrapping_sub(e) << 23)
+}
+
+/// `round_ties_even(x)` of a rounding vouched encoder's `t·M`, clamped to `[0, M]` first (NaN →
+/// 0): in the contract `t·M` lies within a few ULP of `[0, M]` and rounds into it, so the clamp
+/// changes no code; outside it, it keeps each axis a code (the twin's `as u32` saturates, which
+/// does not vectorise).
+#[inline(always)]
+fn round_code_lane(x: f32, m: f32) -> u32 {
+    let x = if x > 0.0 { x } else { 0.0 };
+    round_even_small(if x < m { x } else { m })
+}
+
+#[inline(always)]
+fn oct_precise_vouched_lane<const BITS: u32>(n: Vec3) -> u32 {
+    let m = (1u32 << BITS) - 1;
+    let s = scale_vouched_lane(n);
+    let a = s.abs();
+    let p = oct_fold_l1(s, ((a.x + a.y) + a.z).max(f32::MIN_POSITIVE));
+    let c = (p * 0.5 + 0.5).clamp(Vec2::ZERO, Vec2::splat(oct::CONTINUOUS_TOP)) * m as f32;
+    let (u, v) = best_of_four(s, c, |u, v| oct_lattice(u, v, m as i32));
+    u | (v << BITS)
+}
+
+#[inline(always)]
+fn oct_round_vouched_lane<const BITS: u32>(n: Vec3) -> u32 {
+    let m = ((1u32 << BITS) - 1) as f32;
+    let a = n.abs();
+    let t = oct_fold_l1(n, (a.x + a.y) + a.z) * 0.5 + 0.5;
+    round_code_lane(t.x * m, m) | (round_code_lane(t.y * m, m) << BITS)
+}
+
+#[inline(always)]
+fn hemioct_precise_vouched_lane(n: Vec3) -> u32 {
+    let s = scale_vouched_lane(Vec3::new(n.x, n.y, n.z.max(0.0)));
+    let a = s.abs();
+    let c = hemioct_codes(s, ((a.x + a.y) + s.z).max(f32::MIN_POSITIVE));
+    let (u, v) = best_of_four(s, c, hemioct_lattice);
+    u | (v << 12)
+}
+
+#[inline(always)]
+fn hemioct_round_vouched_lane(n: Vec3) -> u32 {
+    let l1 = (n.x.abs() + n.y.abs()) + n.z.max(0.0);
+    let p = Vec2::new(n.x / l1, n.y / l1);
+    let t = Vec2::new(p.x + p.y, p.x - p.y) * 0.5 + 0.5;
+    let m = hemioct::M as f32;
+    round_code_lane(t.x * m, m) | (round_code_lane(t.y * m, m) << 12)
+}
+
 #[inline(always)]
 fn unity_bytes_lane(p: u32) -> u32 {
     let (u, v) = (p & 0xfff, (p >> 12) & 0xfff);
@@ -741,6 +836,30 @@ batch_fn!(
     (), u32 => Vec3,
     scalar: substrate::decode_substrate_normal,
     lane: substrate_decode_lane,
+);
+batch_fn!(
+    /// Batch [`substrate::encode_substrate_word`]: each `src[i] = (n, roughness, flags)` packed
+    /// into Unreal Substrate's whole 32-bit word, `normal22 << 10 | byte << 2 | (flags & 3)`:
+    /// the precise centred 11:11 octahedral code of `n` (bits 10–31), the roughness byte
+    /// nearest `255·clamp(roughness, 0, 1)` (exact; NaN → 255), the low two flag bits. The
+    /// scalar twin's word for every input, so its error bound: the normal within
+    /// [`substrate::encode_substrate_normal`]'s (≈ 0.1189° plus the f32 scoring tolerance), the
+    /// roughness within half a step, `1/510`.
+    encode_substrate_word, encode_substrate_word_with, "normal::encode_substrate_word",
+    (), (Vec3, f32, u32) => u32,
+    scalar: |(n, r, flags)| substrate::encode_substrate_word(n, r, flags),
+    lane: substrate_word_lane,
+);
+batch_fn!(
+    /// Batch [`substrate::encode_substrate_word_fast`]: [`encode_substrate_word`] with the
+    /// rounding normal encoder ([`substrate::encode_substrate_normal_fast`]: each centred
+    /// coordinate rounded half to even, within ≈ 0.1189° of the input); the scalar twin's word
+    /// for every input.
+    encode_substrate_word_fast, encode_substrate_word_fast_with,
+    "normal::encode_substrate_word_fast",
+    (), (Vec3, f32, u32) => u32,
+    scalar: |(n, r, flags)| substrate::encode_substrate_word_fast(n, r, flags),
+    lane: substrate_word_fast_lane,
 );
 
 batch_fn!(
@@ -1097,4 +1216,103 @@ batch_fn!(
     (), [f32; 4] => Vec3,
     scalar: signed_oct::decode_normal_signed_oct_unorm,
     lane: signed_oct_decode_unorm,
+);
+
+macro_rules! oct_vouched {
+    ($bits:literal, $m:literal, $enc:ident, $enc_w:ident, $robust:ident,
+     $fast:ident, $fast_w:ident, $robust_fast:ident) => {
+        batch_fn!(
+            #[doc = concat!("Batch [`oct::", stringify!($enc), "`]: the precise octahedral code (", stringify!($bits), " bits per axis) of a vector the caller vouches for.")]
+            ///
+            /// **Inside the contract** ([`oct::is_vouched`]: components finite, non-zero ones at
+            /// least `2^-126·max(1, ‖n‖∞)`, `0 < ‖n‖∞ ≤ 2^124`), and for the zero vector (+z),
+            /// each element is the scalar vouched twin's code bit for bit, which is
+            #[doc = concat!("[`oct::", stringify!($robust), "`]'s:")]
+            /// the best of the four codes around the continuous coordinates, so its maths and
+            /// error bound ([`oct::encode_precise_vouched`], [`oct::encode_precise`]).
+            #[doc = concat!("**Outside it:** some valid code, unspecified (each axis in `[0, ", $m, "]`, the bits above the code zero); never panics.")]
+            $enc, $enc_w, concat!("normal::", stringify!($enc)),
+            (), Vec3 => u32,
+            scalar: oct::$enc,
+            lane: oct_precise_vouched_lane::<$bits>,
+        );
+        batch_fn!(
+            #[doc = concat!("Batch [`oct::", stringify!($fast), "`]: the rounding octahedral code (", stringify!($bits), " bits per axis) of a vector the caller vouches for, `round(t·M)` half to even per axis, `t = p/2 + 1/2`, `p` the folded projection.")]
+            ///
+            /// **Inside the contract** ([`oct::is_vouched`]; the zero vector is outside it) each
+            /// element is the scalar vouched twin's code bit for bit, which is
+            #[doc = concat!("[`oct::", stringify!($robust_fast), "`]'s,")]
+            /// with its error bound ([`oct::encode_round_vouched`], [`oct::encode_round`]).
+            #[doc = concat!("**Outside it:** some valid code, unspecified (each axis in `[0, ", $m, "]`, the bits above the code zero; the scalar twin's saturating conversion may differ); never panics.")]
+            $fast, $fast_w, concat!("normal::", stringify!($fast)),
+            (), Vec3 => u32,
+            scalar: oct::$fast,
+            lane: oct_round_vouched_lane::<$bits>,
+        );
+    };
+}
+
+oct_vouched!(
+    8,
+    "255",
+    encode_normal_oct16_vouched,
+    encode_normal_oct16_vouched_with,
+    encode_normal_oct16,
+    encode_normal_oct16_fast_vouched,
+    encode_normal_oct16_fast_vouched_with,
+    encode_normal_oct16_fast
+);
+oct_vouched!(
+    12,
+    "4095",
+    encode_normal_oct24_vouched,
+    encode_normal_oct24_vouched_with,
+    encode_normal_oct24,
+    encode_normal_oct24_fast_vouched,
+    encode_normal_oct24_fast_vouched_with,
+    encode_normal_oct24_fast
+);
+oct_vouched!(
+    16,
+    "65535",
+    encode_normal_oct32_vouched,
+    encode_normal_oct32_vouched_with,
+    encode_normal_oct32,
+    encode_normal_oct32_fast_vouched,
+    encode_normal_oct32_fast_vouched_with,
+    encode_normal_oct32_fast
+);
+
+batch_fn!(
+    /// Batch [`hemioct::encode_normal_hemioct24_vouched`]: the precise hemi-octahedral code of a
+    /// vector the caller vouches for.
+    ///
+    /// **Inside the contract** ([`hemioct::is_vouched`]: `n` finite; on the clamp
+    /// `c = (x, y, max(z, 0))`, non-zero components at least `2^-126·max(1, ‖c‖∞)`,
+    /// `0 < ‖c‖∞ ≤ 2^124`), and for a zero clamp (+z), each element is the scalar vouched
+    /// twin's code bit for bit, which is [`hemioct::encode_normal_hemioct24`]'s: the best of the
+    /// four codes around the continuous coordinates, with its error bound.
+    /// **Outside it:** some valid code, unspecified (each axis in `[0, 4095]`, bits 24–31
+    /// zero); never panics.
+    encode_normal_hemioct24_vouched, encode_normal_hemioct24_vouched_with,
+    "normal::encode_normal_hemioct24_vouched",
+    (), Vec3 => u32,
+    scalar: hemioct::encode_normal_hemioct24_vouched,
+    lane: hemioct_precise_vouched_lane,
+);
+batch_fn!(
+    /// Batch [`hemioct::encode_normal_hemioct24_fast_vouched`]: the rounding hemi-octahedral
+    /// code of a vector the caller vouches for, `round(t·4095)` half to even per axis,
+    /// `t = q/2 + 1/2`, `q = (p.x + p.y, p.x − p.y)`, `p = n.xy / ((|x| + |y|) + max(z, 0))`.
+    ///
+    /// **Inside the contract** ([`hemioct::is_vouched`]; a zero clamp is outside it) each
+    /// element is the scalar vouched twin's code bit for bit, which is
+    /// [`hemioct::encode_normal_hemioct24_fast`]'s, with its error bound.
+    /// **Outside it:** some valid code, unspecified (each axis in `[0, 4095]`, bits 24–31
+    /// zero; the scalar twin's saturating conversion may differ); never panics.
+    encode_normal_hemioct24_fast_vouched, encode_normal_hemioct24_fast_vouched_with,
+    "normal::encode_normal_hemioct24_fast_vouched",
+    (), Vec3 => u32,
+    scalar: hemioct::encode_normal_hemioct24_fast_vouched,
+    lane: hemioct_round_vouched_lane,
 );

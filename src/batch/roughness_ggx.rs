@@ -14,7 +14,7 @@ use crate::roughness_ggx as g;
 
 /// The scalar twin's exact linear code, branch-free (`scale = n + 1`, a power of two).
 #[inline(always)]
-fn linear_lane(r: f32, scale: f32) -> u32 {
+pub(crate) fn linear_lane(r: f32, scale: f32) -> u32 {
     let b = r.to_bits();
     let n = scale - 1.0;
     let top = n as u32;
