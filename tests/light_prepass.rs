@@ -1,12 +1,14 @@
 //! The light pre-pass example's frame (`examples/light_prepass`), rendered on the adapter at a
-//! small size with the fat reference G-buffer and every diet layout of the issue (xyz8, oct24,
-//! oct32, xy FP16 normals; D24 in RGBA8 and D32F depth; one and two light buffers). It checks
+//! small size with the fat reference G-buffer and every diet layout `--compare` renders (every
+//! `--normal` choice but snorm8, whose target core WebGPU cannot render: the issue's xyz8,
+//! oct24, oct32, xy FP16, then oct16, hemioct24, xyz10, oct20, the signed octahedron, oct24 in
+//! Unity's order; D24 in RGBA8 and D32F depth; one and two light buffers). It checks
 //! that no pixel is NaN or infinite, that each diet G-buffer read back from its render targets
 //! decodes within the encodings' derived errors of the fat one, that every diet frame stays
 //! within the bound derived in
 //! `examples/light_prepass/renderer/bound.rs` of the fat frame at every pixel, that xy FP16's
-//! mirrored `z < 0` normals show beyond that bound, that the images are written, and the bad
-//! input of the issue (a light at the camera, a volume through the near plane, a zero-radius
+//! mirrored and hemioct24's clamped `z < 0` normals show beyond that bound, that the images are
+//! written, and the bad input of the issue (a light at the camera, a volume through the near plane, a zero-radius
 //! light, the sky, resolutions of 0 and beyond the adapter's limit).
 //!
 //! It publishes docs/light_prepass.md's `light-prepass` table (bytes per pixel, memory, error: the
@@ -163,7 +165,11 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
     let base = small();
     let scene = scene::build(base.lights);
     let rows = run(dev, &base, &scene).unwrap_or_else(|e| panic!("{e}"));
-    assert_eq!(rows.len(), 18, "two fat frames and sixteen diet layouts");
+    assert_eq!(
+        rows.len(),
+        42,
+        "two fat frames and 40 diet layouts (10 normals × 2 depths × 2 light layouts)"
+    );
     for r in &rows {
         assert_eq!(
             non_finite(&r.output.colour),
@@ -180,14 +186,15 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
         let (excluded, broken, excess) = check_bound(&rows, r, &scene);
         if bound::hemisphere_only(normal) {
             // The scene's normal-mapped ground and off-axis spheres face away from the view
-            // axis (z < 0): xy FP16 mirrors those normals, and the error there must break the
+            // axis (z < 0): xy FP16 mirrors those normals, hemioct24 clamps them onto the
+            // equator, and the error there must break the
             // bound the same pixels would have if their normals were in the encoding's domain
             // — the artefact is in the image, not only in the numbers.
             assert_at_least!(excluded, > 0, "the scene must have z < 0 view-space normals");
             assert_at_least!(
                 excess,
                 > 1.0,
-                "xy FP16's z < 0 artefact: error beyond the in-domain bound (bound::in_domain), \
+                "the hemisphere-only encoding's z < 0 artefact: error beyond the in-domain bound (bound::in_domain), \
                  levels",
                 "{}: {broken} of {excluded} z < 0 pixels break it",
                 r.cfg.layout_name()

@@ -223,9 +223,14 @@ pub fn encoding_name(e: NormalEncoding) -> &'static str {
     }
 }
 
-/// The layouts `--compare` renders against the fat reference: every diet normal of the issue
-/// (xyz8, oct24, oct32, xy fp16) with each depth storage (D24 in RGBA8, D32F), for the light
-/// layout given.
+/// The layouts `--compare` renders against the fat reference: every normal `--normal` offers
+/// but snorm8 — the issue's diet normals (xyz8, oct24, oct32, xy fp16) first, then oct16,
+/// hemioct24, xyz10, oct20, O3DE's signed octahedron and oct24 in Unity's byte order — with
+/// each depth storage (D24 in RGBA8, D32F), for the light layout given. snorm8 is left out:
+/// its `rgba8snorm` target is not colour-renderable in core WebGPU (Dawn refuses the G-buffer
+/// pipeline without the `texture-formats-tier1` feature), and every layout compared here is
+/// built through Dawn by `tests/light_prepass.rs`; `--normal snorm8` still renders one frame on
+/// wgpu's native backends.
 pub fn diet_layouts(lights: LightBuffers) -> Vec<(Storage, LightBuffers)> {
     let mut v = Vec::new();
     for normal in [
@@ -233,6 +238,12 @@ pub fn diet_layouts(lights: LightBuffers) -> Vec<(Storage, LightBuffers)> {
         NormalEncoding::Oct24,
         NormalEncoding::Oct32,
         NormalEncoding::XyFp16,
+        NormalEncoding::Oct16,
+        NormalEncoding::Hemioct24,
+        NormalEncoding::Xyz10,
+        NormalEncoding::Oct20,
+        NormalEncoding::SignedOct,
+        NormalEncoding::Oct24Unity,
     ] {
         for depth in [DepthStorage::Code24Rgba8, DepthStorage::Float32] {
             v.push((Storage::Diet { normal, depth }, lights));

@@ -247,7 +247,7 @@ pub fn write(
     md.push_str(
         "## The G-buffer, decoded\n\nEach diet G-buffer read back from its render targets, \
          decoded with the crate's Rust twins, against the fat one at every pixel with geometry \
-         (xy FP16: normals with z ≥ 0 only), beside the bounds derived in \
+         (xy FP16 and hemioct24: normals with z ≥ 0 only), beside the bounds derived in \
          `examples/light_prepass/renderer/bound.rs`.\n\n| layout | max normal error ° | of \
          its derived bound | max view-depth error (relative) | of its derived bound |\n\
          |---|---|---|---|---|\n",
