@@ -9,7 +9,9 @@
 //! `examples/light_prepass/renderer/bound.rs` of the fat frame at every pixel, that xy FP16's
 //! mirrored and hemioct24's clamped `z < 0` normals show beyond that bound, that the images are
 //! written, and the bad input of the issue (a light at the camera, a volume through the near plane, a zero-radius
-//! light, the sky, resolutions of 0 and beyond the adapter's limit).
+//! light, the sky, resolutions of 0 and beyond the adapter's limit). The same checks hold with the
+//! G-buffer's roughness stored the GGX ways (`--roughness ggx8 | ggx8-log | godot8`) and with the
+//! Substrate word (`--normal substrate`, ggx8 in its own byte).
 //!
 //! It publishes docs/light_prepass.md's `light-prepass` table (bytes per pixel, memory, error: the
 //! deterministic columns; times vary per run and stay in the example's `compare.md`) and, with
@@ -277,6 +279,99 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
     }
 }
 
+/// The GGX roughness forms (`--roughness ggx8 | ggx8-log | godot8`) and the Substrate word
+/// (`--normal substrate`, whose own byte holds ggx8), as the first test checks the log8 layouts:
+/// each diet frame against the fat frame of the same form — finite pixels, the G-buffer decoded
+/// within its derived errors with the roughness codes identical, every pixel within the derived
+/// bound (its exponent decoded by the form: `bound::power_of_code`). The fat codes are the Rust
+/// twins' codes of the materials' powers (`r = √α`, `α = √(2/(p + 2))`; the scene's `r` lie at
+/// least 9e-6 relative from a code boundary, far beyond f32's few ULP). And the command line's
+/// choice: log8 by default, ggx8 for Substrate, which refuses the other forms.
+#[test]
+fn light_prepass_ggx_roughness_and_substrate_within_derived_bound_of_fat() {
+    use prepass::roughness_ggx as ggx;
+    use prepass::scene::RoughnessChoice as R;
+    use prepass::scene::{DepthStorage as D, LightBuffers as L, NormalEncoding as N};
+    use renderer::resolve_roughness;
+    assert_eq!(resolve_roughness(Some(N::Oct24), None), Ok(R::Log8));
+    assert_eq!(resolve_roughness(None, Some(R::Godot8)), Ok(R::Godot8));
+    assert_eq!(resolve_roughness(Some(N::Substrate), None), Ok(R::Ggx8));
+    assert_eq!(
+        resolve_roughness(Some(N::Substrate), Some(R::Ggx8)),
+        Ok(R::Ggx8)
+    );
+    for r in [R::Log8, R::Ggx8Log, R::Godot8] {
+        let e = resolve_roughness(Some(N::Substrate), Some(r)).expect_err("Substrate refuses it");
+        assert!(e.contains("ggx8 only"), "{e}");
+    }
+
+    let dev = device();
+    let scene = scene::build(small().lights);
+    let diet = |normal, depth, lights| (Storage::Diet { normal, depth }, lights);
+    let runs = [
+        (
+            R::Ggx8,
+            L::One,
+            vec![
+                diet(N::Oct24, D::Float32, L::One),
+                diet(N::Oct32, D::Code24Rgba8, L::One),
+                diet(N::Substrate, D::Float32, L::One),
+            ],
+        ),
+        (
+            R::Ggx8,
+            L::Two,
+            vec![diet(N::Substrate, D::Code24Rgba8, L::Two)],
+        ),
+        (R::Ggx8Log, L::One, vec![diet(N::Oct24, D::Float32, L::One)]),
+        (R::Godot8, L::One, vec![diet(N::Oct32, D::Float32, L::One)]),
+    ];
+    for (roughness, lights, layouts) in runs {
+        let base = Config {
+            roughness,
+            ..small()
+        };
+        let rows = renderer::report::run_layouts(dev, &base, lights, &layouts, &scene)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let fat = rows[0].output.fat.as_ref().expect("the fat G-buffer");
+        let codes: Vec<u32> = scene
+            .materials
+            .iter()
+            .map(|m| {
+                let r = (2.0 / (m.albedo_power[3] + 2.0)).sqrt().sqrt();
+                match roughness {
+                    R::Ggx8 => ggx::encode_roughness_ggx8(r),
+                    R::Ggx8Log => ggx::encode_roughness_ggx8_log(r),
+                    _ => ggx::encode_roughness_godot8(r, 0),
+                }
+            })
+            .collect();
+        let lit = fat.view_z.iter().filter(|&&z| z > 0.0).count();
+        assert!(lit > 0, "the frame has geometry");
+        for (t, z) in fat.normal.iter().zip(&fat.view_z) {
+            if *z > 0.0 {
+                assert!(
+                    codes.contains(&(t[3] as u32)),
+                    "{roughness:?}: fat code {} is no material's code {codes:?}",
+                    t[3]
+                );
+            }
+        }
+        for r in &rows {
+            assert_eq!(
+                non_finite(&r.output.colour),
+                0,
+                "{}: NaN or infinite pixels",
+                r.cfg.layout_name()
+            );
+        }
+        for r in rows.iter().filter(|r| r.error.is_some()) {
+            check_gbuffer(&rows, r, &scene);
+            check_bound(&rows, r, &scene);
+        }
+    }
+}
+
 fn png_size(path: &std::path::Path) -> (u32, u32) {
     let f = std::fs::File::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let r = png::Decoder::new(std::io::BufReader::new(f))
@@ -327,9 +422,67 @@ fn light_prepass_shaders_compile_with_tint() {
 }
 
 /// The small frame's configuration for every layout the report renders (the fat one and every
-/// diet layout, with one and with two light buffers), at each of `samples`.
+/// diet layout, with one and with two light buffers), at each of `samples`; and the GGX
+/// roughness forms' modules (`--roughness`, `--normal substrate`), whose light and G-buffer
+/// passes differ from log8's in the roughness lines (and Substrate's r32uint word), single-sampled
+/// where the layout is Substrate's (WebGPU has no multisampled r32uint).
 fn every_layout(samples: &[u32]) -> Vec<Config> {
+    use prepass::scene::{DepthStorage as D, NormalEncoding as N, RoughnessChoice as R};
     let mut out = Vec::new();
+    for (storage, roughness) in [
+        (Storage::Fat, R::Ggx8),
+        (
+            Storage::Diet {
+                normal: N::Oct24,
+                depth: D::Float32,
+            },
+            R::Ggx8,
+        ),
+        (
+            Storage::Diet {
+                normal: N::Oct32,
+                depth: D::Code24Rgba8,
+            },
+            R::Ggx8Log,
+        ),
+        (
+            Storage::Diet {
+                normal: N::Oct24,
+                depth: D::Float32,
+            },
+            R::Godot8,
+        ),
+        (
+            Storage::Diet {
+                normal: N::Substrate,
+                depth: D::Float32,
+            },
+            R::Ggx8,
+        ),
+        (
+            Storage::Diet {
+                normal: N::Substrate,
+                depth: D::Code24Rgba8,
+            },
+            R::Ggx8,
+        ),
+    ] {
+        let substrate = matches!(
+            storage,
+            Storage::Diet {
+                normal: N::Substrate,
+                ..
+            }
+        );
+        for &msaa in samples.iter().filter(|&&n| n == 1 || !substrate) {
+            out.push(Config {
+                storage,
+                roughness,
+                msaa,
+                ..small()
+            });
+        }
+    }
     for lights in [
         prepass::scene::LightBuffers::One,
         prepass::scene::LightBuffers::Two,

@@ -601,11 +601,15 @@ fn unity_layout_is_oct24_in_unitys_bytes() {
     }
 }
 
-/// Unity's writer as its HLSL computes it (`PackNormalOctQuadEncode`: `n·rcp(max(‖n‖₁, 1e-6))`,
-/// the lower half folded by `t = saturate(−z)`; `saturate(o·0.5 + 0.5)`; `PackFloat2To888`'s
-/// `u32(f·4095.5)`), `rcp` taken as a correctly rounded `1/x`, in f32: the engine's own
-/// encoder, for comparison.
+/// Unity's writer as its HLSL computes it (HDRP's `EncodeIntoNormalBuffer` first raises `|z|` to
+/// at least 1/1024, the sign kept as `CopySign` keeps it, −0 read as +; then
+/// `PackNormalOctQuadEncode`: `n·rcp(max(‖n‖₁, 1e-6))`, the lower half folded by
+/// `t = saturate(−z)`; `saturate(o·0.5 + 0.5)`; `PackFloat2To888`'s `u32(f·4095.5)`), `rcp` taken
+/// as a correctly rounded `1/x`, in f32: the engine's own encoder, for comparison (sources:
+/// tests/baselines/peer_unity.wgsl's header).
 fn unity_engine_encode(n: [f32; 3]) -> u32 {
+    let za = n[2].abs().max(1.0 / 1024.0);
+    let n = [n[0], n[1], if n[2] >= 0.0 { za } else { -za }];
     let r = 1.0 / (n[0].abs() + n[1].abs() + n[2].abs()).max(1e-6);
     let m = n.map(|c| c * r);
     let t = (-m[2]).clamp(0.0, 1.0);

@@ -2,6 +2,14 @@
 //! composed WGSL, light volumes, a composite pass, PNGs out; `--compare` measures the
 //! render-target diet against a fat G-buffer. See docs/light_prepass.md.
 //!
+//! The G-buffer stores each material's specular power as the 8-bit log-range code (`log8`,
+//! the default) or, with `--roughness`, as GGX perceptual roughness `r` the way engines store
+//! it (`ggx8`: linear `r`; `ggx8-log`: prepass's log curve; `godot8`: Godot's 7 bits and a
+//! static-object flag): the power `p` becomes `r = √α`, `α = √(2/(p + 2))`, and the light pass
+//! lights with the power `2/α² − 2` of the decoded `α`. `--normal substrate` (Unreal Substrate's
+//! word) carries linear `r` in its own byte, so it stores ggx8 (the default there) and refuses
+//! the other forms.
+//!
 //! ```text
 //! cargo run --release --all-features --example light_prepass -- --out DIR [options]
 //! ```
@@ -16,7 +24,7 @@ mod renderer;
 use prepass::projection::DepthConvention;
 use prepass::scene::{DepthStorage, LightBuffers, NormalEncoding};
 use renderer::render::{Device, render};
-use renderer::{Config, LightFormat, Storage, compare, png_out, report, scene};
+use renderer::{Config, LightFormat, ROUGHNESS, Storage, compare, png_out, report, scene};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -27,7 +35,13 @@ light_prepass: render a light pre-pass frame headless and write PNGs.
   --out DIR              output folder (default light_prepass-out)
   --size WxH             resolution (default 1280x720)
   --lights N             random point and spot lights (default 256; 3 bad-input lights are added)
-  --normal NAME          xyz8 | oct16 | oct24 | oct32 | xy-fp16 | hemioct24 | xyz10 | oct20 | signed-oct | snorm8 | oct24-unity | fat (default oct24)
+  --normal NAME          xyz8 | oct16 | oct24 | oct32 | xy-fp16 | hemioct24 | xyz10 | oct20 | signed-oct | snorm8 | oct24-unity | substrate | fat (default oct24)
+  --roughness NAME       how the G-buffer stores the material's specular power p: log8 (its
+                         log-range code) | ggx8 (GGX perceptual roughness r = sqrt(a),
+                         a = sqrt(2/(p + 2)), linear in 8 bits) | ggx8-log (r on prepass's log
+                         curve) | godot8 (Godot's 7 bits, static flag); the GGX forms light with
+                         the power 2/a^2 - 2 of the decoded a (default log8; with --normal
+                         substrate ggx8, the only form its word holds: others are refused)
   --depth NAME           d32f | d24-rgba8 (default d32f; fat stores f32 view depth)
   --convention NAME      reversed | standard (default reversed)
   --far F                far plane, or inf (default inf: infinite projection)
@@ -50,6 +64,7 @@ fn parse() -> Result<Args, String> {
     let mut out = PathBuf::from("light_prepass-out");
     let mut compare = false;
     let (mut normal, mut depth) = (Some(NormalEncoding::Oct24), DepthStorage::Float32);
+    let mut roughness = None;
     let mut it = std::env::args().skip(1);
     while let Some(a) = it.next() {
         let mut value = || it.next().ok_or_else(|| format!("{a} needs a value"));
@@ -92,9 +107,22 @@ fn parse() -> Result<Args, String> {
                     "signed-oct" => Some(NormalEncoding::SignedOct),
                     "snorm8" => Some(NormalEncoding::Snorm8),
                     "oct24-unity" => Some(NormalEncoding::Oct24Unity),
+                    "substrate" => Some(NormalEncoding::Substrate),
                     "fat" => None,
                     _ => return Err(format!("--normal {v}: unknown encoding")),
                 }
+            }
+            "--roughness" => {
+                let v = value()?;
+                roughness = Some(
+                    ROUGHNESS
+                        .iter()
+                        .find(|(name, _)| *name == v)
+                        .map(|(_, r)| *r)
+                        .ok_or_else(|| {
+                            format!("--roughness {v}: log8, ggx8, ggx8-log or godot8")
+                        })?,
+                );
             }
             "--depth" => {
                 let v = value()?;
@@ -152,6 +180,7 @@ fn parse() -> Result<Args, String> {
             _ => return Err(format!("unknown argument {a} (see --help)")),
         }
     }
+    cfg.roughness = renderer::resolve_roughness(normal, roughness)?;
     cfg.storage = match normal {
         None => Storage::Fat,
         Some(normal) => Storage::Diet { normal, depth },

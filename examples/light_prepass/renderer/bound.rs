@@ -6,8 +6,9 @@
 //! # Derivation
 //!
 //! The fat and diet frames share everything but the G-buffer's normals and depth: the same
-//! geometry and depth test, the same roughness code (stored exactly in both), the same lights,
-//! the same volumes and the same WGSL. So a pixel differs only through
+//! geometry and depth test, the same roughness code (stored exactly in both, in the frame's
+//! form: log8 or a GGX byte, decoded to the same exponent `n` by [`power_of_code`]), the same
+//! lights, the same volumes and the same WGSL. So a pixel differs only through
 //!
 //! 1. **the normal**, off by at most an angle `θ` ([`normal_angle`]); for unit vectors the chord
 //!    `|n − n'| ≤ θ`, so any dot product with a unit vector moves by at most `θ`;
@@ -58,7 +59,27 @@ use super::scene::Material;
 use super::volumes::LightGpu;
 use super::{Config, LightFormat, Storage};
 use glam::{Vec2, Vec3};
-use prepass::scene::{DepthStorage, LightBuffers, NormalEncoding};
+use prepass::scene::{DepthStorage, LightBuffers, NormalEncoding, RoughnessChoice};
+
+/// The Blinn-Phong exponent the light pass decodes from roughness code `code` stored in form
+/// `r`, as the WGSL computes it (`shaders::roughness_code`), through the decoders' Rust twins:
+/// log8's power; for the GGX forms the power `2/α² − 2` of the decoded `α`, at most
+/// [`MAX_POWER`](super::MAX_POWER).
+pub fn power_of_code(r: RoughnessChoice, code: u32) -> f32 {
+    use prepass::roughness_ggx as ggx;
+    let from_alpha = |a: f32| (2.0 / (a * a) - 2.0).min(super::MAX_POWER);
+    match r {
+        RoughnessChoice::None | RoughnessChoice::Log8 => {
+            prepass::roughness::decode_log_roughness(code, super::MAX_POWER)
+        }
+        RoughnessChoice::Ggx8 => from_alpha(ggx::decode_roughness_ggx8_alpha(code)),
+        RoughnessChoice::Ggx8Log => from_alpha(ggx::decode_roughness_ggx8_log_alpha(code)),
+        RoughnessChoice::Godot8 => {
+            let r = ggx::decode_roughness_godot8(code);
+            from_alpha(r * r)
+        }
+    }
+}
 
 /// The largest angle (radians) between a unit normal and its decoded code, derived:
 /// - **xyz8**: each component rounds to a step of `2/255`, off by `≤ 1/255`; the vector moves by
@@ -208,10 +229,7 @@ pub fn in_domain(inp: &Inputs, x: u32, y: u32) -> PixelBound {
     }
     let n = Vec3::new(t[0], t[1], t[2]).as_dvec3().normalize();
     let theta = normal_angle_at(normal, n.z);
-    let power = f64::from(prepass::roughness::decode_log_roughness(
-        t[3] as u32,
-        super::MAX_POWER,
-    ));
+    let power = f64::from(power_of_code(cfg.roughness, t[3] as u32));
     let ndc = Vec2::new(
         (x as f32 + 0.5) / cfg.width as f32 * 2.0 - 1.0,
         1.0 - (y as f32 + 0.5) / cfg.height as f32 * 2.0,
@@ -444,13 +462,16 @@ pub fn gbuffer_error(
             NormalEncoding::Oct20 => oct::decode_normal_oct20(p),
             // B (bits 20–29) is 1023 or 0: bit 20 is the code's sign bit, bits 21–31 ignored.
             NormalEncoding::SignedOct => prepass::normal::signed_oct::decode_normal_signed_oct(p),
-            // The r32uint texel is the word (the example does not offer it: see main.rs).
+            // The r32uint texel is the word.
             NormalEncoding::Substrate => prepass::normal::substrate::decode_substrate_normal(p),
             NormalEncoding::Snorm8 => snorm8::decode_normal_snorm8(p),
             NormalEncoding::Oct24Unity => oct::decode_normal_oct24_unity(p),
         };
         let code = if free {
             u32::from(b[3])
+        } else if normal == NormalEncoding::Substrate {
+            // Bits 2–9 of the word: the byte decode_substrate_roughness reads.
+            (p >> 2) & 0xff
         } else {
             u32::from(diet.targets.last().ok_or("no roughness target")?[i])
         };

@@ -14,6 +14,14 @@
 //! `--compare` (the MSAA section of `compare.md`). lavapipe offers 1× and 4× only: `--msaa 2`
 //! there is refused with the counts it has, and `--compare` measures 4× in its place.
 //!
+//! **Roughness.** The materials hold a Blinn-Phong specular power `p`. `Config::roughness`
+//! picks how pass (a) stores it: `Log8`, the power's log-range code (`encode_log_roughness`);
+//! or GGX perceptual roughness as engines store it, `r = √α` with `α = √(2/(p + 2))` (the exact
+//! inverse of the exponent `2/α² − 2`), by the library's byte encoders (`Ggx8` linear, `Ggx8Log`
+//! on the log curve, `Godot8` with the dynamic-object flag 0: the scene is static). The light
+//! pass decodes `α` and lights with the power `2/α² − 2` (capped at [`MAX_POWER`]). The Substrate
+//! normal's word carries the linear byte itself: it takes `Ggx8` only ([`resolve_roughness`]).
+//!
 //! **Depth bounds.** WebGPU has no depth-bounds test. Each light's range comes from the crate's
 //! `light_volume_sphere_depth_bounds` (`…bounds24` for the 24-bit code; a spot light uses the
 //! sphere of its range around the apex), computed per instance in the vertex stage; the fragment
@@ -108,11 +116,15 @@ pub struct Config {
     pub depth_bounds: bool,
     /// Timed repetitions (the minimum per pass is reported); the first is untimed.
     pub repeats: u32,
+    /// How the G-buffer stores the material's specular power: `Log8` (the power's log-range
+    /// code) or a GGX perceptual roughness form (`Ggx8`, `Ggx8Log`, `Godot8`: the power's
+    /// roughness, lit with the power `2/α² − 2` of the decoded α).
+    pub roughness: RoughnessChoice,
 }
 
 impl Config {
     /// The default frame: 1280×720, 256 lights, oct24 normals, reversed float depth with an
-    /// infinite far plane, the one-buffer light layout in rgba16float, no MSAA.
+    /// infinite far plane, the one-buffer light layout in rgba16float, no MSAA, log roughness.
     pub fn default_frame() -> Self {
         Config {
             width: 1280,
@@ -129,6 +141,7 @@ impl Config {
             light_format: LightFormat::Rgba16Float,
             depth_bounds: true,
             repeats: 2,
+            roughness: RoughnessChoice::Log8,
         }
     }
 
@@ -151,7 +164,7 @@ impl Config {
                 fast_encoder: false,
             },
             normal_input: NormalInput::Robust,
-            roughness: RoughnessChoice::Log8,
+            roughness: self.roughness,
             lighting: LightingChoice {
                 lights: Lights::PointAndSpot,
                 specular: Specular::BlinnPhong,
@@ -162,7 +175,8 @@ impl Config {
         }
     }
 
-    /// A short name of the layout, e.g. `oct24 + D32F, one buffer`.
+    /// A short name of the layout, e.g. `oct24 + D32F, one buffer` (`…, one buffer, ggx8` for a
+    /// roughness other than the default log8).
     pub fn layout_name(&self) -> String {
         let s = match self.storage {
             Storage::Fat => "fat (f32 normal + f32 view depth)".to_string(),
@@ -180,10 +194,14 @@ impl Config {
             LightBuffers::One => "one buffer",
             LightBuffers::Two => "two buffers",
         };
-        format!("{s}, {l}")
+        match self.roughness {
+            RoughnessChoice::Log8 => format!("{s}, {l}"),
+            r => format!("{s}, {l}, {}", roughness_name(r)),
+        }
     }
 
-    /// A file-name stem for the layout, e.g. `oct24_d32f_one`.
+    /// A file-name stem for the layout, e.g. `oct24_d32f_one` (`oct24_d32f_one_ggx8` for a
+    /// roughness other than log8).
     pub fn file_stem(&self) -> String {
         let s = match self.storage {
             Storage::Fat => "fat".to_string(),
@@ -200,7 +218,10 @@ impl Config {
             LightBuffers::One => "one",
             LightBuffers::Two => "two",
         };
-        format!("{s}_{l}")
+        match self.roughness {
+            RoughnessChoice::Log8 => format!("{s}_{l}"),
+            r => format!("{s}_{l}_{}", roughness_name(r).replace('-', "_")),
+        }
     }
 }
 
@@ -220,6 +241,42 @@ pub fn encoding_name(e: NormalEncoding) -> &'static str {
         NormalEncoding::Oct24Unity => "oct24 unity",
         NormalEncoding::Substrate => "substrate",
         NormalEncoding::SignedOct => "signed oct",
+    }
+}
+
+/// The roughness forms the example renders, by their `--roughness` names.
+pub const ROUGHNESS: [(&str, RoughnessChoice); 4] = [
+    ("log8", RoughnessChoice::Log8),
+    ("ggx8", RoughnessChoice::Ggx8),
+    ("ggx8-log", RoughnessChoice::Ggx8Log),
+    ("godot8", RoughnessChoice::Godot8),
+];
+
+/// The `--roughness` name of a form ([`ROUGHNESS`]; `none` for none stored).
+pub fn roughness_name(r: RoughnessChoice) -> &'static str {
+    ROUGHNESS
+        .iter()
+        .find(|(_, c)| *c == r)
+        .map_or("none", |(name, _)| name)
+}
+
+/// The roughness a frame with `normal` (`None`: the fat layout) stores, given `--roughness`
+/// (`asked`, `None` when not given): log8 by default; the Substrate word holds a linear GGX
+/// byte, so Substrate takes ggx8 by default and refuses the other forms.
+pub fn resolve_roughness(
+    normal: Option<NormalEncoding>,
+    asked: Option<RoughnessChoice>,
+) -> Result<RoughnessChoice, String> {
+    match (normal, asked) {
+        (Some(NormalEncoding::Substrate), None | Some(RoughnessChoice::Ggx8)) => {
+            Ok(RoughnessChoice::Ggx8)
+        }
+        (Some(NormalEncoding::Substrate), Some(r)) => Err(format!(
+            "--roughness {}: the Substrate word's roughness byte holds linear GGX perceptual \
+             roughness: --normal substrate renders --roughness ggx8 only",
+            roughness_name(r)
+        )),
+        (_, r) => Ok(r.unwrap_or(RoughnessChoice::Log8)),
     }
 }
 

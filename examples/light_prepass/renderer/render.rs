@@ -1,7 +1,7 @@
-//! The three passes on a wgpu device: (a) depth, normal and log roughness into the G-buffer's
-//! render targets, (b) light volumes blended additively into the light buffer(s), (c) a second
-//! geometry pass that combines light with material. Timestamp queries time each pass when the
-//! adapter has them.
+//! The three passes on a wgpu device: (a) depth, normal and roughness (log or GGX) into the
+//! G-buffer's render targets, (b) light volumes blended additively into the light buffer(s),
+//! (c) a second geometry pass that combines light with material. Timestamp queries time each
+//! pass when the adapter has them.
 
 use super::scene::SceneData;
 use super::{Config, LightFormat, MAX_POWER, Storage, shaders, volumes};
@@ -92,7 +92,7 @@ pub struct FatGBuffer {
 pub struct DietGBuffer {
     /// Each colour target's texels, in `Scene::gbuffer()` order after the depth target
     /// (normal, then the 24-bit depth code for D24, then the roughness for the encodings
-    /// without a free alpha).
+    /// without a free alpha, except Substrate, whose word holds it).
     pub targets: Vec<Vec<u8>>,
     /// The depth buffer (D32F layouts).
     pub depth: Option<Vec<f32>>,
@@ -179,7 +179,7 @@ fn gbuffer_targets(cfg: &Config) -> Vec<Target> {
                     },
                 });
             }
-            if !shaders::alpha_free(normal) {
+            if shaders::roughness_target(normal) {
                 t.push(Target {
                     format: wgpu::TextureFormat::R8Unorm,
                     clear: zero,
@@ -299,15 +299,24 @@ fn texture(
 }
 
 fn tex_entry(binding: u32, ms: bool, depth: bool) -> wgpu::BindGroupLayoutEntry {
+    let sample_type = if depth {
+        wgpu::TextureSampleType::Depth
+    } else {
+        wgpu::TextureSampleType::Float { filterable: false }
+    };
+    typed_tex_entry(binding, ms, sample_type)
+}
+
+fn typed_tex_entry(
+    binding: u32,
+    ms: bool,
+    sample_type: wgpu::TextureSampleType,
+) -> wgpu::BindGroupLayoutEntry {
     wgpu::BindGroupLayoutEntry {
         binding,
         visibility: wgpu::ShaderStages::FRAGMENT,
         ty: wgpu::BindingType::Texture {
-            sample_type: if depth {
-                wgpu::TextureSampleType::Depth
-            } else {
-                wgpu::TextureSampleType::Float { filterable: false }
-            },
+            sample_type,
             view_dimension: wgpu::TextureViewDimension::D2,
             multisampled: ms,
         },
@@ -813,7 +822,12 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
             g1_views.extend([&gviews[0], &gviews[1]]);
         }
         Storage::Diet { normal, depth } => {
-            g1_entries.push(tex_entry(0, ms, false));
+            // Substrate's word is an r32uint texel, read as u32.
+            g1_entries.push(if normal == NormalEncoding::Substrate {
+                typed_tex_entry(0, ms, wgpu::TextureSampleType::Uint)
+            } else {
+                tex_entry(0, ms, false)
+            });
             g1_views.push(&gviews[0]);
             let mut next = 1;
             if depth == DepthStorage::Code24Rgba8 {
@@ -824,7 +838,7 @@ pub fn render(dev: &Device, cfg: &Config, scene: &SceneData) -> Result<Output, S
                 g1_entries.push(tex_entry(1, ms, true));
                 g1_views.push(&depth_sample_view);
             }
-            if !shaders::alpha_free(normal) {
+            if shaders::roughness_target(normal) {
                 g1_entries.push(tex_entry(2, ms, false));
                 g1_views.push(&gviews[next]);
             }

@@ -57,44 +57,63 @@ pub fn bytes_per_pixel(cfg: &Config) -> Result<(u64, &'static str), String> {
 pub fn run(dev: &Device, base: &Config, scene: &SceneData) -> Result<Vec<Row>, String> {
     let mut rows = Vec::new();
     for lights in [LightBuffers::One, LightBuffers::Two] {
-        let fat_cfg = Config {
-            storage: Storage::Fat,
-            lights_layout: lights,
+        rows.extend(run_layouts(
+            dev,
+            base,
+            lights,
+            &diet_layouts(lights),
+            scene,
+        )?);
+    }
+    Ok(rows)
+}
+
+/// Render the fat frame of light layout `lights` (`base`'s other choices, its roughness form
+/// included), then each diet layout of `layouts`: the fat row first.
+pub fn run_layouts(
+    dev: &Device,
+    base: &Config,
+    lights: LightBuffers,
+    layouts: &[(Storage, LightBuffers)],
+    scene: &SceneData,
+) -> Result<Vec<Row>, String> {
+    let fat_cfg = Config {
+        storage: Storage::Fat,
+        lights_layout: lights,
+        ..*base
+    };
+    let fat = render(dev, &fat_cfg, scene)?;
+    let fat_rgb = to_rgb8(&fat.colour);
+    let (b, src) = bytes_per_pixel(&fat_cfg)?;
+    let mut diet_rows = Vec::new();
+    for &(storage, l) in layouts {
+        let cfg = Config {
+            storage,
+            lights_layout: l,
             ..*base
         };
-        let fat = render(dev, &fat_cfg, scene)?;
-        let fat_rgb = to_rgb8(&fat.colour);
-        let (b, src) = bytes_per_pixel(&fat_cfg)?;
-        let mut diet_rows = Vec::new();
-        for (storage, l) in diet_layouts(lights) {
-            let cfg = Config {
-                storage,
-                lights_layout: l,
-                ..*base
-            };
-            eprintln!("  rendering {}", cfg.layout_name());
-            let output = render(dev, &cfg, scene)?;
-            let rgb = to_rgb8(&output.colour);
-            let (bytes, source) = bytes_per_pixel(&cfg)?;
-            diet_rows.push(Row {
-                cfg,
-                bytes_per_pixel: bytes,
-                layout_source: source,
-                error: Some(error_stats(&fat_rgb, &rgb)),
-                output,
-                rgb,
-            });
-        }
-        rows.push(Row {
-            cfg: fat_cfg,
-            bytes_per_pixel: b,
-            layout_source: src,
-            output: fat,
-            rgb: fat_rgb,
-            error: None,
+        eprintln!("  rendering {}", cfg.layout_name());
+        let output = render(dev, &cfg, scene)?;
+        let rgb = to_rgb8(&output.colour);
+        let (bytes, source) = bytes_per_pixel(&cfg)?;
+        diet_rows.push(Row {
+            cfg,
+            bytes_per_pixel: bytes,
+            layout_source: source,
+            error: Some(error_stats(&fat_rgb, &rgb)),
+            output,
+            rgb,
         });
-        rows.extend(diet_rows);
     }
+    let mut rows = vec![Row {
+        cfg: fat_cfg,
+        bytes_per_pixel: b,
+        layout_source: src,
+        output: fat,
+        rgb: fat_rgb,
+        error: None,
+    }];
+    rows.extend(diet_rows);
     Ok(rows)
 }
 
@@ -102,11 +121,15 @@ fn ms(v: Option<[f64; 3]>, k: usize) -> String {
     v.map_or("n/a".into(), |t| format!("{:.2}", t[k]))
 }
 
-/// The fat frame of `row`'s light layout.
+/// The fat frame of `row`'s light layout and roughness form.
 pub fn fat_of<'a>(rows: &'a [Row], row: &Row) -> &'a Row {
     rows.iter()
-        .find(|r| r.cfg.storage == Storage::Fat && r.cfg.lights_layout == row.cfg.lights_layout)
-        .expect("a fat row for each light layout")
+        .find(|r| {
+            r.cfg.storage == Storage::Fat
+                && r.cfg.lights_layout == row.cfg.lights_layout
+                && r.cfg.roughness == row.cfg.roughness
+        })
+        .expect("a fat row for each light layout and roughness")
 }
 
 /// The deterministic columns (bytes, memory at `memory_at`, error), one row per layout, as a

@@ -20,7 +20,8 @@ pub struct Vertex {
 #[repr(C)]
 #[derive(Clone, Copy, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct Material {
-    /// rgb albedo, w: specular power stored in the G-buffer (log-range code).
+    /// rgb albedo, w: specular power stored in the G-buffer (log-range code, or GGX roughness:
+    /// `Config::roughness`).
     pub albedo_power: [f32; 4],
     /// rgb gloss, w: the material exponent `m` the one-buffer combine applies on top.
     pub gloss_m: [f32; 4],

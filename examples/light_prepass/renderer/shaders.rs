@@ -4,7 +4,7 @@
 
 use super::{Config, Storage};
 use prepass::projection::DepthConvention;
-use prepass::scene::{DepthStorage, LightBuffers, NormalEncoding};
+use prepass::scene::{DepthStorage, LightBuffers, NormalEncoding, RoughnessChoice};
 
 /// Whether the encoding leaves alpha free for the roughness code (as `Scene::gbuffer` lays it out).
 pub fn alpha_free(e: NormalEncoding) -> bool {
@@ -16,6 +16,12 @@ pub fn alpha_free(e: NormalEncoding) -> bool {
             | NormalEncoding::Hemioct24
             | NormalEncoding::Oct24Unity
     )
+}
+
+/// Whether the layout stores the roughness code in a target of its own (`r8unorm`): where the
+/// normal's target has no free alpha, and the Substrate word does not carry the byte itself.
+pub fn roughness_target(e: NormalEncoding) -> bool {
+    !alpha_free(e) && e != NormalEncoding::Substrate
 }
 
 /// The stem of the encoding's WGSL functions (`encode_normal_{stem}_unorm`; `_snorm` for snorm8).
@@ -168,6 +174,64 @@ struct LightOut {
 }
 "#;
 
+// The GGX forms store the material's power as perceptual roughness r (α = r²) by the exact
+// inverse of the Blinn-Phong exponent the lighting takes back, 2/α² − 2 (Walter et al. 2007).
+const GGX: &str = r#"
+// ---- light_prepass example: specular power <-> GGX perceptual roughness ----
+// r of power p: α = sqrt(2/(p + 2)), r = sqrt(α).
+fn ggx_r_from_power(p: f32) -> f32 {
+    return sqrt(sqrt(2.0 / (p + 2.0)));
+}
+
+// The power 2/α² − 2 of α for the Blinn-Phong lighting, at most frame.max_power (α = 0, a
+// roughness byte 0, would give +Inf; the scene's powers 4–384 stay far below the cap).
+fn power_from_ggx_alpha(a: f32) -> f32 {
+    return min(2.0 / (a * a) - 2.0, frame.max_power);
+}
+"#;
+
+/// The roughness form's name in pass (a)'s comment, pass (a)'s lines from the material's power
+/// to `code` (the byte both the fat and the diet G-buffer store; for Substrate `r` alone, the
+/// word's encoder takes it), and the light pass's lines from `code` to `power`.
+fn roughness_code(cfg: &Config) -> (&'static str, String, String) {
+    let m = "materials[in.material].albedo_power.w";
+    let substrate = matches!(
+        cfg.storage,
+        Storage::Diet {
+            normal: NormalEncoding::Substrate,
+            ..
+        }
+    );
+    let ggx = |encoder: &str, decode: &str| {
+        let mut e = format!("    let r = ggx_r_from_power({m});\n");
+        if !substrate {
+            e.push_str(&format!("    let code = {encoder};\n"));
+        }
+        ("GGX", e, decode.to_string())
+    };
+    match cfg.roughness {
+        RoughnessChoice::None | RoughnessChoice::Log8 => (
+            "log",
+            format!("    let code = encode_log_roughness({m}, frame.max_power);\n"),
+            "    let power = decode_log_roughness(code, frame.max_power);\n".into(),
+        ),
+        RoughnessChoice::Ggx8 => ggx(
+            "encode_roughness_ggx8(r)",
+            "    let power = power_from_ggx_alpha(decode_roughness_ggx8_alpha(code));\n",
+        ),
+        RoughnessChoice::Ggx8Log => ggx(
+            "encode_roughness_ggx8_log(r)",
+            "    let power = power_from_ggx_alpha(decode_roughness_ggx8_log_alpha(code));\n",
+        ),
+        // Godot's dynamic-object flag: 0, the scene is static. Its decoder gives r: α = r².
+        RoughnessChoice::Godot8 => ggx(
+            "encode_roughness_godot8(r, 0u)",
+            "    let rg = decode_roughness_godot8(code);\n    \
+             let power = power_from_ggx_alpha(rg * rg);\n",
+        ),
+    }
+}
+
 /// The whole module for `cfg`: the composed crate WGSL, then the entry points.
 pub fn module(cfg: &Config, crate_wgsl: &str) -> String {
     let ms = cfg.msaa > 1;
@@ -203,6 +267,9 @@ pub fn module(cfg: &Config, crate_wgsl: &str) -> String {
         _ => "vec2<f32>",
     };
     w.push_str(&COMMON.replace("BOUNDS_T", bounds_t));
+    if cfg.roughness != RoughnessChoice::Log8 {
+        w.push_str(GGX);
+    }
 
     // ---- depth bounds of a light (its sphere: a spot's apex and range) ----
     let bounds_fn = match cfg.storage {
@@ -256,20 +323,31 @@ pub fn module(cfg: &Config, crate_wgsl: &str) -> String {
         Storage::Diet { normal, depth } => {
             let st = rt_stem(normal);
             let oct16 = normal == NormalEncoding::Oct16;
+            let substrate = normal == NormalEncoding::Substrate;
             let free = alpha_free(normal);
-            gout.push_str("    @location(0) normal: vec4<f32>,\n");
-            if oct16 {
-                gbody.push_str(&format!(
-                    "    o.normal = vec4<f32>(encode_normal_{st}(n), 0.0, 0.0);\n"
-                ));
-            } else if free {
-                gbody.push_str(&format!(
-                    "    o.normal = vec4<f32>(encode_normal_{st}(n).xyz, f32(code) / 255.0);\n"
+            if substrate {
+                // An r32uint target: the word, its roughness byte included (flags 0).
+                gout.push_str("    @location(0) normal: u32,\n");
+                gbody.push_str("    o.normal = encode_substrate_word(n, r, 0u);\n");
+                bindings.push_str(&format!(
+                    "@group(1) @binding(0) var g_normal: {};\n",
+                    tex.replace("<f32>", "<u32>")
                 ));
             } else {
-                gbody.push_str(&format!("    o.normal = encode_normal_{st}(n);\n"));
+                gout.push_str("    @location(0) normal: vec4<f32>,\n");
+                if oct16 {
+                    gbody.push_str(&format!(
+                        "    o.normal = vec4<f32>(encode_normal_{st}(n), 0.0, 0.0);\n"
+                    ));
+                } else if free {
+                    gbody.push_str(&format!(
+                        "    o.normal = vec4<f32>(encode_normal_{st}(n).xyz, f32(code) / 255.0);\n"
+                    ));
+                } else {
+                    gbody.push_str(&format!("    o.normal = encode_normal_{st}(n);\n"));
+                }
+                bindings.push_str(&format!("@group(1) @binding(0) var g_normal: {tex};\n"));
             }
-            bindings.push_str(&format!("@group(1) @binding(0) var g_normal: {tex};\n"));
             let mut loc = 1;
             match depth {
                 DepthStorage::Code24Rgba8 => {
@@ -310,13 +388,22 @@ pub fn module(cfg: &Config, crate_wgsl: &str) -> String {
             }
             let arg = if oct16 { "t.xy" } else { "t" };
             let dst = rt_dec_stem(normal);
-            read_normal.push_str(&format!(
-                "    let t = textureLoad(g_normal, px, {s_arg});\n    \
-                 let n = decode_normal_{dst}({arg});\n"
-            ));
+            if substrate {
+                // Bits 2–9 of the word: the roughness byte (decode_substrate_roughness's b).
+                read_normal.push_str(&format!(
+                    "    let word = textureLoad(g_normal, px, {s_arg}).r;\n    \
+                     let n = decode_substrate_normal(word);\n    \
+                     let code = (word >> 2u) & 0xffu;\n"
+                ));
+            } else {
+                read_normal.push_str(&format!(
+                    "    let t = textureLoad(g_normal, px, {s_arg});\n    \
+                     let n = decode_normal_{dst}({arg});\n"
+                ));
+            }
             if free {
                 read_normal.push_str("    let code = u32(round(clamp(t.a, 0.0, 1.0) * 255.0));\n");
-            } else {
+            } else if roughness_target(normal) {
                 gout.push_str(&format!("    @location({loc}) rough: vec4<f32>,\n"));
                 gbody.push_str("    o.rough = vec4<f32>(f32(code) / 255.0, 0.0, 0.0, 0.0);\n");
                 bindings.push_str(&format!("@group(1) @binding(2) var g_rough: {tex};\n"));
@@ -327,11 +414,11 @@ pub fn module(cfg: &Config, crate_wgsl: &str) -> String {
         }
     }
     gout.push_str("};\n");
+    let (kind, encode, decode) = roughness_code(cfg);
     w.push_str(&format!(
-        "\n// ---- pass (a): depth, normal and log roughness into the G-buffer ----\n{gout}\
+        "\n// ---- pass (a): depth, normal and {kind} roughness into the G-buffer ----\n{gout}\
          @fragment fn gbuffer_fs(in: GeoOut) -> GOut {{\n    \
-         let n = shading_normal(in);\n    \
-         let code = encode_log_roughness(materials[in.material].albedo_power.w, frame.max_power);\n    \
+         let n = shading_normal(in);\n{encode}    \
          var o: GOut;\n{gbody}    return o;\n}}\n"
     ));
 
@@ -357,8 +444,7 @@ pub fn module(cfg: &Config, crate_wgsl: &str) -> String {
          // Depth bounds: WebGPU has no depth-bounds test, so the fragment rejects pixels\n    \
          // whose stored depth lies outside the light sphere's depth range.\n    \
          if (frame.bounds_on != 0u && !inside) {{\n        if (frame.count != 0u) {{ atomicAdd(&counters.rejected, 1u); }}\n        discard;\n    }}\n\
-         {read_normal}    \
-         let power = decode_log_roughness(code, frame.max_power);\n    \
+         {read_normal}{decode}    \
          let uv = in.clip.xy / frame.size;\n    \
          let ray = frustum_ray_rh(vec2<f32>(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0), frame.tan_half_fov);\n    \
          let p = view_position(ray, vz);\n    \

@@ -238,7 +238,7 @@ pub const CODECS: [Codec; 19] = [
     ),
     oct_codec!(
         "oct20",
-        "— (O3DE's RGB10A2 signed octahedron is 10:10 + z's sign, another layout)",
+        "— (O3DE's RGB10A2 layout is the row `signed oct`)",
         10,
         &OCT10,
         encode_normal_oct20,
@@ -251,7 +251,7 @@ pub const CODECS: [Codec; 19] = [
     ),
     oct_codec!(
         "oct20 fast",
-        "— (O3DE's RGB10A2 signed octahedron is 10:10 + z's sign, another layout)",
+        "— (O3DE's RGB10A2 layout is the row `signed oct`)",
         10,
         &OCT10,
         encode_normal_oct20_fast,
