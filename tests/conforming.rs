@@ -1588,9 +1588,11 @@ fn assert_searched_promises(r: &prepass::sweep::conforming::NormalFigures) {
 /// Every normal encoding on the emulated worst adapter (upper, lower, one seed): round-trip
 /// error beside the adapter's own (`round_trip` without emulation), every decode finite and
 /// unit within the conforming budget, the codes the emulated encoder chooses differently from
-/// the Rust twin, and the precise octahedral encoders' optimality. Sampled to fit CI: 2^16
-/// Fibonacci directions plus the whole adversarial set; decoders over every 16-bit code, every
-/// 61st 24-bit code, every 97th code of the 32-bit stratified sample.
+/// the Rust twin, and the precise octahedral encoders' optimality. Sampled to fit CI: 2^18
+/// Fibonacci directions plus the whole adversarial set (the best-fit xyz8 encoder emulated at
+/// its `Codec::emulation_sample` of them: one in 16 and the sixteenth its adapter round trip
+/// erred most on); decoders over every 16-bit code, every 61st 24-bit code, every 97th code of
+/// the 32-bit stratified sample.
 #[test]
 fn every_normal_encoding_under_emulation() {
     use prepass::sweep::conforming::{
@@ -1624,6 +1626,7 @@ fn every_normal_encoding_under_emulation() {
     let mut inspected = 0;
     let mut inspect = |c: &prepass::sweep::normal::Codec,
                        policy: Policy,
+                       emulated_at: &[[f32; 3]],
                        e: &prepass::sweep::conforming::EmulatedCodec| {
         inspected += 1;
         common::progress(
@@ -1650,7 +1653,7 @@ fn every_normal_encoding_under_emulation() {
         if (c.name.starts_with("oct") || c.name == "substrate" || c.name == "signed oct")
             && !c.name.ends_with("fast")
         {
-            let o = precise_optimality(c, &inputs, &e.round_trip);
+            let o = precise_optimality(c, emulated_at, &e.round_trip);
             let tol = optimality_tolerance_conforming_deg();
             eprintln!(
                 "{:14} {policy:10}: precise choice's worst excess over the best neighbour {:.3e}° (correctly rounded tolerance {:.3e}°, conforming {tol:.3e}°)",
@@ -1667,7 +1670,7 @@ fn every_normal_encoding_under_emulation() {
             );
         }
         if c.name == BEST_FIT {
-            let excess = best_fit_excess(&inputs, &e.round_trip.codes);
+            let excess = best_fit_excess(emulated_at, &e.round_trip.codes);
             eprintln!(
                 "{:14} {policy:10}: codes chosen differently are at most {excess:.3e} rad farther than the twin's",
                 c.name
@@ -1760,7 +1763,12 @@ fn every_normal_encoding_under_emulation() {
                 ", climbed"
             },
             r.emulated_mean,
-            r.twin_changed,
+            if r.emulated_inputs == inputs.len() {
+                r.twin_changed.to_string()
+            } else {
+                // A sampling codec (Codec::emulation_sample): its count is of its sample.
+                format!("{} of {} sampled", r.twin_changed, r.emulated_inputs)
+            },
             r.max_len_error
         );
     }
@@ -1856,6 +1864,7 @@ fn vouched_encoders_under_emulation() {
         let mut inspect =
             |c: &prepass::sweep::normal::Codec,
              policy: Policy,
+             emulated_at: &[[f32; 3]],
              e: &prepass::sweep::conforming::EmulatedCodec| {
                 let (len_rt, bad_rt) = e.round_trip_length;
                 eprintln!(
@@ -1868,7 +1877,7 @@ fn vouched_encoders_under_emulation() {
                     c.name
                 );
                 if !c.name.ends_with("fast") {
-                    let o = precise_optimality(c, inputs, &e.round_trip);
+                    let o = precise_optimality(c, emulated_at, &e.round_trip);
                     assert_within!(
                         o.worst_excess_deg,
                         optimality_tolerance_conforming_deg(),

@@ -127,6 +127,18 @@ fn check_bound(rows: &[Row], row: &Row, scene: &scene::SceneData) -> (usize, usi
 
 /// The diet G-buffer against the fat one (`bound::gbuffer_error`): the decoded normal within
 /// the encoding's derived angle, the rebuilt view depth within its derived relative error.
+/// Every frame's image is free of NaN and infinite pixels.
+fn assert_finite(rows: &[Row]) {
+    for r in rows {
+        assert_eq!(
+            non_finite(&r.output.colour),
+            0,
+            "{}: NaN or infinite pixels",
+            r.cfg.layout_name()
+        );
+    }
+}
+
 fn check_gbuffer(rows: &[Row], row: &Row, scene: &scene::SceneData) {
     let fat = fat_of(rows, row)
         .output
@@ -172,14 +184,7 @@ fn light_prepass_frame_diet_within_derived_bound_of_fat() {
         42,
         "two fat frames and 40 diet layouts (10 normals × 2 depths × 2 light layouts)"
     );
-    for r in &rows {
-        assert_eq!(
-            non_finite(&r.output.colour),
-            0,
-            "{}: NaN or infinite pixels",
-            r.cfg.layout_name()
-        );
-    }
+    assert_finite(&rows);
     for r in rows.iter().filter(|r| r.error.is_some()) {
         let Storage::Diet { normal, .. } = r.cfg.storage else {
             unreachable!()
@@ -357,14 +362,7 @@ fn light_prepass_ggx_roughness_and_substrate_within_derived_bound_of_fat() {
                 );
             }
         }
-        for r in &rows {
-            assert_eq!(
-                non_finite(&r.output.colour),
-                0,
-                "{}: NaN or infinite pixels",
-                r.cfg.layout_name()
-            );
-        }
+        assert_finite(&rows);
         for r in rows.iter().filter(|r| r.error.is_some()) {
             check_gbuffer(&rows, r, &scene);
             check_bound(&rows, r, &scene);

@@ -234,8 +234,12 @@ pub struct NormalFigures {
     pub adapter: crate::precision::metrics::ErrorStats,
     /// Largest round-trip angle under each policy, in the order given.
     pub emulated_max: Vec<f64>,
-    /// Largest mean round-trip angle over the policies.
+    /// Largest mean round-trip angle over the policies (a sampling codec's over the evenly
+    /// spread part of its sample, [`emulation_sample`]).
     pub emulated_mean: f64,
+    /// The inputs the emulated sweeps ran at ([`emulation_sample`]: all of them but for a codec
+    /// that samples).
+    pub emulated_inputs: usize,
     /// Most codes differing from the Rust twin's under any policy.
     pub twin_changed: u64,
     /// Largest `|len − 1|` of any emulated decode (round trip and decoder sample).
@@ -268,6 +272,50 @@ pub fn spread_codes(bits: u32) -> Vec<u32> {
         .collect()
 }
 
+/// The inputs a codec's emulated sweeps run at, and how many of them (the first ones) spread
+/// evenly over `inputs`: all of `inputs` where [`Codec::emulation_sample`] is 1; for `k > 1`,
+/// one input in `k` (picked by a hash of its index), then the `len/k` inputs at which the adapter's round trip (`decoded`,
+/// one per input) erred most that are not among them. The emulation moves a code only near a
+/// tie (within one step, or for the best fit within its conforming slack), so the emulated
+/// worst lies where the adapter's round trip is already near its worst: the second part keeps
+/// those; the first keeps the sweep spread over the sphere, and the mean is taken over it alone
+/// (the second part is the worst, not a sample).
+pub fn emulation_sample(
+    c: &Codec,
+    inputs: &[[f32; 3]],
+    decoded: &[[f32; 3]],
+) -> (Vec<[f32; 3]>, usize) {
+    let k = c.emulation_sample.max(1);
+    if k == 1 {
+        return (inputs.to_vec(), inputs.len());
+    }
+    // One input in k, by a multiplicative hash of its index rather than a stride: the
+    // adversarial set comes in regular groups, which a stride would sample unevenly.
+    let picked =
+        |i: usize| ((i as u64).wrapping_mul(0x9e37_79b9_7f4a_7c15) >> 32).is_multiple_of(k as u64);
+    let mut sample: Vec<[f32; 3]> = (0..inputs.len())
+        .filter(|&i| picked(i))
+        .map(|i| inputs[i])
+        .collect();
+    let spread = sample.len();
+    let mut by_error: Vec<(f64, usize)> = inputs
+        .iter()
+        .zip(decoded)
+        .enumerate()
+        .map(|(i, (&n, &d))| (angle_degrees(widen3(n), widen3(d)), i))
+        .collect();
+    // NaN (none on a conforming adapter) sorts first: such an input is kept.
+    by_error.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
+    sample.extend(
+        by_error
+            .iter()
+            .take(inputs.len() / k)
+            .filter(|&&(_, i)| !picked(i))
+            .map(|&(_, i)| inputs[i]),
+    );
+    (sample, spread)
+}
+
 /// [`NormalFigures`] of each of `codecs` (e.g. [`super::normal::CODECS`]) over `inputs`, under
 /// each of `policies`, then searched at the `searched_inputs` inputs those policies erred most
 /// on (0: no search); each decoder also over [`spread_codes`].
@@ -285,15 +333,21 @@ pub fn normal_figures(
         policies,
         searched_inputs,
         &|c| spread_codes(c.bits),
-        &mut |_, _, _| {},
+        &mut |_, _, _, _| {},
     )
 }
 
 /// Inputs per codec the round-trip search runs at in CI: the worst of every policy's sweep.
 pub const SEARCHED_NORMAL_INPUTS: usize = 16;
 
+/// What [`normal_figures_with`] hands each emulated sweep to: the codec, the policy, the inputs
+/// the sweep ran at ([`emulation_sample`]) and its measurement.
+pub type InspectSweep<'a> =
+    dyn FnMut(&Codec, crate::conforming::Policy, &[[f32; 3]], &EmulatedCodec) + 'a;
+
 /// [`normal_figures`] with the decoder's codes chosen per codec, and every emulated sweep handed
-/// to `inspect` as it is measured (a suite asserts on the same measurement it publishes).
+/// to `inspect` as it is measured, with the inputs it ran at ([`emulation_sample`]), so that a
+/// suite asserts on the same measurement it publishes.
 pub fn normal_figures_with(
     gpu: &Gpu,
     codecs: &[Codec],
@@ -301,7 +355,7 @@ pub fn normal_figures_with(
     policies: &[crate::conforming::Policy],
     searched_inputs: usize,
     codes_for: &dyn Fn(&Codec) -> Vec<u32>,
-    inspect: &mut dyn FnMut(&Codec, crate::conforming::Policy, &EmulatedCodec),
+    inspect: &mut InspectSweep<'_>,
 ) -> Result<Vec<NormalFigures>, HarnessError> {
     use crate::scene::{NormalChoice, NormalEncoding, Scene};
     let mut rows = Vec::new();
@@ -310,7 +364,10 @@ pub fn normal_figures_with(
         let pick = |rt: &RoundTrip| {
             if hemisphere { rt.error_upper } else { rt.error }
         };
-        let adapter = pick(&round_trip(gpu, c, inputs)?);
+        let on_adapter = round_trip(gpu, c, inputs)?;
+        let adapter = pick(&on_adapter);
+        let (sample, spread) = emulation_sample(c, inputs, &on_adapter.decoded);
+        let inputs = &sample[..];
         let codes = codes_for(c);
         let mut row = NormalFigures {
             name: c.name,
@@ -319,6 +376,7 @@ pub fn normal_figures_with(
             adapter,
             emulated_max: Vec::new(),
             emulated_mean: 0.0,
+            emulated_inputs: inputs.len(),
             twin_changed: 0,
             max_len_error: 0.0,
             searched: 0.0,
@@ -334,7 +392,7 @@ pub fn normal_figures_with(
         for &policy in policies {
             let emulation = Emulation::new(policy);
             let e = codec_sweep(gpu, c, &emulation, inputs, &codes, searched_inputs > 0)?;
-            inspect(c, policy, &e);
+            inspect(c, policy, inputs, &e);
             let mut worst: Vec<(f64, usize, crate::conforming::Policy)> = inputs
                 .iter()
                 .zip(&e.round_trip.decoded)
@@ -347,7 +405,19 @@ pub fn normal_figures_with(
             pool.extend(worst);
             let s = pick(&e.round_trip);
             row.emulated_max.push(s.max);
-            row.emulated_mean = row.emulated_mean.max(s.mean());
+            let mean = if spread == inputs.len() {
+                s.mean()
+            } else {
+                // A sampled codec: over the evenly spread part only (emulation_sample).
+                let angles: Vec<f64> = inputs[..spread]
+                    .iter()
+                    .zip(&e.round_trip.decoded)
+                    .filter(|(n, _)| !hemisphere || n[2] >= 0.0)
+                    .map(|(&n, &d)| angle_degrees(widen3(n), widen3(d)))
+                    .collect();
+                angles.iter().sum::<f64>() / angles.len().max(1) as f64
+            };
+            row.emulated_mean = row.emulated_mean.max(mean);
             row.twin_changed = row.twin_changed.max(e.round_trip.twin_encode.count);
             row.max_len_error = row
                 .max_len_error
