@@ -18,7 +18,9 @@ pub enum TargetFormat {
     Rg8Unorm,
     /// `rgb10a2unorm`: 3 × 10-bit unorm and a 2-bit alpha.
     Rgb10a2Unorm,
-    /// `rgba8snorm`: 4 × 8-bit snorm.
+    /// `rgba8snorm`: 4 × 8-bit snorm. Not a render attachment in core WebGPU (the WebGPU
+    /// spec's texture format capabilities: it needs the `texture-formats-tier1` feature, which
+    /// Dawn and browsers offer per adapter); wgpu's native backends render to it.
     Rgba8Snorm,
     /// `r8unorm`: one byte.
     R8Unorm,
