@@ -1695,9 +1695,22 @@ fn every_normal_encoding_under_emulation() {
     // The round-trip search at the SEARCHED_NORMAL_INPUTS inputs the policies erred most on
     // (per codec: each policy's worst, pooled): the encoder's and decoder's ends chosen
     // together, which the greedy policies never combine.
+    // PREPASS_FULL=1: the best fit emulated at every input too (its sample's reason: the
+    // rustdoc of sweep::conforming::emulation_sample).
+    let codecs: Vec<prepass::sweep::normal::Codec> = prepass::sweep::normal::CODECS
+        .iter()
+        .map(|c| prepass::sweep::normal::Codec {
+            emulation_sample: if common::full_strength() {
+                1
+            } else {
+                c.emulation_sample
+            },
+            ..*c
+        })
+        .collect();
     let rows = normal_figures_with(
         gpu(),
-        &prepass::sweep::normal::CODECS,
+        &codecs,
         &inputs,
         &policies,
         SEARCHED_NORMAL_INPUTS,
