@@ -67,7 +67,7 @@ use prepass::scene::{DepthStorage, LightBuffers, NormalEncoding, RoughnessChoice
 /// [`MAX_POWER`](super::MAX_POWER).
 pub fn power_of_code(r: RoughnessChoice, code: u32) -> f32 {
     use prepass::roughness_ggx as ggx;
-    let from_alpha = |a: f32| (2.0 / (a * a) - 2.0).min(super::MAX_POWER);
+    let from_alpha = |a: f32| 2.0 / (a * a).max(2.0 / (super::MAX_POWER + 2.0)) - 2.0;
     match r {
         RoughnessChoice::None | RoughnessChoice::Log8 => {
             prepass::roughness::decode_log_roughness(code, super::MAX_POWER)

@@ -183,10 +183,12 @@ fn ggx_r_from_power(p: f32) -> f32 {
     return sqrt(sqrt(2.0 / (p + 2.0)));
 }
 
-// The power 2/α² − 2 of α for the Blinn-Phong lighting, at most frame.max_power (α = 0, a
-// roughness byte 0, would give +Inf; the scene's powers 4–384 stay far below the cap).
+// The power 2/α² − 2 of α for the Blinn-Phong lighting, at most frame.max_power: α² is raised
+// to the cap's 2/(max_power + 2) before the division, so a roughness byte 0 (α = 0) divides by
+// no zero (an infinity is outside WGSL's finite-math rule); the scene's powers 4–384 stay far
+// below the cap.
 fn power_from_ggx_alpha(a: f32) -> f32 {
-    return min(2.0 / (a * a) - 2.0, frame.max_power);
+    return 2.0 / max(a * a, 2.0 / (frame.max_power + 2.0)) - 2.0;
 }
 "#;
 
