@@ -8,6 +8,7 @@ use super::normal::{
 use crate::conforming::{EmulateError, EmulatedKernel, Emulation, emulate};
 use crate::harness::{Arg, Gpu, HarnessError};
 use crate::precision::metrics::{angle_degrees, widen3};
+use std::borrow::Cow;
 
 /// How far a decoded vector's length may be from 1 on any conforming adapter, for a decoder
 /// that ends in WGSL's `normalize(v)` = `v / length(v)` (or `v·inverseSqrt(dot(v, v))`, which is
@@ -280,14 +281,14 @@ pub fn spread_codes(bits: u32) -> Vec<u32> {
 /// worst lies where the adapter's round trip is already near its worst: the second part keeps
 /// those; the first keeps the sweep spread over the sphere, and the mean is taken over it alone
 /// (the second part is the worst, not a sample).
-pub fn emulation_sample(
+pub fn emulation_sample<'a>(
     c: &Codec,
-    inputs: &[[f32; 3]],
+    inputs: &'a [[f32; 3]],
     decoded: &[[f32; 3]],
-) -> (Vec<[f32; 3]>, usize) {
+) -> (Cow<'a, [[f32; 3]]>, usize) {
     let k = c.emulation_sample.max(1);
     if k == 1 {
-        return (inputs.to_vec(), inputs.len());
+        return (Cow::Borrowed(inputs), inputs.len());
     }
     // One input in k, by a multiplicative hash of its index rather than a stride: the
     // adversarial set comes in regular groups, which a stride would sample unevenly.
@@ -298,11 +299,9 @@ pub fn emulation_sample(
         .map(|i| inputs[i])
         .collect();
     let spread = sample.len();
-    let mut by_error: Vec<(f64, usize)> = inputs
-        .iter()
-        .zip(decoded)
+    let mut by_error: Vec<(f64, usize)> = round_trip_angles(inputs, decoded)
         .enumerate()
-        .map(|(i, (&n, &d))| (angle_degrees(widen3(n), widen3(d)), i))
+        .map(|(i, a)| (a, i))
         .collect();
     // NaN (none on a conforming adapter) sorts first: such an input is kept.
     by_error.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));
@@ -313,7 +312,18 @@ pub fn emulation_sample(
             .filter(|&&(_, i)| !picked(i))
             .map(|&(_, i)| inputs[i]),
     );
-    (sample, spread)
+    (Cow::Owned(sample), spread)
+}
+
+/// The round trip's angle in degrees at each input (f64): `inputs[i]` against `decoded[i]`.
+fn round_trip_angles<'a>(
+    inputs: &'a [[f32; 3]],
+    decoded: &'a [[f32; 3]],
+) -> impl Iterator<Item = f64> + 'a {
+    inputs
+        .iter()
+        .zip(decoded)
+        .map(|(&n, &d)| angle_degrees(widen3(n), widen3(d)))
 }
 
 /// [`NormalFigures`] of each of `codecs` (e.g. [`super::normal::CODECS`]) over `inputs`, under
@@ -393,13 +403,12 @@ pub fn normal_figures_with(
             let emulation = Emulation::new(policy);
             let e = codec_sweep(gpu, c, &emulation, inputs, &codes, searched_inputs > 0)?;
             inspect(c, policy, inputs, &e);
-            let mut worst: Vec<(f64, usize, crate::conforming::Policy)> = inputs
-                .iter()
-                .zip(&e.round_trip.decoded)
-                .enumerate()
-                .filter(|(_, (n, _))| !hemisphere || n[2] >= 0.0)
-                .map(|(i, (&n, &d))| (angle_degrees(widen3(n), widen3(d)), i, policy))
-                .collect();
+            let mut worst: Vec<(f64, usize, crate::conforming::Policy)> =
+                round_trip_angles(inputs, &e.round_trip.decoded)
+                    .enumerate()
+                    .filter(|&(i, _)| !hemisphere || inputs[i][2] >= 0.0)
+                    .map(|(i, a)| (a, i, policy))
+                    .collect();
             worst.sort_by(|a, b| b.0.total_cmp(&a.0));
             worst.truncate(searched_inputs);
             pool.extend(worst);
@@ -409,11 +418,10 @@ pub fn normal_figures_with(
                 s.mean()
             } else {
                 // A sampled codec: over the evenly spread part only (emulation_sample).
-                let angles: Vec<f64> = inputs[..spread]
-                    .iter()
-                    .zip(&e.round_trip.decoded)
-                    .filter(|(n, _)| !hemisphere || n[2] >= 0.0)
-                    .map(|(&n, &d)| angle_degrees(widen3(n), widen3(d)))
+                let angles: Vec<f64> = round_trip_angles(&inputs[..spread], &e.round_trip.decoded)
+                    .enumerate()
+                    .filter(|&(i, _)| !hemisphere || inputs[i][2] >= 0.0)
+                    .map(|(_, a)| a)
                     .collect();
                 angles.iter().sum::<f64>() / angles.len().max(1) as f64
             };
