@@ -1589,9 +1589,10 @@ fn assert_searched_promises(r: &prepass::sweep::conforming::NormalFigures) {
 /// error beside the adapter's own (`round_trip` without emulation), every decode finite and
 /// unit within the conforming budget, the codes the emulated encoder chooses differently from
 /// the Rust twin, and the precise octahedral encoders' optimality. Sampled to fit CI: 2^18
-/// Fibonacci directions plus the whole adversarial set (the best-fit xyz8 encoder emulated at
-/// its `Codec::emulation_sample` of them: one in 16 and the sixteenth its adapter round trip
-/// erred most on); decoders over every 16-bit code, every 61st 24-bit code, every 97th code of
+/// Fibonacci directions plus the whole adversarial set, the encoders that choose among
+/// candidates emulated at their `Codec::emulation_sample` of them (precise octahedral: one in 4
+/// and the quarter their adapter round trip erred most on; best-fit xyz8: one in 64 and the
+/// 64th); decoders over every 16-bit code, every 61st 24-bit code, every 97th code of
 /// the 32-bit stratified sample.
 #[test]
 fn every_normal_encoding_under_emulation() {
@@ -1695,8 +1696,8 @@ fn every_normal_encoding_under_emulation() {
     // The round-trip search at the SEARCHED_NORMAL_INPUTS inputs the policies erred most on
     // (per codec: each policy's worst, pooled): the encoder's and decoder's ends chosen
     // together, which the greedy policies never combine.
-    // PREPASS_FULL=1: the best fit emulated at every input too (its sample's reason: the
-    // rustdoc of sweep::conforming::emulation_sample).
+    // PREPASS_FULL=1: the sampling codecs emulated at every input too (the samples' reasons:
+    // the rustdoc of sweep::normal::PRECISE_SAMPLE and BEST_FIT_SAMPLE).
     let codecs: Vec<prepass::sweep::normal::Codec> = prepass::sweep::normal::CODECS
         .iter()
         .map(|c| prepass::sweep::normal::Codec {

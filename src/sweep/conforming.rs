@@ -299,8 +299,11 @@ pub fn emulation_sample<'a>(
         .map(|i| inputs[i])
         .collect();
     let spread = sample.len();
+    // A hemisphere code's figures are over z ≥ 0 (its lower half decodes to the upper one, far
+    // off): ranked there only, or the lower half would fill this part.
     let mut by_error: Vec<(f64, usize)> = round_trip_angles(inputs, decoded)
         .enumerate()
+        .filter(|&(i, _)| !c.hemisphere || inputs[i][2] >= 0.0)
         .map(|(i, a)| (a, i))
         .collect();
     // NaN (none on a conforming adapter) sorts first: such an input is kept.

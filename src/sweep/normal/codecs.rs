@@ -119,12 +119,24 @@ pub struct Codec {
     pub target: Option<(f64, f64)>,
     /// How the emulated sweeps of [`crate::sweep::conforming`] sample the inputs: 1 runs them at
     /// every input; `k > 1` at one input in `k` (hashed) and at the `1/k` of the inputs the adapter's
-    /// round trip erred most on ([`crate::sweep::conforming::emulation_sample`]). Only the
-    /// best-fit xyz8 encoder samples (16): its loop of 128 planes costs about 100 rounding
-    /// encodes, and every emulated operation is a call, so its emulated sweeps over every input
-    /// were a third of `bash .ci/test`'s CPU time.
+    /// round trip erred most on ([`crate::sweep::conforming::emulation_sample`]). The encoders
+    /// that choose among candidates sample: the precise octahedral ones ([`PRECISE_SAMPLE`]) and
+    /// the best-fit xyz8 one ([`BEST_FIT_SAMPLE`]); the rounding encoders run at every input.
     pub emulation_sample: usize,
 }
+
+/// [`Codec::emulation_sample`] of the precise octahedral encoders (oct16 to oct32, hemioct24,
+/// Substrate's, the signed octahedron): every emulated operation is a call, and their four
+/// scored candidates made each one's three emulated sweeps over 434,204 inputs 15 to 30 s of
+/// CPU (2-core Xeon, 2026-12-06). A policy moves their code only at a near-tie of two
+/// candidates, where the adapter's round trip errs about as much as the emulated one: the
+/// sample's second part, the inputs the adapter erred most on, holds their worst.
+pub const PRECISE_SAMPLE: usize = 4;
+
+/// [`Codec::emulation_sample`] of the best-fit xyz8 encoder: its loop of 128 planes costs about
+/// 100 rounding encodes, and at one input in 16 its three emulated sweeps were still 65 s of
+/// `every_normal_encoding_under_emulation`'s 240 s of CPU (2026-12-06).
+pub const BEST_FIT_SAMPLE: usize = 64;
 
 fn xyfp16_ref_encode(n: [f64; 3]) -> u32 {
     let u = crate::normal::exact::unit(n).unwrap_or([0.0, 0.0, 1.0]);
@@ -162,7 +174,7 @@ oct_refs!(12, oct24_ref_p, oct24_ref_r, oct24_ref_d);
 oct_refs!(16, oct32_ref_p, oct32_ref_r, oct32_ref_d);
 
 macro_rules! oct_codec {
-    ($name:literal, $stored:literal, $bits:literal, $lanes:expr, $enc:ident, $dec:ident, $twin:path, $twin_dec:path, $r:ident, $d:ident, $t:expr) => {
+    ($name:literal, $stored:literal, $bits:literal, $lanes:expr, $enc:ident, $dec:ident, $twin:path, $twin_dec:path, $r:ident, $d:ident, $t:expr, $sample:expr) => {
         Codec {
             name: $name,
             stored_by: $stored,
@@ -177,7 +189,7 @@ macro_rules! oct_codec {
             reference_encode: $r,
             reference_decode: $d,
             target: $t,
-            emulation_sample: 1,
+            emulation_sample: $sample,
         }
     };
 }
@@ -231,7 +243,8 @@ pub const CODECS: [Codec; 19] = [
         oct::decode_normal_oct16,
         oct16_ref_p,
         oct16_ref_d,
-        Some((0.315, 0.636))
+        Some((0.315, 0.636)),
+        PRECISE_SAMPLE
     ),
     oct_codec!(
         "oct16 fast",
@@ -244,7 +257,8 @@ pub const CODECS: [Codec; 19] = [
         oct::decode_normal_oct16,
         oct16_ref_r,
         oct16_ref_d,
-        Some((0.337, 0.951))
+        Some((0.337, 0.951)),
+        1
     ),
     oct_codec!(
         "oct20",
@@ -257,7 +271,8 @@ pub const CODECS: [Codec; 19] = [
         oct::decode_normal_oct20,
         oct20_ref_p,
         oct20_ref_d,
-        None
+        None,
+        PRECISE_SAMPLE
     ),
     oct_codec!(
         "oct20 fast",
@@ -270,7 +285,8 @@ pub const CODECS: [Codec; 19] = [
         oct::decode_normal_oct20,
         oct20_ref_r,
         oct20_ref_d,
-        None
+        None,
+        1
     ),
     oct_codec!(
         "oct24",
@@ -283,7 +299,8 @@ pub const CODECS: [Codec; 19] = [
         oct::decode_normal_oct24,
         oct24_ref_p,
         oct24_ref_d,
-        Some((0.0195, 0.0395))
+        Some((0.0195, 0.0395)),
+        PRECISE_SAMPLE
     ),
     oct_codec!(
         "oct24 fast",
@@ -296,7 +313,8 @@ pub const CODECS: [Codec; 19] = [
         oct::decode_normal_oct24,
         oct24_ref_r,
         oct24_ref_d,
-        Some((0.0209, 0.0591))
+        Some((0.0209, 0.0591)),
+        1
     ),
     oct_codec!(
         "oct32",
@@ -309,7 +327,8 @@ pub const CODECS: [Codec; 19] = [
         oct::decode_normal_oct32,
         oct32_ref_p,
         oct32_ref_d,
-        Some((0.00122, 0.00246))
+        Some((0.00122, 0.00246)),
+        PRECISE_SAMPLE
     ),
     oct_codec!(
         "oct32 fast",
@@ -322,7 +341,8 @@ pub const CODECS: [Codec; 19] = [
         oct::decode_normal_oct32,
         oct32_ref_r,
         oct32_ref_d,
-        Some((0.00131, 0.00369))
+        Some((0.00131, 0.00369)),
+        1
     ),
     Codec {
         name: "hemioct24",
@@ -338,7 +358,7 @@ pub const CODECS: [Codec; 19] = [
         reference_encode: hemioct::exact::encode_precise,
         reference_decode: hemioct::exact::decode,
         target: None,
-        emulation_sample: 1,
+        emulation_sample: PRECISE_SAMPLE,
     },
     Codec {
         name: "hemioct24 fast",
@@ -402,7 +422,7 @@ pub const CODECS: [Codec; 19] = [
         reference_encode: substrate::exact::encode_precise,
         reference_decode: substrate::exact::decode,
         target: None,
-        emulation_sample: 1,
+        emulation_sample: PRECISE_SAMPLE,
     },
     Codec {
         name: "substrate fast",
@@ -434,7 +454,7 @@ pub const CODECS: [Codec; 19] = [
         reference_encode: xyz8::exact::encode_best,
         reference_decode: xyz8::exact::decode,
         target: None,
-        emulation_sample: 16,
+        emulation_sample: BEST_FIT_SAMPLE,
     },
     Codec {
         name: "signed oct",
@@ -450,7 +470,7 @@ pub const CODECS: [Codec; 19] = [
         reference_encode: signed_oct::exact::encode_precise,
         reference_decode: signed_oct::exact::decode,
         target: None,
-        emulation_sample: 1,
+        emulation_sample: PRECISE_SAMPLE,
     },
     Codec {
         name: "signed oct fast",
