@@ -299,11 +299,9 @@ pub fn emulation_sample<'a>(
         .map(|i| inputs[i])
         .collect();
     let spread = sample.len();
-    // A hemisphere code's figures are over z ≥ 0 (its lower half decodes to the upper one, far
-    // off): ranked there only, or the lower half would fill this part.
-    let mut by_error: Vec<(f64, usize)> = round_trip_angles(inputs, decoded)
-        .enumerate()
-        .filter(|&(i, _)| !c.hemisphere || inputs[i][2] >= 0.0)
+    // Over the inputs the codec's figures count: a hemisphere code's lower half would fill
+    // this part.
+    let mut by_error: Vec<(f64, usize)> = round_trip_angles(c, inputs, decoded)
         .map(|(i, a)| (a, i))
         .collect();
     // NaN (none on a conforming adapter) sorts first: such an input is kept.
@@ -318,15 +316,20 @@ pub fn emulation_sample<'a>(
     (Cow::Owned(sample), spread)
 }
 
-/// The round trip's angle in degrees at each input (f64): `inputs[i]` against `decoded[i]`.
+/// `(i, angle)`: the round trip's angle in degrees (f64), `inputs[i]` against `decoded[i]`, at
+/// each input `c`'s figures count: every one, or for a hemisphere code those with z ≥ 0 (its
+/// lower half decodes to the upper one, far off).
 fn round_trip_angles<'a>(
+    c: &'a Codec,
     inputs: &'a [[f32; 3]],
     decoded: &'a [[f32; 3]],
-) -> impl Iterator<Item = f64> + 'a {
+) -> impl Iterator<Item = (usize, f64)> + 'a {
     inputs
         .iter()
         .zip(decoded)
-        .map(|(&n, &d)| angle_degrees(widen3(n), widen3(d)))
+        .enumerate()
+        .filter(|(_, (n, _))| !c.hemisphere || n[2] >= 0.0)
+        .map(|(i, (&n, &d))| (i, angle_degrees(widen3(n), widen3(d))))
 }
 
 /// [`NormalFigures`] of each of `codecs` (e.g. [`super::normal::CODECS`]) over `inputs`, under
@@ -407,9 +410,7 @@ pub fn normal_figures_with(
             let e = codec_sweep(gpu, c, &emulation, inputs, &codes, searched_inputs > 0)?;
             inspect(c, policy, inputs, &e);
             let mut worst: Vec<(f64, usize, crate::conforming::Policy)> =
-                round_trip_angles(inputs, &e.round_trip.decoded)
-                    .enumerate()
-                    .filter(|&(i, _)| !hemisphere || inputs[i][2] >= 0.0)
+                round_trip_angles(c, inputs, &e.round_trip.decoded)
                     .map(|(i, a)| (a, i, policy))
                     .collect();
             worst.sort_by(|a, b| b.0.total_cmp(&a.0));
@@ -421,11 +422,10 @@ pub fn normal_figures_with(
                 s.mean()
             } else {
                 // A sampled codec: over the evenly spread part only (emulation_sample).
-                let angles: Vec<f64> = round_trip_angles(&inputs[..spread], &e.round_trip.decoded)
-                    .enumerate()
-                    .filter(|&(i, _)| !hemisphere || inputs[i][2] >= 0.0)
-                    .map(|(_, a)| a)
-                    .collect();
+                let angles: Vec<f64> =
+                    round_trip_angles(c, &inputs[..spread], &e.round_trip.decoded)
+                        .map(|(_, a)| a)
+                        .collect();
                 angles.iter().sum::<f64>() / angles.len().max(1) as f64
             };
             row.emulated_mean = row.emulated_mean.max(mean);
