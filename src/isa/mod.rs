@@ -306,7 +306,11 @@ fn scratch_dir() -> Result<PathBuf, IsaError> {
 /// modules, crashed; 158 did not), so a long list goes through several children in turn.
 const CHILD_MODULES: usize = 256;
 
-/// [`run_child`] over `modules` in parts of at most [`CHILD_MODULES`], the answers joined.
+/// [`run_child`] over `modules` in parts of at most [`CHILD_MODULES`], the answers joined. A
+/// part whose child fails runs once more (the failure is printed to stderr): once in some 50
+/// runs of `tests/isa.rs` a child failed on a 16-module list, the first run after a fresh
+/// build, and never in the reruns (2026-12-07; its reason was not kept). Both reasons are
+/// returned when the second fails too.
 fn run_children(
     target: Target,
     root: Option<&std::path::Path>,
@@ -320,7 +324,15 @@ fn run_children(
         .zip(wants_asm.chunks(CHILD_MODULES))
         .enumerate()
     {
-        let part = run_child(target, root, dir, n, chunk, asm)?;
+        let part = run_child(target, root, dir, n, chunk, asm).or_else(|first| {
+            // Compiling is deterministic, so a second child answers as the first would have.
+            eprintln!(
+                "prepass::isa: the {} compiling child failed ({first}); running it once more",
+                target.chip()
+            );
+            run_child(target, root, dir, n, chunk, asm)
+                .map_err(|second| format!("{first}; run again: {second}"))
+        })?;
         match &mut parsed {
             None => parsed = Some(part),
             Some(all) => all.modules.extend(part.modules),
