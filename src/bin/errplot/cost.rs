@@ -112,10 +112,24 @@ pub fn csv_field(s: &str) -> String {
     }
 }
 
+/// What the GPU-ns cells say in a quick run on a software adapter (see [`times_on_adapter`]).
+const NOT_TIMED: &str = "not timed (quick)";
+
+/// Whether this run times the WGSL on its adapter: not in a quick run on a software adapter.
+/// There a timing is seconds of this CPU running the shader (2^24 invocations, the harness's
+/// minimum, twice: 0.2 to 0.3 s a variant on lavapipe, the best-fit encoder's search 17 s, 39 s
+/// of the quick run's 77 s, 2-core Xeon, 2026-12-07) and ranks nothing on a GPU; the
+/// real-instruction-set columns are the quick run's cost. The full run times every variant.
+fn times_on_adapter(ctx: &Ctx) -> bool {
+    ctx.gpu()
+        .is_some_and(|g| !(ctx.opts.quick && g.is_software()))
+}
+
 /// Measure every registered variant and write the table, `error_vs_cost.csv` and the Pareto
 /// plots.
 pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     let quick = ctx.opts.quick;
+    let timed = times_on_adapter(ctx);
     let repeats = if quick { 1 } else { 5 };
     let calls: usize = if quick { 1 << 20 } else { 1 << 23 };
     let variants = std::mem::take(&mut ctx.variants);
@@ -149,7 +163,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
                     .map_err(|e| format!("{}: {e}", w.function))?
                     .total,
             );
-            if let Some(gpu) = ctx.gpu() {
+            if let Some(gpu) = ctx.gpu().filter(|_| timed) {
                 let args: Vec<Arg> = w
                     .args
                     .iter()
@@ -207,7 +221,13 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
                 );
             }
         }
-        _ => ctx.line(format!(
+        (Some(_), None) => ctx.line(
+            "GPU ns/eval: **not timed**: a quick run on a software adapter times nothing (each \
+             timing is seconds of this CPU and says nothing about a GPU; the real \
+             instruction sets below are the cost). `bash .ci/errplot` (the full run) times \
+             every variant.",
+        ),
+        (None, _) => ctx.line(format!(
             "GPU ns/eval: **{NEEDS_ADAPTER}** — no adapter was found; see the note at the top."
         )),
     }
@@ -245,6 +265,10 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             None => "—".into(),
         };
         let needs_gpu = v.wgsl.is_some();
+        let gpu_cell = |x: Option<f64>| match x {
+            None if needs_gpu && ctx.gpu().is_some() && !timed => NOT_TIMED.into(),
+            x => cell(x, needs_gpu),
+        };
         let isa_cell = |t: Target| match (&isa_run.versions[target_index(t)], v.wgsl.is_some()) {
             (_, false) => "—".to_string(),
             (Err(_), true) => "not measured".to_string(),
@@ -264,8 +288,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             isa_cell(Target::Rdna2),
             isa_cell(Target::Rdna3),
             isa_cell(Target::XeHpg),
-            cell(c.gpu_ns, needs_gpu),
-            cell(c.gpu_gross_ns, needs_gpu),
+            gpu_cell(c.gpu_ns),
+            gpu_cell(c.gpu_gross_ns),
             cell(c.cpu_ns, false),
             c.spirv.map_or("—".into(), |s| s.to_string()),
         ));
@@ -313,7 +337,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         }
     }
     // Per family: one plot on the adapter's (or SPIR-V's) axis, one per plotted target.
-    let base: Axis = if ctx.gpu().is_some() {
+    let base: Axis = if timed {
         (
             "GPU time per evaluation, gross (ns, log scale)".into(),
             Box::new(|c: &Costs| c.gpu_gross_ns),
@@ -321,7 +345,12 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         )
     } else {
         (
-            "SPIR-V instructions (log scale; no adapter for GPU time)".into(),
+            if ctx.gpu().is_some() {
+                "SPIR-V instructions (log scale; not timed in a quick run on a software adapter)"
+            } else {
+                "SPIR-V instructions (log scale; no adapter for GPU time)"
+            }
+            .into(),
             Box::new(|c: &Costs| c.spirv.map(|s| s as f64)),
             String::new(),
         )
@@ -355,7 +384,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             pareto(ctx, family, &members, x_label, pick.as_ref(), suffix)?;
         }
     }
-    dominance_section(ctx, &variants, &costs);
+    dominance_section(ctx, &variants, &costs, timed);
     Ok(())
 }
 
@@ -489,7 +518,7 @@ fn isa_table(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs], run: &IsaRun)
 
 /// The dominance check: for each shipped variant of a family with peers, the peers with no more
 /// bits, max error ≤ and cost ≤ (one strictly less), on SPIR-V count and on GPU ns.
-fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
+fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs], timed: bool) {
     let with_peers: Vec<&str> = variants
         .iter()
         .filter(|v| v.name.starts_with(peers::PREFIX))
@@ -535,7 +564,7 @@ fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
          RDNA2, RDNA3 (ACO inverse throughput) and Xe-HPG (brw cycles), static compiler \
          estimates.",
     );
-    if ctx.gpu().is_some_and(|g| g.is_software()) {
+    if timed && ctx.gpu().is_some_and(|g| g.is_software()) {
         ctx.line("");
         ctx.line(
             "**GPU ns here come from a software adapter: they are CPU timings of the shaders and \
@@ -574,7 +603,11 @@ fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
             v.family,
             v.name,
             find(&spirv),
-            find(&gpu)
+            if ctx.gpu().is_some() && !timed {
+                NOT_TIMED.to_string()
+            } else {
+                find(&gpu)
+            }
         );
         for d in &on_targets {
             row.push_str(&format!(

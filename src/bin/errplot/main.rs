@@ -80,7 +80,7 @@ fn parse_args() -> Result<Options, String> {
                 println!(
                     "usage: errplot [--out DIR] [--quick] [--exhaustive32]\n\n\
                      Writes report.md, CSV files and SVG/PNG plots into DIR (default errplot-out).\n\
-                     --quick: fewer channel cases and timing repeats (CI, notebooks).\n\
+                     --quick: fewer cases and timing repeats, no timing on a software adapter (CI, notebooks).\n\
                      --exhaustive32: also decode all 2^32 codes of oct32 and xy fp16 (~15 min on lavapipe).\n\
                      PREPASS_ADAPTER=NAME picks an adapter by name; WGPU_BACKEND restricts backends."
                 );
