@@ -310,18 +310,19 @@ fn readme_cost_table_on_real_instruction_sets() {
     common::publish_on("README.md", "isa-cost-depth", &depth, on);
 }
 
-/// A floor under every form of `encode_normal_oct24` whose codes are the loop's bit for bit
-/// (`tests/normal_oct.rs`, `straight_line_precise_encoder_equals_the_loop_it_replaced`): the
-/// shipped encoder less its |D|², its four divisions and its choice. The loop picks by the four
-/// candidates' scores |s×D|²/|D|², so a straight-line form with its codes computes the four
-/// lattice directions D and the four numerators |s×D|², rounded as the loop rounds them. Kept here: the input made safe
-/// and projected (the rounding encoder's work), the candidates' D as `oct_choose` builds them,
-/// the numerators, and as little as keeps them alive (three xors: a choice of one of four needs
-/// three operations at least) folded into the code of the floor corner.
-const PRECISE_OCT24_FLOOR: &str = "
-fn precise_oct24_floor(n: vec3<f32>) -> u32 {
+/// A floor under every form of the precise octahedral encoders (`encode_normal_oct16`, `_oct24`,
+/// `_oct32`) whose codes are the loop's bit for bit (`tests/normal_oct.rs`,
+/// `straight_line_precise_encoder_equals_the_loop_it_replaced`): the shipped encoder less its
+/// |D|², its four divisions and its choice. The loop picks by the four candidates' scores
+/// |s×D|²/|D|², so a straight-line form with its codes computes the four lattice directions D
+/// and the four numerators |s×D|², rounded as the loop rounds them. Kept here: the input made
+/// safe and projected (the rounding encoder's work), the candidates' D as `oct_choose` builds
+/// them, the numerators, and as little as keeps them alive (three xors: a choice of one of four
+/// needs three operations at least) folded into the code of the floor corner.
+const PRECISE_OCT_FLOOR: &str = "
+fn precise_oct_floor(n: vec3<f32>, bits: u32) -> u32 {
     let s = oct_sanitize(n).xyz;
-    let m = 4095.0;
+    let m = f32((1u << bits) - 1u);
     let c00 = floor(oct_continuous(s, m));
     let ab0 = (c00 + c00) - vec2<f32>(m);
     let ab1 = ab0 + vec2<f32>(2.0);
@@ -338,12 +339,21 @@ fn precise_oct24_floor(n: vec3<f32>) -> u32 {
     let x3 = cross(s, vec3<f32>(x.w, y.w, z.w));
     let q = bitcast<vec4<u32>>(vec4<f32>(dot(x0, x0), dot(x1, x1), dot(x2, x2), dot(x3, x3)));
     let uv = vec2<u32>(c00);
-    return (uv.x | (uv.y << 12u)) ^ ((q.x ^ q.y) ^ (q.z ^ q.w));
+    return (uv.x | (uv.y << bits)) ^ ((q.x ^ q.y) ^ (q.z ^ q.w));
+}
+fn precise_oct16_floor(n: vec3<f32>) -> u32 {
+    return precise_oct_floor(n, 8u);
+}
+fn precise_oct24_floor(n: vec3<f32>) -> u32 {
+    return precise_oct_floor(n, 12u);
+}
+fn precise_oct32_floor(n: vec3<f32>) -> u32 {
+    return precise_oct_floor(n, 16u);
 }
 ";
 
 /// Each precise (hemi-)octahedral encoder's net cost over its rounding sibling's, per target,
-/// and the floor under any bit-identical form of the oct24 one ([`PRECISE_OCT24_FLOOR`])
+/// and the floor under any bit-identical form of the octahedral ones ([`PRECISE_OCT_FLOOR`])
 /// over the same rounding encoder (docs/figures.md, block `isa-precise-ratio`). The floor must
 /// cost no more than the encoder it is taken from, or it is no floor: checked per target.
 #[test]
@@ -365,9 +375,13 @@ fn precise_over_rounding_encoders_on_every_target() {
         list.push(Function::new(src, name));
         list.push(Function::new(src, &format!("{name}_fast")));
     }
-    let floor_src = format!("{}\n{PRECISE_OCT24_FLOOR}", prepass::wgsl::NORMAL_OCT);
+    let floor_src = format!("{}\n{PRECISE_OCT_FLOOR}", prepass::wgsl::NORMAL_OCT);
     let floor = list.len();
-    list.push(Function::new(&floor_src, "precise_oct24_floor"));
+    // The octahedral pairs are the first three, in this order.
+    let floored = ["oct16", "oct24", "oct32"];
+    for bits in floored {
+        list.push(Function::new(&floor_src, &format!("precise_{bits}_floor")));
+    }
     let report = Costing::new().cost(&list).unwrap();
     let targets = measured(&report);
     let mut body = String::from(
@@ -394,34 +408,37 @@ fn precise_over_rounding_encoders_on_every_target() {
         }
         body.push('\n');
     }
-    // The oct24 pair is the second: its precise encoder 2, its rounding one 3.
-    let _ = write!(
-        body,
-        "| floor under any bit-identical `encode_normal_oct24` (`tests/isa.rs`: \
-         `PRECISE_OCT24_FLOOR`) |"
-    );
-    for (t, _) in &targets {
-        let net = |k: usize| report.get(*t, k).expect("compiled").net;
-        let (lo, p, f) = (net(floor), net(2), net(3));
-        assert!(
-            lo.rank() <= p.rank(),
-            "{t}: the floor ({:.1}) costs more than encode_normal_oct24 ({:.1}): it is no floor",
-            lo.rank(),
-            p.rank()
-        );
+    for (k, bits) in floored.iter().enumerate() {
         let _ = write!(
             body,
-            " {:.2}× / {:.2}× |",
-            lo.instructions / f.instructions,
-            lo.rank() / f.rank()
+            "| floor under any bit-identical `encode_normal_{bits}` (`tests/isa.rs`: \
+             `PRECISE_OCT_FLOOR`) |"
         );
+        for (t, _) in &targets {
+            let net = |k: usize| report.get(*t, k).expect("compiled").net;
+            let (lo, p, f) = (net(floor + k), net(2 * k), net(2 * k + 1));
+            assert!(
+                lo.rank() <= p.rank(),
+                "{t}: the {bits} floor ({:.1}) costs more than its encoder ({:.1}): it is no floor",
+                lo.rank(),
+                p.rank()
+            );
+            let _ = write!(
+                body,
+                " {:.2}× / {:.2}× |",
+                lo.instructions / f.instructions,
+                lo.rank() / f.rank()
+            );
+        }
+        body.push('\n');
     }
     body.push_str(
-        "\n\nThe floor: the rounding encoder's work (the input made safe and projected), the four \
+        "\nThe floor: the rounding encoder's work (the input made safe and projected), the four \
          candidates' lattice directions D and the numerators |s×D|² of the loop's scores, three \
          xors to keep them alive; no |D|², no division, no choice. A straight-line form whose \
          codes are the loop's bit for bit evaluates the loop's four scores, so it computes at \
-         least these: where this row exceeds 1.5×, issue 46's 1.5× goal is out of reach.\n",
+         least these: where a floor row exceeds 1.5×, issue 46's 1.5× goal is out of reach for that \
+         encoder on that target.\n",
     );
     common::publish_on(
         "docs/figures.md",
