@@ -315,45 +315,49 @@ fn readme_cost_table_on_real_instruction_sets() {
 /// `straight_line_precise_encoder_equals_the_loop_it_replaced`): the shipped encoder less its
 /// |D|², its four divisions and its choice. The loop picks by the four candidates' scores
 /// |s×D|²/|D|², so a straight-line form with its codes computes the four lattice directions D
-/// and the four numerators |s×D|², rounded as the loop rounds them. Kept here: the input made
-/// safe and projected (the rounding encoder's work), the candidates' D as `oct_choose` builds
-/// them, the numerators, and as little as keeps them alive (three xors: a choice of one of four
-/// needs three operations at least) folded into the code of the floor corner.
-const PRECISE_OCT_FLOOR: &str = "
-fn precise_oct_floor(n: vec3<f32>, bits: u32) -> u32 {
-    let s = oct_sanitize(n).xyz;
-    let m = f32((1u << bits) - 1u);
-    let c00 = floor(oct_continuous(s, m));
-    let ab0 = (c00 + c00) - vec2<f32>(m);
-    let ab1 = ab0 + vec2<f32>(2.0);
-    let a = vec4<f32>(ab0.x, ab1.x, ab0.x, ab1.x);
-    let b = vec4<f32>(ab0.y, ab0.y, ab1.y, ab1.y);
-    let ta = vec2<f32>(m) - abs(vec2<f32>(ab0.x, ab1.x));
-    let z = vec4<f32>(ta, ta) - abs(b);
-    let mz = min(z, vec4<f32>(0.0));
-    let x = a + clamp(a, vec4<f32>(-1.0), vec4<f32>(1.0)) * mz;
-    let y = b + clamp(b, vec4<f32>(-1.0), vec4<f32>(1.0)) * mz;
-    let x0 = cross(s, vec3<f32>(x.x, y.x, z.x));
-    let x1 = cross(s, vec3<f32>(x.y, y.y, z.y));
-    let x2 = cross(s, vec3<f32>(x.z, y.z, z.z));
-    let x3 = cross(s, vec3<f32>(x.w, y.w, z.w));
-    let q = bitcast<vec4<u32>>(vec4<f32>(dot(x0, x0), dot(x1, x1), dot(x2, x2), dot(x3, x3)));
+/// and the four numerators |s×D|², rounded as the loop rounds them. Kept: the input made safe
+/// and projected (the rounding encoder's work), the shipped `oct_choose` up to its four cross
+/// products (its text, cut there: the floor follows the shipped construction of D), the
+/// numerators, and as little as keeps them alive (three xors: a choice of one of four needs
+/// three operations at least) folded into the code of the floor corner. WGSL appended to
+/// `normal_oct.wgsl`; functions `precise_oct16_floor`, `_oct24_` and `_oct32_`.
+fn precise_oct_floor_source() -> String {
+    let oct = prepass::wgsl::NORMAL_OCT;
+    let head = "fn oct_choose(s: vec3<f32>, c: vec2<f32>, bits: u32) -> u32 {\n";
+    let cut = "    let x3 = cross(s, d3);\n";
+    let start = oct.find(head).expect("normal_oct.wgsl defines oct_choose") + head.len();
+    let end = start
+        + oct[start..]
+            .find(cut)
+            .expect("oct_choose computes the cross products x0..x3")
+        + cut.len();
+    format!(
+        "{oct}
+fn precise_oct_floor_choose(s: vec3<f32>, c: vec2<f32>, bits: u32) -> u32 {{
+{}    let q = bitcast<vec4<u32>>(vec4<f32>(dot(x0, x0), dot(x1, x1), dot(x2, x2), dot(x3, x3)));
     let uv = vec2<u32>(c00);
     return (uv.x | (uv.y << bits)) ^ ((q.x ^ q.y) ^ (q.z ^ q.w));
-}
-fn precise_oct16_floor(n: vec3<f32>) -> u32 {
+}}
+fn precise_oct_floor(n: vec3<f32>, bits: u32) -> u32 {{
+    let s = oct_sanitize(n).xyz;
+    return precise_oct_floor_choose(s, oct_continuous(s, f32((1u << bits) - 1u)), bits);
+}}
+fn precise_oct16_floor(n: vec3<f32>) -> u32 {{
     return precise_oct_floor(n, 8u);
-}
-fn precise_oct24_floor(n: vec3<f32>) -> u32 {
+}}
+fn precise_oct24_floor(n: vec3<f32>) -> u32 {{
     return precise_oct_floor(n, 12u);
-}
-fn precise_oct32_floor(n: vec3<f32>) -> u32 {
+}}
+fn precise_oct32_floor(n: vec3<f32>) -> u32 {{
     return precise_oct_floor(n, 16u);
+}}
+",
+        &oct[start..end]
+    )
 }
-";
 
 /// Each precise (hemi-)octahedral encoder's net cost over its rounding sibling's, per target,
-/// and the floor under any bit-identical form of the octahedral ones ([`PRECISE_OCT_FLOOR`])
+/// and the floor under any bit-identical form of the octahedral ones ([`precise_oct_floor_source`])
 /// over the same rounding encoder (docs/figures.md, block `isa-precise-ratio`). The floor must
 /// cost no more than the encoder it is taken from, or it is no floor: checked per target.
 #[test]
@@ -375,7 +379,7 @@ fn precise_over_rounding_encoders_on_every_target() {
         list.push(Function::new(src, name));
         list.push(Function::new(src, &format!("{name}_fast")));
     }
-    let floor_src = format!("{}\n{PRECISE_OCT_FLOOR}", prepass::wgsl::NORMAL_OCT);
+    let floor_src = precise_oct_floor_source();
     let floor = list.len();
     // The octahedral pairs are the first three, in this order.
     let floored = ["oct16", "oct24", "oct32"];
@@ -392,19 +396,21 @@ fn precise_over_rounding_encoders_on_every_target() {
         let _ = write!(body, " {} |", t.label());
     }
     let _ = writeln!(body, "\n|---|{}", "---|".repeat(targets.len()));
+    let net = |t: Target, k: usize| report.get(t, k).expect("compiled").net;
+    // One cell: function k's net cost over function f's (instructions / the target's rank).
+    let ratio = |body: &mut String, t: Target, k: usize, f: usize| {
+        let (p, f) = (net(t, k), net(t, f));
+        let _ = write!(
+            body,
+            " {:.2}× / {:.2}× |",
+            p.instructions / f.instructions,
+            p.rank() / f.rank()
+        );
+    };
     for (i, (_, name)) in pairs.iter().enumerate() {
         let _ = write!(body, "| `{name}` |");
         for (t, _) in &targets {
-            let (p, f) = (
-                report.get(*t, 2 * i).expect("compiled").net,
-                report.get(*t, 2 * i + 1).expect("compiled").net,
-            );
-            let _ = write!(
-                body,
-                " {:.2}× / {:.2}× |",
-                p.instructions / f.instructions,
-                p.rank() / f.rank()
-            );
+            ratio(&mut body, *t, 2 * i, 2 * i + 1);
         }
         body.push('\n');
     }
@@ -412,23 +418,17 @@ fn precise_over_rounding_encoders_on_every_target() {
         let _ = write!(
             body,
             "| floor under any bit-identical `encode_normal_{bits}` (`tests/isa.rs`: \
-             `PRECISE_OCT_FLOOR`) |"
+             `precise_oct_floor_source`) |"
         );
         for (t, _) in &targets {
-            let net = |k: usize| report.get(*t, k).expect("compiled").net;
-            let (lo, p, f) = (net(floor + k), net(2 * k), net(2 * k + 1));
+            let (lo, p) = (net(*t, floor + k), net(*t, 2 * k));
             assert!(
                 lo.rank() <= p.rank(),
                 "{t}: the {bits} floor ({:.1}) costs more than its encoder ({:.1}): it is no floor",
                 lo.rank(),
                 p.rank()
             );
-            let _ = write!(
-                body,
-                " {:.2}× / {:.2}× |",
-                lo.instructions / f.instructions,
-                lo.rank() / f.rank()
-            );
+            ratio(&mut body, *t, floor + k, 2 * k + 1);
         }
         body.push('\n');
     }
