@@ -381,9 +381,12 @@ fn precise_over_rounding_encoders_on_every_target() {
     }
     let floor_src = precise_oct_floor_source();
     let floor = list.len();
-    // The octahedral pairs are the first three, in this order.
-    let floored = ["oct16", "oct24", "oct32"];
-    for bits in floored {
+    // The octahedral pairs are the first three: oct16, oct24, oct32.
+    let floored: Vec<&str> = pairs[..3]
+        .iter()
+        .map(|(_, name)| name.trim_start_matches("encode_normal_"))
+        .collect();
+    for bits in &floored {
         list.push(Function::new(&floor_src, &format!("precise_{bits}_floor")));
     }
     let report = Costing::new().cost(&list).unwrap();

@@ -125,6 +125,12 @@ fn times_on_adapter(ctx: &Ctx) -> bool {
         .is_some_and(|g| !(ctx.opts.quick && g.is_software()))
 }
 
+/// An adapter this run does not time on (its GPU-ns cells say [`NOT_TIMED`], not "needs
+/// adapter").
+fn adapter_not_timed(ctx: &Ctx) -> bool {
+    ctx.gpu().is_some() && !times_on_adapter(ctx)
+}
+
 /// Measure every registered variant and write the table, `error_vs_cost.csv` and the Pareto
 /// plots.
 pub fn section(ctx: &mut Ctx) -> Result<(), String> {
@@ -266,7 +272,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         };
         let needs_gpu = v.wgsl.is_some();
         let gpu_cell = |x: Option<f64>| match x {
-            None if needs_gpu && ctx.gpu().is_some() && !timed => NOT_TIMED.into(),
+            None if needs_gpu && adapter_not_timed(ctx) => NOT_TIMED.into(),
             x => cell(x, needs_gpu),
         };
         let isa_cell = |t: Target| match (&isa_run.versions[target_index(t)], v.wgsl.is_some()) {
@@ -345,7 +351,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         )
     } else {
         (
-            if ctx.gpu().is_some() {
+            if adapter_not_timed(ctx) {
                 "SPIR-V instructions (log scale; not timed in a quick run on a software adapter)"
             } else {
                 "SPIR-V instructions (log scale; no adapter for GPU time)"
@@ -384,7 +390,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             pareto(ctx, family, &members, x_label, pick.as_ref(), suffix)?;
         }
     }
-    dominance_section(ctx, &variants, &costs, timed);
+    dominance_section(ctx, &variants, &costs);
     Ok(())
 }
 
@@ -518,7 +524,7 @@ fn isa_table(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs], run: &IsaRun)
 
 /// The dominance check: for each shipped variant of a family with peers, the peers with no more
 /// bits, max error ≤ and cost ≤ (one strictly less), on SPIR-V count and on GPU ns.
-fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs], timed: bool) {
+fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
     let with_peers: Vec<&str> = variants
         .iter()
         .filter(|v| v.name.starts_with(peers::PREFIX))
@@ -564,7 +570,7 @@ fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs], timed
          RDNA2, RDNA3 (ACO inverse throughput) and Xe-HPG (brw cycles), static compiler \
          estimates.",
     );
-    if timed && ctx.gpu().is_some_and(|g| g.is_software()) {
+    if times_on_adapter(ctx) && ctx.gpu().is_some_and(|g| g.is_software()) {
         ctx.line("");
         ctx.line(
             "**GPU ns here come from a software adapter: they are CPU timings of the shaders and \
@@ -603,7 +609,7 @@ fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs], timed
             v.family,
             v.name,
             find(&spirv),
-            if ctx.gpu().is_some() && !timed {
+            if adapter_not_timed(ctx) {
                 NOT_TIMED.to_string()
             } else {
                 find(&gpu)
