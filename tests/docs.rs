@@ -1,4 +1,5 @@
-//! Published text that no measuring suite computes: the README's size of the example to copy.
+//! Published text that no measuring suite computes: the README's size of the example to copy,
+//! its length and order, and its WGSL (validated with naga on the Quick start's scene).
 //! Every measured figure is published by the suite that measures it for its assertions, so it
 //! is measured once: linear depth by `tests/linear_depth.rs`, 24-bit depth by
 //! `tests/depth24.rs`, the normal encodings by `tests/conforming.rs`, the bad-input table by
@@ -96,6 +97,69 @@ fn readme_is_short_and_in_the_readers_order() {
         assert!(
             std::path::Path::new(&path).exists(),
             "README links docs/{page}, which does not exist"
+        );
+    }
+}
+
+/// The README's WGSL (the Quick start's entry points: the depth uniform's binding, the G-buffer
+/// write and read) is text no doctest compiles, so it is checked here: appended to the module
+/// the Quick start's scene composes, as the README says to use it, it must validate with naga.
+#[test]
+fn readme_wgsl_validates_on_the_quick_start_scene() {
+    use prepass::projection::DepthConvention;
+    use prepass::scene::{
+        DepthChoice, DepthStorage, NormalChoice, NormalEncoding, PositionChoice, Scene,
+    };
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .expect("README.md");
+    let blocks: Vec<&str> = readme
+        .split("```wgsl\n")
+        .skip(1)
+        .map(|b| b.split("\n```").next().unwrap())
+        .collect();
+    assert_eq!(
+        blocks.len(),
+        1,
+        "README.md should hold one ```wgsl block, the Quick start's"
+    );
+    // The Quick start's scene, as its doctest declares it.
+    let scene = Scene {
+        depth: DepthChoice {
+            storage: DepthStorage::Float32,
+            convention: DepthConvention::Reversed,
+            infinite_far: true,
+        },
+        normal: NormalChoice {
+            encoding: Some(NormalEncoding::Oct24),
+            fast_encoder: false,
+        },
+        position: PositionChoice::View,
+        ..Scene::default()
+    };
+    let source = scene.wgsl().unwrap() + "\n" + blocks[0] + "\n";
+    let checked = prepass::wgsl::parse_and_validate(&source)
+        .unwrap_or_else(|e| panic!("README.md's WGSL on the Quick start's scene: {e}"));
+    let entry_points: Vec<&str> = checked
+        .module
+        .entry_points
+        .iter()
+        .map(|e| &*e.name)
+        .collect();
+    assert_eq!(
+        entry_points.len(),
+        2,
+        "a geometry and a lighting entry point: {entry_points:?}"
+    );
+    for call in [
+        "view_z_from_depth_uniform(",
+        "encode_normal_oct24_unorm(",
+        "decode_normal_oct24_unorm(",
+        "var<uniform> depth_k: vec4<f32>",
+        "depth_uniform().to_le_bytes()",
+    ] {
+        assert!(
+            blocks[0].contains(call),
+            "README.md's WGSL no longer shows `{call}`"
         );
     }
 }

@@ -205,9 +205,9 @@ fn ld_uniform_reversed(k: vec4<f32>) -> bool {
 }
 
 // View distance of a float depth in the projection's own convention, from its depth uniform
-// k = (n, n/f, (f - n)/f, +-n·(2^24 - 1)) (Projection::depth_uniform; k.w negative: reversed).
-// The same value as view_z_from_depth_consts or view_z_from_reversed_depth_consts, bit for
-// bit, on the same constants. A vector no Projection gives returns the sky.
+// k = (n, n/f, (f - n)/f, +-n·(2^24 - 1)) (Projection::depth_uniform; k.w negative: reversed):
+// view_z_from_depth_consts or view_z_from_reversed_depth_consts on the same constants, bit for bit.
+// Any other vector gives a finite value >= 0: the sky if ld_uniform_ok fails, else the formula's.
 fn view_z_from_depth_uniform(z: f32, k: vec4<f32>) -> f32 {
     if (!ld_uniform_ok(k)) {
         return 3.4028234e38;

@@ -248,7 +248,23 @@ fn uniform_ok(k: DepthUniform) -> bool {
 /// [`DepthUniform`] (twin of WGSL `view_z_from_depth_uniform`): for a standard uniform
 /// [`view_z_from_depth_consts`], for a reversed one [`view_z_from_reversed_depth_consts`], on
 /// the same constants, so the same bits and the same error bounds
-/// ([`bounds::of`] those functions). A vector no projection gives returns [`SKY`].
+/// ([`bounds::of`] those functions).
+///
+/// Those promises are for the vectors
+/// [`Projection::depth_uniform`](crate::projection::Projection::depth_uniform) gives. Any other
+/// vector returns a finite value `≥ 0`, not necessarily [`SKY`]: [`SKY`] where an entry fails
+/// the checks every projection passes (`k.x` or `|k.w|` not positive and finite, `k.y` or `k.z`
+/// outside `[+0, 1]`), otherwise the formula's value on the entries as given, with no bound:
+/// `(0.1, 0.5, 0.9, 1.0)`, whose ratios do not sum to 1, reads 0.1 at depth 0 and 0.2 at
+/// depth 1, and a subnormal `k.x` can give 0.
+///
+/// ```
+/// use prepass::linear_depth::{SKY, view_z_from_depth_uniform};
+/// use prepass::projection::DepthUniform;
+/// let k = DepthUniform::from_wgsl([0.1, 0.5, 0.9, 1.0]); // no projection gives it
+/// assert_eq!((view_z_from_depth_uniform(0.0, k), view_z_from_depth_uniform(1.0, k)), (0.1, 0.2));
+/// assert_ne!(view_z_from_depth_uniform(0.5, k), SKY);
+/// ```
 pub fn view_z_from_depth_uniform(z: f32, k: DepthUniform) -> f32 {
     if !uniform_ok(k) {
         return SKY;
