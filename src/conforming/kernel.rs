@@ -57,12 +57,25 @@ pub struct EmulatedKernel<'g> {
 
 impl<'g> EmulatedKernel<'g> {
     /// Emulate `source` as `emulation` says and prepare `function` on `gpu`.
+    ///
+    /// Refuses a host it cannot trust: under every policy but [`Policy::Identity`] it first
+    /// runs [`super::check_host`] on `gpu` (once per adapter and process, the verdict kept) and
+    /// returns its [`HarnessError::UnfitHost`], naming the helper and input that came back
+    /// wrong, where the emulation's error-free transformations as the adapter compiles them
+    /// do not give what `+ − ×` rounded to nearest give (a host that contracts, reassociates
+    /// or flushes there). Those transformations (TwoSum, Dekker's product, the fused `a·b + c`
+    /// built from them) place every result the emulation chooses; where they are wrong its
+    /// results could leave the spec's intervals unnoticed. The identity policy evaluates the
+    /// original operations, needs none of that, and skips the check.
     pub fn new(
         gpu: &'g Gpu,
         source: &str,
         function: &str,
         emulation: &Emulation,
     ) -> Result<Self, HarnessError> {
+        if emulation.policy != Policy::Identity {
+            super::check_host(gpu)?;
+        }
         let shader = |e: super::EmulateError| HarnessError::Shader(e.to_string());
         let fixed = match emulation.policy {
             Policy::Upper => Some((DirectionTable::UPPER, TABLE_MODE)),

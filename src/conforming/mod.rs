@@ -109,6 +109,11 @@
 //! (TwoSum, Dekker's product, Fast2Sum), and the fused `a·b + c` is built the same way; they need
 //! the host to round to nearest without contraction, reassociation or flushing, as lavapipe does
 //! where the directions are run-time values (see [`EmulatedKernel`] above for where it does not).
+//! [`EmulatedKernel::new`] refuses an adapter on which those helpers come back otherwise
+//! ([`check_host`], feature `harness`: it runs them as shipped, at inputs where each freedom
+//! changes their results). Lavapipe passes, though its compiler does fuse a product used once
+//! into the sum it feeds and folds the pack lanes' Fast2Sum: neither touches what must be exact
+//! (`probe.rs` says why).
 //! Dekker's split is skipped where it could overflow or underflow (operands beyond 2^±60,
 //! products below 2^-100): there the host's rounding, one allowed neighbour, stands.
 //!
@@ -170,8 +175,13 @@ mod kernel;
 #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub use kernel::{EmulatedKernel, FIXED_TABLE_AS_COLUMNS, UNDEFINED_FLAG};
 #[cfg(feature = "harness")]
+mod probe;
+#[cfg(feature = "harness")]
 #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub mod search;
+#[cfg(feature = "harness")]
+#[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
+pub use probe::{PROBE_FUNCTION, PROBE_WGSL, check_host, check_host_with, probe_source};
 
 pub mod interval;
 

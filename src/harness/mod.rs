@@ -73,6 +73,10 @@ pub enum HarnessError {
     Arguments(String),
     /// Reading results back failed.
     Readback(String),
+    /// The adapter's `+ − ×` cannot carry the conforming emulation
+    /// ([`crate::conforming::check_host`]): the message names the helper, the input and the
+    /// suspected freedom (contraction, reassociation or flushing).
+    UnfitHost(String),
 }
 
 impl std::fmt::Display for HarnessError {
@@ -89,6 +93,7 @@ impl std::fmt::Display for HarnessError {
             Self::Shader(m) => write!(f, "the generated shader is invalid: {m}"),
             Self::Arguments(m) => write!(f, "arguments do not fit the signature: {m}"),
             Self::Readback(m) => write!(f, "reading results back failed: {m}"),
+            Self::UnfitHost(m) => f.write_str(m),
         }
     }
 }
