@@ -10,13 +10,15 @@ use prepass::sweep::conforming::{
 };
 use prepass::sweep::normal::{CODECS, Codec, adversarial_directions, fibonacci_directions};
 
-/// The codecs a quick run emulates: one per kind of encoder (rounding xyz, FP16 halves, the
-/// precise octahedral choice, RGB10A2's linear xyz, snorm, the best-fit search). Each emulated
-/// codec is modules for lavapipe to compile, 8 to 12 s for each precise octahedral one (oct16,
-/// oct20, oct32, Substrate's and the signed octahedron's share oct24's choice or the
-/// hemi-octahedral one), and this section was the quick report's longest (65 s of 110 s with
-/// every codec but the `_fast` and hemi-octahedral ones; 2-core Xeon, 2026-12-06).
-const QUICK_CODECS: [&str; 6] = [
+/// The codecs the quick and default runs emulate (`--full`: all of them): one per kind of
+/// encoder (rounding xyz, FP16 halves, the precise octahedral choice, RGB10A2's linear xyz,
+/// snorm, the best-fit search). Each emulated codec is modules for lavapipe to compile, 8 to
+/// 12 s for each precise octahedral one (oct16, oct20, oct32, Substrate's and the signed
+/// octahedron's share oct24's choice or the hemi-octahedral one), and this section was the quick
+/// report's longest (65 s of 110 s with every codec but the `_fast` and hemi-octahedral ones;
+/// 2-core Xeon, 2026-12-06). The default run emulates these too: every codec, under one policy
+/// at 2^14 directions, took over 6 minutes there (cold Mesa 25 shader cache, 2 cores).
+const KIND_CODECS: [&str; 6] = [
     "xyz8",
     "xy fp16",
     "oct24",
@@ -24,6 +26,11 @@ const QUICK_CODECS: [&str; 6] = [
     "snorm8",
     "xyz8 best-fit",
 ];
+
+/// Fibonacci directions the default tier's normal round trips run at, on the adapter and
+/// emulated: a sample of the full run's 2^18 (plus its adversarial directions), since each
+/// emulated direction is a long kernel on a CPU adapter.
+const DEFAULT_DIRECTIONS: u32 = 1 << 14;
 
 /// The section: linear depth and normal encodings, adapter beside emulation beside bound.
 pub fn section(ctx: &mut Ctx) -> Result<(), String> {
@@ -42,27 +49,32 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         ctx.line("");
         return Ok(());
     };
-    let quick = ctx.opts.quick;
-    let policies: &[Policy] = if quick {
-        &[Policy::Upper, Policy::Seeded(1)]
-    } else {
-        &Policy::WORST
-    };
-    let searched = if quick { 8 } else { SEARCHED_INPUTS };
-    let mut inputs = fibonacci_directions(if quick { 1 << 12 } else { 1 << 18 });
-    if !quick {
+    let (quick, full) = (ctx.opts.quick(), ctx.opts.full());
+    // What each tier emulates. The default emulates KIND_CODECS (compiling each codec's
+    // emulated modules is most of this section) and cuts what multiplies the emulated execution: linear depth under the upper and lower
+    // policies (each free operation at either end; the seeded mixes are `--full`'s) with 8 searched
+    // inputs; the normal encodings at DEFAULT_DIRECTIONS Fibonacci directions under the upper
+    // policy, not searched (`--full`: 2^18 plus the adversarial set, three policies, searched).
+    let policies = ctx.opts.pick::<&[Policy]>(
+        &[Policy::Upper, Policy::Seeded(1)],
+        &[Policy::Upper, Policy::Lower],
+        &Policy::WORST,
+    );
+    let searched = ctx.opts.pick(8, 8, SEARCHED_INPUTS);
+    let mut inputs = fibonacci_directions(ctx.opts.pick(1 << 12, DEFAULT_DIRECTIONS, 1 << 18));
+    if full {
         inputs.extend(adversarial_directions());
     }
-    let normal_policies: &[Policy] = if quick {
-        &[Policy::Upper]
-    } else {
+    let normal_policies: &[Policy] = if full {
         &[Policy::Upper, Policy::Lower, Policy::Seeded(1)]
+    } else {
+        &[Policy::Upper]
     };
-    // The round-trip search compiles one more emulated module per codec: not in quick mode.
-    let normal_searched = if quick { 0 } else { SEARCHED_NORMAL_INPUTS };
+    // The round-trip search compiles one more emulated module per codec: `--full` only.
+    let normal_searched = if full { SEARCHED_NORMAL_INPUTS } else { 0 };
     let codecs: Vec<Codec> = CODECS
         .into_iter()
-        .filter(|c| !quick || QUICK_CODECS.contains(&c.name))
+        .filter(|c| full || KIND_CODECS.contains(&c.name))
         .collect();
     // The two families on two threads: most of each is the driver compiling emulated modules,
     // one thread per module, and this section is the report's longest.
@@ -89,7 +101,12 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     ));
     ctx.line("");
     ctx.line(format!(
-        "Searched: `conforming::search` at the {searched} inputs the policies erred most on."
+        "Searched: `conforming::search` at the {searched} inputs the policies erred most on{}.",
+        if full {
+            ""
+        } else {
+            " (`--full`: all five policies, 32 inputs searched)"
+        }
     ));
     ctx.line("");
     ctx.line("| function | max ULP (adapter) | max ULP (worst emulated) | max ULP (searched) | bound, correctly rounded | bound, conforming |");
@@ -125,11 +142,21 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             "Searched: the round trip (encode, then decode, as one function) at the \
              {normal_searched} inputs the policies erred most on."
         ));
-    } else {
+    } else if quick {
         ctx.line(
-            "Quick run: not searched (—), and one codec per kind of encoder (`QUICK_CODECS`) \
+            "Quick run: not searched (—), and one codec per kind of encoder (`KIND_CODECS`) \
              (`tests/conforming.rs` measures every codec under every policy, searched).",
         );
+    } else {
+        ctx.line(format!(
+            "Default run: one codec per kind of encoder (`KIND_CODECS`, {} of {}), {} of the \
+             full run's 2^18 Fibonacci directions (and not its adversarial ones), the upper \
+             policy only, not searched (—); `--full` for all (`tests/conforming.rs` measures \
+             every codec under every policy, searched).",
+            codecs.len(),
+            CODECS.len(),
+            inputs.len()
+        ));
     }
     ctx.line("");
     ctx.line("| encoding | max° (adapter) | max° (worst emulated) | max° (searched) | mean° (adapter) | mean° (worst emulated) | codes ≠ twin (emulated) | max \\|len − 1\\| (emulated) |");
@@ -167,13 +194,13 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
 
 #[cfg(test)]
 mod tests {
-    /// A misspelt name would drop its codec from quick runs without a word.
+    /// A misspelt name would drop its codec from quick and default runs without a word.
     #[test]
-    fn quick_codecs_are_codecs() {
-        for q in super::QUICK_CODECS {
+    fn kind_codecs_are_codecs() {
+        for q in super::KIND_CODECS {
             assert!(
                 prepass::sweep::normal::CODECS.iter().any(|c| c.name == q),
-                "QUICK_CODECS names `{q}`, which is not in sweep::normal::CODECS"
+                "KIND_CODECS names `{q}`, which is not in sweep::normal::CODECS"
             );
         }
     }

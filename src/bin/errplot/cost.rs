@@ -112,17 +112,19 @@ pub fn csv_field(s: &str) -> String {
     }
 }
 
-/// What the GPU-ns cells say in a quick run on a software adapter (see [`times_on_adapter`]).
-const NOT_TIMED: &str = "not timed (quick)";
+/// What the GPU-ns cells say where this run does not time on its adapter (see
+/// [`times_on_adapter`]).
+pub const NOT_TIMED: &str = "not timed (software adapter; `--full` times it)";
 
-/// Whether this run times the WGSL on its adapter: not in a quick run on a software adapter.
+/// Whether this run times the WGSL on its adapter: only `--full` does on a software adapter.
 /// There a timing is seconds of this CPU running the shader (2^24 invocations, the harness's
 /// minimum, twice: 0.2 to 0.3 s a variant on lavapipe, the best-fit encoder's search 17 s, 39 s
-/// of the quick run's 77 s, 2-core Xeon, 2026-12-07) and ranks nothing on a GPU; the
-/// real-instruction-set columns are the quick run's cost. The full run times every variant.
+/// of the quick run's 77 s, 2-core Xeon, 2026-12-07; most of the full run's 417 s cost section)
+/// and ranks nothing on a GPU; the real-instruction-set columns are then the cost. On a real
+/// GPU every tier times.
 fn times_on_adapter(ctx: &Ctx) -> bool {
     ctx.gpu()
-        .is_some_and(|g| !(ctx.opts.quick && g.is_software()))
+        .is_some_and(|g| ctx.opts.full() || !g.is_software())
 }
 
 /// An adapter this run does not time on (its GPU-ns cells say [`NOT_TIMED`], not "needs
@@ -134,10 +136,12 @@ fn adapter_not_timed(ctx: &Ctx) -> bool {
 /// Measure every registered variant and write the table, `error_vs_cost.csv` and the Pareto
 /// plots.
 pub fn section(ctx: &mut Ctx) -> Result<(), String> {
-    let quick = ctx.opts.quick;
+    let quick = ctx.opts.quick();
     let timed = times_on_adapter(ctx);
-    let repeats = if quick { 1 } else { 5 };
-    let calls: usize = if quick { 1 << 20 } else { 1 << 23 };
+    // Timing repeats (the fastest is kept) and the twins' loop length: the default tier keeps
+    // fewer repeats than `--full`, its figures a little noisier.
+    let repeats = ctx.opts.pick(1, 3, 5);
+    let calls: usize = ctx.opts.pick(1 << 20, 1 << 22, 1 << 23);
     let variants = std::mem::take(&mut ctx.variants);
     let bar = ctx.progress(variants.len() as u64, "run-time costs");
     let empty = twin_timer(vec![0u32; 1 << 12], |x| x);
@@ -151,7 +155,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     let mut costs = Vec::new();
     bar.set_message("real instruction sets (ACO, brw)");
     // A quick run compiles for the plotted targets only: each target is one child process
-    // compiling every variant, and the quick report is read for its plots.
+    // compiling every variant, and the quick report is read for its plots. The default and
+    // full tiers compile every variant for all eight: the real-GPU cost the report exists for.
     let targets: &[Target] = if quick { &PLOTTED } else { &Target::ALL };
     let (isa_run, mut isa) = isa_costs(&variants, targets);
     for (v, isa) in variants.iter().zip(&mut isa) {
@@ -228,10 +233,10 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             }
         }
         (Some(_), None) => ctx.line(
-            "GPU ns/eval: **not timed**: a quick run on a software adapter times nothing (each \
+            "GPU ns/eval: **not timed**: only `--full` times on a software adapter (each \
              timing is seconds of this CPU and says nothing about a GPU; the real \
-             instruction sets below are the cost). `bash .ci/errplot` (the full run) times \
-             every variant.",
+             instruction sets below are the cost). `bash .ci/errplot --full` times every \
+             variant.",
         ),
         (None, _) => ctx.line(format!(
             "GPU ns/eval: **{NEEDS_ADAPTER}** — no adapter was found; see the note at the top."
@@ -352,7 +357,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     } else {
         (
             if adapter_not_timed(ctx) {
-                "SPIR-V instructions (log scale; not timed in a quick run on a software adapter)"
+                "SPIR-V instructions (log scale; a software adapter is timed by `--full` only)"
             } else {
                 "SPIR-V instructions (log scale; no adapter for GPU time)"
             }
@@ -578,7 +583,7 @@ fn dominance_section(ctx: &mut Ctx, variants: &[Variant], costs: &[Costs]) {
              and the timings vary between runs by more than the closest gaps.",
         );
     }
-    if ctx.opts.quick {
+    if ctx.opts.quick() {
         ctx.line("");
         ctx.line(
             "Quick runs leave the `_fast` and hemi-octahedral variants out of the cost table, so \

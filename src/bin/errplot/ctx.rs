@@ -8,13 +8,40 @@ use prepass::harness::Gpu;
 use std::path::PathBuf;
 use std::sync::Arc;
 
+/// How much a run measures: the same three names in `--help`, the report's "- Mode:" line and
+/// every section's choice of sizes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tier {
+    /// `--quick`: CI's smoke run and the notebooks' input: fewer cases and repeats, one codec
+    /// per kind of encoder under emulation; exhaustive sweeps over a code space stay exhaustive.
+    Quick,
+    /// No flag: every section, every codec and every cost target, with the long sweeps sampled
+    /// (each section says what it keeps) and no timing on a software adapter, for a run of a
+    /// few minutes on two cores.
+    Default,
+    /// `--full`: every sweep at full size, every codec emulated under every policy, every
+    /// variant timed on the adapter (a software one too): the report's published figures.
+    Full,
+}
+
+impl Tier {
+    /// The tier's name as the report and `--help` write it.
+    pub fn label(self) -> &'static str {
+        match self {
+            Tier::Quick => "quick (`--quick`)",
+            Tier::Default => "default (no flag)",
+            Tier::Full => "full (`--full`)",
+        }
+    }
+}
+
 /// Command-line options.
 #[derive(Clone)]
 pub struct Options {
     /// Output folder.
     pub out: PathBuf,
-    /// Small run (CI, notebooks): fewer cases and repeats; exhaustive sweeps stay exhaustive.
-    pub quick: bool,
+    /// How much the run measures.
+    pub tier: Tier,
     /// Also decode all 2^32 codes of the 32-bit normal encodings (about 15 minutes on lavapipe).
     pub exhaustive32: bool,
 }
@@ -32,6 +59,27 @@ pub struct Ctx {
     pub variants: Vec<Variant>,
     /// Files written, for the summary at the end.
     pub written: Vec<PathBuf>,
+}
+
+impl Options {
+    /// `--quick`.
+    pub fn quick(&self) -> bool {
+        self.tier == Tier::Quick
+    }
+
+    /// `--full`.
+    pub fn full(&self) -> bool {
+        self.tier == Tier::Full
+    }
+
+    /// `quick`, `default` or `full` by the tier.
+    pub fn pick<T>(&self, quick: T, default: T, full: T) -> T {
+        match self.tier {
+            Tier::Quick => quick,
+            Tier::Default => default,
+            Tier::Full => full,
+        }
+    }
 }
 
 /// The text put in a table cell that needs an adapter when there is none.

@@ -34,7 +34,7 @@ fn timing_channels() -> Vec<u32> {
 /// The recovery and hyperbolic-depth tables.
 pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     let src = source();
-    let quick = ctx.opts.quick;
+    let quick = ctx.opts.quick();
     // Quick runs keep one sign pattern per perturbation; every case stays exhaustive (2^24 codes).
     let cases: Vec<(ChannelError, bool)> = RECOVERY_CASES
         .iter()

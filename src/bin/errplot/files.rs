@@ -71,8 +71,8 @@ pub const CSV_FILES: &[(&str, &str, &str)] = &[
         "family, variant, bits (stored per value), unit (of the error columns), max_error, \
          mean_error, rms_error (empty when they need an adapter), error_measured (where, over \
          what), gpu_ns_per_eval (net of the empty-kernel baseline), gpu_gross_ns_per_eval, \
-         gpu_timing_method (the three empty without an adapter, and in a quick run on a \
-         software adapter, which does not time), cpu_ns_per_call (Rust twin, net of an empty loop), \
+         gpu_timing_method (the three empty without an adapter, and on a software adapter \
+         unless `--full`, which alone times there), cpu_ns_per_call (Rust twin, net of an empty loop), \
          spirv_instructions (naga SPIR-V, callees included), peer (true for a baseline from \
          another project, `tests/baselines/peer_*.wgsl`; its variant starts with `peer:`), then \
          per target chip (polaris10, vega10, navi21, navi31, skl, tgl, dg2, lnl) \

@@ -2,7 +2,7 @@
 //! (`tests/baselines/linear_depth.wgsl`): error against distance, the stiff-grid table, and the
 //! cost-table variants.
 
-use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
+use crate::ctx::{Ctx, NEEDS_ADAPTER, Tier, num};
 use crate::peers;
 use crate::plot::{Chart, LineChart, Series};
 use crate::variant::{TimedArg, Variant, Wgsl, twin_timer};
@@ -30,6 +30,10 @@ pub const VARIANT_RATIO: f64 = 1e5;
 
 /// Bins per curve (log-spaced in distance).
 pub const BINS: usize = 120;
+
+/// Float depths per grid case in the default tier: a sample of the full run's 2^22 (the stiff
+/// grid's float sweeps are cheap beside its D24 ones; the sample keeps the run short).
+const DEFAULT_FLOATS: usize = 1 << 18;
 
 /// Values per timing tile.
 const TILE: u32 = 1 << 16;
@@ -101,8 +105,9 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     } else {
         "cpu"
     };
-    // Quick runs plot the cost-table ratio only.
-    let ratios: Vec<f64> = if ctx.opts.quick {
+    // Quick runs plot the cost-table ratio only; the default and full runs all three (each
+    // curve is every D24 code, about a second on lavapipe).
+    let ratios: Vec<f64> = if ctx.opts.quick() {
         vec![VARIANT_RATIO]
     } else {
         RATIOS.to_vec()
@@ -404,14 +409,21 @@ fn max_rel(s: &prepass::sweep::linear_depth::LinearStats) -> String {
 
 /// The stiff grid: every depth path × near × far/near, stable forms beside both baselines.
 fn grid_section(ctx: &mut Ctx) -> Result<(), String> {
-    let quick = ctx.opts.quick;
-    // Quick runs: near 0.1 with far/near 1e6 and ∞, 2^16 float depths; full runs: all 25
-    // cases, 2^22 floats (the tests run 2^24 per case and assert the bound).
+    // Quick runs: near 0.1 with far/near 1e6 and ∞, 2^16 float depths. Default runs: near 0.1
+    // with all five far/near ratios, DEFAULT_FLOATS float depths (each case sweeps every D24
+    // code four times, about 4 s on lavapipe, so the full grid's 25 cases are most of the full
+    // section). Full runs: all 25 cases, 2^22 floats (the tests run 2^24 per case and assert
+    // the bound).
+    let tier = ctx.opts.tier;
     let cases: Vec<StiffCase> = stiff_grid()
         .into_iter()
-        .filter(|c| !quick || (c.near == NEARS[2] && c.ratio >= 1e6 && c.ratio != 1e9))
+        .filter(|c| match tier {
+            Tier::Quick => c.near == NEARS[2] && c.ratio >= 1e6 && c.ratio != 1e9,
+            Tier::Default => c.near == NEARS[2],
+            Tier::Full => true,
+        })
         .collect();
-    let float_count = if quick { 1 << 16 } else { 1 << 22 };
+    let float_count = ctx.opts.pick(1 << 16, DEFAULT_FLOATS, 1 << 22);
     ctx.line("### Stiff projections: max error per depth path and case");
     ctx.line("");
     let Some(g) = ctx.gpu() else {
@@ -427,7 +439,16 @@ fn grid_section(ctx: &mut Ctx) -> Result<(), String> {
         "On the adapter. D24: all 2^24 codes; float: {float_count} depths spread in ULP space \
          over (0, 1] plus the 64 next to 0 and to 1. Stable forms in f32 ULPs of the exact \
          distance; baselines as relative error (∞: a result of the wrong sign or infinite where \
-         the distance is finite). Data: `linear_depth_grid.csv`."
+         the distance is finite). Data: `linear_depth_grid.csv`.{}",
+        match tier {
+            Tier::Full => String::new(),
+            _ => format!(
+                " This run: {} of the full grid's 25 cases (near {} m) and {float_count} of \
+                 its 2^22 float depths; `--full` for all.",
+                cases.len(),
+                NEARS[2]
+            ),
+        }
     ));
     ctx.line("");
     ctx.line("| depth | near (m) | far/near | stable (ULP) | `_consts` (ULP) | textbook 1/(z·a+b) (relative) | B/(z−A) (relative) |");

@@ -10,7 +10,7 @@ const LIGHTS: [usize; 5] = [1, 2, 4, 16, 64];
 
 /// The table and its CSV.
 pub fn section(ctx: &mut Ctx) -> Result<(), String> {
-    let pixels = if ctx.opts.quick { 512 } else { 4096 };
+    let pixels = if ctx.opts.quick() { 512 } else { 4096 };
     ctx.line("## Light pre-pass: specular reconstructed from the light buffer");
     ctx.line("");
     let Some(g) = ctx.gpu() else {

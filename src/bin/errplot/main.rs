@@ -3,8 +3,11 @@
 //! the plots, tables and CSV files that show them.
 //!
 //! ```text
-//! cargo run --release --all-features --bin errplot -- [--out DIR] [--quick] [--exhaustive32]
+//! cargo run --release --all-features --bin errplot -- [--out DIR] [--quick | --full] [--exhaustive32]
 //! ```
+//! Three tiers ([`ctx::Tier`]): `--quick` (CI's smoke run), the default (every section sized for
+//! a few minutes on two cores: long sweeps sampled, no timing on a software adapter) and
+//! `--full` (every sweep at full size, every variant timed: the published figures).
 //! Output goes to `errplot-out/` by default: `report.md` (tables, plots embedded), one CSV per
 //! sweep (columns documented in `report.md`'s "Files" section), each plot as SVG and PNG.
 //!
@@ -33,7 +36,7 @@ mod roughness;
 mod roughness_ggx;
 mod variant;
 
-use ctx::{Ctx, Options};
+use ctx::{Ctx, Options, Tier};
 use prepass::harness::Gpu;
 use std::path::PathBuf;
 use std::sync::Mutex;
@@ -67,20 +70,30 @@ const AFTER: &[(&str, Section)] = &[
 fn parse_args() -> Result<Options, String> {
     let mut o = Options {
         out: PathBuf::from("errplot-out"),
-        quick: false,
+        tier: Tier::Default,
         exhaustive32: false,
     };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
             "--out" => o.out = args.next().ok_or("--out needs a directory")?.into(),
-            "--quick" => o.quick = true,
+            "--quick" | "--full" if o.tier != Tier::Default => {
+                return Err("--quick and --full pick one tier each: give one of them".into());
+            }
+            "--quick" => o.tier = Tier::Quick,
+            "--full" => o.tier = Tier::Full,
             "--exhaustive32" => o.exhaustive32 = true,
             "-h" | "--help" => {
                 println!(
-                    "usage: errplot [--out DIR] [--quick] [--exhaustive32]\n\n\
+                    "usage: errplot [--out DIR] [--quick | --full] [--exhaustive32]\n\n\
                      Writes report.md, CSV files and SVG/PNG plots into DIR (default errplot-out).\n\
-                     --quick: fewer cases and timing repeats, no timing on a software adapter (CI, notebooks).\n\
+                     Three tiers:\n\
+                     \x20 --quick: CI's smoke run (notebooks too): fewer cases, one codec per kind \
+                     under emulation, the three plotted cost targets, no timing on a software adapter.\n\
+                     \x20 (no flag), the default: every section, codec and cost target, the long sweeps \
+                     sampled (the report says how much), no timing on a software adapter; minutes on two cores.\n\
+                     \x20 --full: every sweep at full size, every codec under every policy, every \
+                     variant timed (lavapipe too): the report's published figures.\n\
                      --exhaustive32: also decode all 2^32 codes of oct32 and xy fp16 (~15 min on lavapipe).\n\
                      PREPASS_ADAPTER=NAME picks an adapter by name; WGPU_BACKEND restricts backends."
                 );
@@ -137,15 +150,20 @@ fn run(ctx: &mut Ctx) -> Result<(), String> {
         std::thread::available_parallelism().map_or(1, |n| n.get())
     ));
     ctx.line(format!(
-        "- Mode: {}",
-        if ctx.opts.quick {
-            "quick (`--quick`)"
-        } else {
-            "full"
+        "- Mode: {}{}",
+        ctx.opts.tier.label(),
+        match ctx.opts.tier {
+            Tier::Full => " — every sweep at full size, every variant timed on the adapter",
+            Tier::Default =>
+                " — the long sweeps sampled (each section says how much; `--full` runs them \
+                 whole), no timing on a software adapter",
+            Tier::Quick => " — CI's smoke run: fewer cases, one codec per kind under emulation",
         }
     ));
     ctx.line(
-        "- Regenerate: `bash .ci/errplot` (= `cargo run --release --all-features --bin errplot`)",
+        "- The report's published figures come from `bash .ci/errplot --full`; the default run \
+         (`bash .ci/errplot`, = `cargo run --release --all-features --bin errplot`) samples the \
+         long sweeps, `--quick` is CI's smoke run.",
     );
     ctx.line("");
     run_side_by_side(ctx, MEASURING)?;

@@ -56,7 +56,10 @@ fn errors(ctx: &Ctx, codec: &Codec, dirs: &[[f32; 3]]) -> Result<(Vec<f64>, &'st
 
 /// The tables, images, histogram, CSV and variants.
 pub fn section(ctx: &mut Ctx) -> Result<(), String> {
-    let n = if ctx.opts.quick { 1 << 16 } else { 1 << 22 };
+    // Directions per codec: the default tier samples 2^18 of the full run's 2^22 (the same
+    // spherical-Fibonacci construction at a coarser spacing; each codec's worst cell moves
+    // little), 1/16 of its adapter time; quick runs 2^16.
+    let n = ctx.opts.pick(1 << 16, 1 << 18, 1 << 22);
     let dirs = fibonacci_directions(n);
     let bar = ctx.progress(CODECS.len() as u64, "normals");
     let mut measured = Vec::new();
@@ -74,7 +77,15 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
         "Angle between each of {n} spherical-Fibonacci directions and its decoded vector, \
          encoded and decoded by the {place}. xy FP16 and hemi-octahedral store view-space \
          normals with z ≥ 0 only: their rows count the upper hemisphere alone (the tests \
-         measure what happens below it). Data: `normal_error.csv`."
+         measure what happens below it). Data: `normal_error.csv`.{}",
+        if ctx.opts.full() {
+            String::new()
+        } else {
+            format!(
+                " This run: 2^{} of the full run's 2^22 directions; `--full` for all.",
+                n.ilog2()
+            )
+        }
     ));
     ctx.line("");
     ctx.line("| encoding | bits | mean error (°) | max error (°) | RMS (°) |");
@@ -179,7 +190,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     // Cost-table variants: each encoder and each decoder, timed on spread-out inputs.
     // Quick runs (CI, notebooks) time the precise encodings only, to stay under a minute.
     let tile_dirs: Vec<[f32; 3]> = fibonacci_directions(1 << 16);
-    let quick = ctx.opts.quick;
+    let quick = ctx.opts.quick();
     for (codec, e, place) in measured {
         if quick && (codec.name.contains("fast") || codec.name.contains("hemi")) {
             continue;

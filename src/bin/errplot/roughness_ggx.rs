@@ -49,7 +49,7 @@ fn lobe(round_trip: fn(f32) -> f32, r_min: f64, stride: usize) -> ErrorStats {
 
 /// The table, CSV and cost-table variants.
 pub fn section(ctx: &mut Ctx) -> Result<(), String> {
-    let stride = if ctx.opts.quick { 61 } else { 1 };
+    let stride = if ctx.opts.quick() { 61 } else { 1 };
     let every = if stride == 1 { "every" } else { "every 61st" };
     ctx.line("## GGX roughness in 8 bits: the lobe's error");
     ctx.line("");
