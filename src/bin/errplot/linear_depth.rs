@@ -411,7 +411,7 @@ fn max_rel(s: &prepass::sweep::linear_depth::LinearStats) -> String {
 fn grid_section(ctx: &mut Ctx) -> Result<(), String> {
     // Quick runs: near 0.1 with far/near 1e6 and ∞, 2^16 float depths. Default runs: near 0.1
     // with all five far/near ratios, DEFAULT_FLOATS float depths (each case sweeps every D24
-    // code four times, about 4 s on lavapipe, so the full grid's 25 cases are most of the full
+    // code four times, so the full grid's 25 cases (100 such sweeps) are most of the full
     // section). Full runs: all 25 cases, 2^22 floats (the tests run 2^24 per case and assert
     // the bound).
     let tier = ctx.opts.tier;
