@@ -20,7 +20,7 @@ use prepass::depth24 as d24;
 use prepass::normal::{hemioct, oct, signed_oct, snorm8, substrate, xy_fp16, xyz8, xyz10};
 use prepass::precision::inputs::{ChannelError, sign_pattern, unorm8_channel};
 use prepass::sweep::normal::{
-    RenderTarget, adversarial_directions, bad_inputs, fibonacci_directions, stratified_codes32,
+    RenderTarget, adversarial_directions, bad_inputs, stratified_codes32,
 };
 use std::fmt::Debug;
 use std::sync::OnceLock;
@@ -176,12 +176,14 @@ fn special_components() -> Vec<f32> {
     .to_vec()
 }
 
-/// The encoders' inputs: 2^24 Fibonacci directions, the adversarial set, the bad inputs, every
+/// The encoders' inputs: the tier's Fibonacci directions (`common::tier::fibonacci_set`: 2^20,
+/// 2^24 in the full tier), the adversarial set, the bad inputs, every
 /// triple of special components, and the Fibonacci directions scaled by huge and tiny powers.
 fn encoder_inputs() -> &'static [Vec3] {
     static V: OnceLock<Vec<Vec3>> = OnceLock::new();
     V.get_or_init(|| {
-        let mut v: Vec<Vec3> = fibonacci_directions(1 << 24)
+        let mut v: Vec<Vec3> = common::tier::fibonacci_set()
+            .1
             .into_iter()
             .chain(adversarial_directions())
             .chain(bad_inputs().into_iter().map(|(b, _)| b))
@@ -614,15 +616,16 @@ fn signed_oct_every_code_and_encoders() {
     );
 }
 
-/// The best-fit encoder's batch twins (the scalar twin per element) over every 16th of the 2^24
-/// Fibonacci directions and every other encoder input (adversarial, bad, special components).
+/// The best-fit encoder's batch twins (the scalar twin per element) over every 16th of the
+/// tier's Fibonacci directions (`common::tier::fibonacci_set`) and every other encoder input (adversarial, bad, special components).
 #[test]
 fn normal_best_fit_encoder() {
     let v = encoder_inputs();
-    let sub: Vec<Vec3> = v[..1 << 24]
+    let fib = 1 << common::tier::fibonacci_log2();
+    let sub: Vec<Vec3> = v[..fib]
         .iter()
         .step_by(16)
-        .chain(&v[1 << 24..])
+        .chain(&v[fib..])
         .copied()
         .collect();
     check!(
@@ -1000,7 +1003,7 @@ fn splitmix(state: &mut u64) -> u64 {
 /// `2^-126·max(1, ‖n‖∞)`, `‖n‖∞ = 2^124`, and (for hemioct) negative `z` of any finite size.
 fn vouched_inputs(inside: fn(Vec3) -> bool) -> Vec<Vec3> {
     let mut v: Vec<Vec3> = encoder_inputs().to_vec();
-    let fib: Vec<Vec3> = encoder_inputs()[..1 << 24]
+    let fib: Vec<Vec3> = encoder_inputs()[..1 << common::tier::fibonacci_log2()]
         .iter()
         .step_by(64)
         .copied()
@@ -1142,7 +1145,14 @@ fn normal_vouched_encoders() {
     ] {
         let v = vouched_inputs(inside);
         eprintln!("vouched inputs inside the contract: {}", v.len());
-        assert!(v.len() > 18_000_000, "{}", v.len());
+        // The set's size, as a check that it was built whole: 3.9 M in the default tier
+        // (2^20 Fibonacci directions), 18 M in the full tier (2^24).
+        let least = common::tier::by_tier(3_500_000, 18_000_000);
+        assert!(
+            v.len() > least,
+            "{} vouched inputs, fewer than {least}",
+            v.len()
+        );
         for &(name, scalar, with, plain, _) in pairs {
             check(&format!("normal::{name} vouched"), &v, scalar, with, plain);
             if !name.ends_with("fast") {

@@ -1451,14 +1451,21 @@ fn every_policy_through_the_searched_module_matches_its_own_module() {
         // Seeded too, except where only the directed ends have an exact reference to decide a
         // difference (the 32-bit rounding encoder: see above).
         let seeded = name != "encode_normal_oct32_fast";
-        let policies = [
-            Policy::Upper,
-            Policy::Lower,
-            Policy::Seeded(1),
-            Policy::Seeded(7),
-        ];
-        for policy in policies
-            .into_iter()
+        // Default tier: one directed end and one seed (the table is all ones or all zeros and
+        // the seeded mode one hash either way, so the other end and seed take the same code
+        // path through the module); the full tier both of each. Each is a compile of its own
+        // module, which is this test's time.
+        let policies: &[Policy] = common::tier::by_tier(
+            &[Policy::Upper, Policy::Seeded(1)],
+            &[
+                Policy::Upper,
+                Policy::Lower,
+                Policy::Seeded(1),
+                Policy::Seeded(7),
+            ],
+        );
+        for &policy in policies
+            .iter()
             .filter(|p| seeded || !matches!(p, Policy::Seeded(_)))
         {
             let emu = Emulation::new(policy);
@@ -1585,6 +1592,47 @@ fn assert_searched_promises(r: &prepass::sweep::conforming::NormalFigures) {
     );
 }
 
+/// The default tier's emulation sample (`sweep::normal::default_tier_sample`) finds the worst
+/// that every input finds, on one encoder of each kind it samples: a rounding encoder (oct16's)
+/// and a precise one (oct16), over the same 2^18 Fibonacci and adversarial directions as
+/// [`every_normal_encoding_under_emulation`], under the upper and lower policies. Runs in both
+/// tiers: it is the evidence for the default tier's rule.
+#[test]
+fn default_tier_sample_finds_the_full_tiers_worst() {
+    use prepass::sweep::conforming::normal_figures;
+    use prepass::sweep::normal::{
+        adversarial_directions, codec, default_tier_sample, fibonacci_directions,
+    };
+    let mut inputs = fibonacci_directions(1 << 18);
+    inputs.extend(adversarial_directions());
+    let policies = [Policy::Upper, Policy::Lower];
+    for name in ["oct16 fast", "oct16"] {
+        let c = codec(name);
+        let at = |k: usize| {
+            let c = prepass::sweep::normal::Codec {
+                emulation_sample: k,
+                ..*c
+            };
+            normal_figures(gpu(), &[c], &inputs, &policies, 0)
+                .unwrap()
+                .remove(0)
+        };
+        let (sampled, every) = (at(default_tier_sample(c)), at(1));
+        eprintln!(
+            "{name}: emulated max (upper, lower) at 1 in {} inputs {:?}°, at every input {:?}°",
+            default_tier_sample(c),
+            sampled.emulated_max,
+            every.emulated_max
+        );
+        assert!(sampled.emulated_inputs < every.emulated_inputs);
+        assert_eq!(
+            sampled.emulated_max, every.emulated_max,
+            "{name}: the default tier's emulation sample (sweep::normal::default_tier_sample) \
+             missed the worst round trip that every input finds; its rule no longer holds"
+        );
+    }
+}
+
 /// Every normal encoding on the emulated worst adapter (upper, lower, one seed): round-trip
 /// error beside the adapter's own (`round_trip` without emulation), every decode finite and
 /// unit within the conforming budget, the codes the emulated encoder chooses differently from
@@ -1696,16 +1744,17 @@ fn every_normal_encoding_under_emulation() {
     // The round-trip search at the SEARCHED_NORMAL_INPUTS inputs the policies erred most on
     // (per codec: each policy's worst, pooled): the encoder's and decoder's ends chosen
     // together, which the greedy policies never combine.
-    // PREPASS_FULL=1: the sampling codecs emulated at every input too (the samples' reasons:
-    // the rustdoc of sweep::normal::PRECISE_SAMPLE and BEST_FIT_SAMPLE).
+    // The full tier emulates every codec at every input; the default tier at
+    // `sweep::normal::default_tier_sample` of them (its rustdoc: the rule, and why the sample
+    // holds the worst; `default_tier_sample_finds_the_full_tiers_worst` checks it on one codec
+    // of each kind).
     let codecs: Vec<prepass::sweep::normal::Codec> = prepass::sweep::normal::CODECS
         .iter()
         .map(|c| prepass::sweep::normal::Codec {
-            emulation_sample: if common::full_strength() {
-                1
-            } else {
-                c.emulation_sample
-            },
+            emulation_sample: common::tier::by_tier(
+                prepass::sweep::normal::default_tier_sample(c),
+                1,
+            ),
             ..*c
         })
         .collect();
@@ -1813,8 +1862,29 @@ fn every_normal_encoding_under_emulation() {
     // Measured blocks: compared as text on the adapter they were published from; elsewhere the
     // differences are printed and the assertions above (and tests/normal_*.rs on the adapter)
     // are what must hold.
-    common::publish_measured("README.md", "normal-encodings", &readme);
-    common::publish_measured("docs/figures.md", "normal-encodings", &full);
+    // Published from the full tier; the default tier's sample may not exceed its worsts.
+    common::tier::publish_sampled(
+        "README.md",
+        "normal-encodings",
+        &readme,
+        &[
+            "max°",
+            "max° on the worst conforming adapter, greedy / searched",
+        ],
+        "conforming",
+    );
+    common::tier::publish_sampled(
+        "docs/figures.md",
+        "normal-encodings",
+        &full,
+        &[
+            "max°",
+            "emulated max° (upper / lower / seeded)",
+            "max° (worst found by the search)",
+            "max \\|len − 1\\| of emulated decodes",
+        ],
+        "conforming",
+    );
 }
 
 /// The vouched-input encoders (`common::vouched_codec`: `encode_normal_oct*_vouched`,
@@ -1862,8 +1932,16 @@ fn vouched_encoders_under_emulation() {
         _ => codes32.clone(),
     };
     let policies = [Policy::Upper, Policy::Lower, Policy::Seeded(1)];
+    // Default tier: oct24 and oct32 (oct16 too in the full tier). oct16 and oct24 are one WGSL
+    // construction (`oct_choose` with the width as its argument), so their emulated operation
+    // sites are the same; oct32 has its own (`oct_choose_wide`). Each pair costs its modules'
+    // compiles, most of this test's time.
+    let octahedral: Vec<&str> = common::OCTAHEDRAL
+        .into_iter()
+        .filter(|n| common::full_strength() || !n.starts_with("oct16"))
+        .collect();
     for (names, inputs) in [
-        (&common::OCTAHEDRAL[..], &all),
+        (&octahedral[..], &all),
         (&common::HEMIOCTAHEDRAL[..], &hemi),
     ] {
         vouched_under_emulation(names, inputs, &policies, &codes_for);
@@ -1980,8 +2058,12 @@ fn precise_choice_searched_on_the_decision_margin() {
         6,
         "oct16, oct20, oct24, oct32, hemioct24 and the signed octahedron precise"
     );
+    // Default tier: oct24, oct32, hemioct24 and the signed octahedron, one per construction of
+    // the choice (oct16 and oct20 are oct24's `oct_choose` at another width; the full tier
+    // searches them too). Each costs its two modules' compiles.
     let jobs: Vec<_> = precise
         .iter()
+        .filter(|c| common::full_strength() || !matches!(c.name, "oct16" | "oct20"))
         .map(|&c| (c, decision_inputs(c, cells, &gaps)))
         .collect();
     // The scores function reads the encoder's candidates in the encoder's order: where the
@@ -2036,7 +2118,16 @@ fn precise_choice_searched_on_the_decision_margin() {
             r.slots.1
         );
     }
-    common::publish_measured("docs/figures.md", "normal-decision", &s);
+    common::tier::publish_sampled(
+        "docs/figures.md",
+        "normal-decision",
+        &s,
+        &[
+            "worst excess over the closest code found",
+            "worst found / bound",
+        ],
+        "conforming",
+    );
 }
 
 /// Each call of a helper reads its own table slots (the call context): `h(x, y) − h(x, y)` is 0

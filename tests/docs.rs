@@ -163,3 +163,76 @@ fn readme_wgsl_validates_on_the_quick_start_scene() {
         );
     }
 }
+
+/// The default tier's check of a sampled block ([`common::tier::publish_sampled`]) reads every
+/// number of a worst column and fails where the sample measured more than was published, or
+/// where a row or column is missing, and passes where only the means moved.
+#[test]
+fn sampled_blocks_are_held_to_their_published_worsts() {
+    use common::tier::{numbers, worsts_exceeded};
+    assert_eq!(
+        numbers("0.0390 / 0.0390 · 0.0594"),
+        vec![0.039, 0.039, 0.0594]
+    );
+    assert_eq!(numbers("97 %"), vec![97.0]);
+    assert_eq!(numbers("1.5e-3 and -2"), vec![1.5e-3, -2.0]);
+    let published = "| f | max | mean |\n|---|---|---|\n| a | 1.0 · 2.0 | 0.5 |\n";
+    let lower = "| f | max | mean |\n|---|---|---|\n| a | 1.0 · 1.5 | 0.9 |\n";
+    let higher = "| f | max | mean |\n|---|---|---|\n| a | 1.1 · 1.5 | 0.1 |\n";
+    assert!(worsts_exceeded(published, lower, &["max"]).is_empty());
+    assert_eq!(worsts_exceeded(published, higher, &["max"]).len(), 1);
+    let new_row = "| f | max |\n|-|-|\n| b | 0 |";
+    assert_eq!(worsts_exceeded(published, new_row, &["max"]).len(), 1);
+    assert_eq!(worsts_exceeded(published, lower, &["p99"]).len(), 1);
+}
+
+/// The three tiers carry the same names and commands in the README's Commands table,
+/// CONTRIBUTING.md and `errplot --help` (issue 58: "named the same everywhere").
+#[test]
+fn tiers_are_named_the_same_everywhere() {
+    let read = |p: &str| {
+        std::fs::read_to_string(format!("{}/{p}", env!("CARGO_MANIFEST_DIR")))
+            .unwrap_or_else(|e| panic!("{p}: {e}"))
+    };
+    let help = std::process::Command::new(env!("CARGO_BIN_EXE_errplot"))
+        .arg("--help")
+        .output()
+        .expect("errplot --help runs");
+    let help = String::from_utf8_lossy(&help.stdout).to_string();
+    for (what, text, needles) in [
+        (
+            "README.md",
+            read("README.md"),
+            &[
+                "**default**",
+                "**quick**",
+                "**full**",
+                "`bash .ci/test`",
+                "`PREPASS_FULL=1 bash .ci/test`",
+                "`bash .ci/errplot`",
+                "`bash .ci/errplot --quick`",
+                "`bash .ci/errplot --full`",
+            ][..],
+        ),
+        (
+            "CONTRIBUTING.md",
+            read("CONTRIBUTING.md"),
+            &[
+                "**full tier**",
+                "PREPASS_FULL=1 bash .ci/test",
+                "`--quick`",
+                "`--full`",
+                "default",
+            ][..],
+        ),
+        (
+            "errplot --help",
+            help,
+            &["Three tiers", "--quick", "the default", "--full"][..],
+        ),
+    ] {
+        for n in needles {
+            assert!(text.contains(n), "{what} does not name the tier text `{n}`");
+        }
+    }
+}

@@ -1,5 +1,5 @@
 //! `wgsl/normal_hemioct.wgsl` (view-space normals, z ≥ 0, 24 bits) on the adapter: round trip
-//! over the upper half of 2^24 spherical-Fibonacci directions and the adversarial set against
+//! over the upper half of the tier's spherical-Fibonacci directions (2^20; 2^24 in the full tier) and the adversarial set against
 //! the f64 reproduction, precise-encoder optimality, all 2^24 codes decoded, bad input and the
 //! render-target form — against the Rust twin `src/normal/hemioct.rs`; and the vouched-input
 //! encoders, the robust codes bit for bit on inputs across their contract.
@@ -15,11 +15,12 @@ use prepass::sweep::normal::{
     near_tie_directions, optimality_tolerance_deg, precise_optimality, reference_error, round_trip,
 };
 
-/// The upper half (`z ≥ 0`) of 2^24 Fibonacci directions and of the adversarial set.
+/// The upper half (`z ≥ 0`) of the tier's Fibonacci directions (`common::tier::fibonacci_set`:
+/// 2^20, 2^24 in the full tier) and of the adversarial set.
 fn upper_sets() -> [(&'static str, Vec<[f32; 3]>); 2] {
     let upper = |v: Vec<[f32; 3]>| v.into_iter().filter(|v| v[2] >= 0.0).collect();
     [
-        ("fibonacci z >= 0", upper(fibonacci_directions(1 << 24))),
+        ("fibonacci z >= 0", upper(common::tier::fibonacci_set().1)),
         ("adversarial z >= 0", upper(adversarial_directions())),
     ]
 }
@@ -292,20 +293,25 @@ mod replaced {
 
 /// Issue 21's encoders (continuous coordinates stopping below M, no clamp of `floor`, the
 /// lattice as `(u + v − M, u − v, M − |x| − |y|)`) return the codes of the ones they replaced
-/// for every input tried: the 2^24 Fibonacci directions (both hemispheres: z < 0 is clamped),
-/// the adversarial set, the bad inputs, 2^22 random vectors in [−1, 1]^3, 2^22 random f32 bit
-/// patterns and the near-tie directions; and the lattice equals the old one on all 2^24 codes.
+/// for every input tried: the tier's Fibonacci directions (both hemispheres: z < 0 is clamped),
+/// the adversarial set, the bad inputs, 2^20 random vectors in [−1, 1]^3 and 2^20 random f32 bit
+/// patterns (2^22 each in the full tier) and the near-tie directions; and the lattice equals the old one on all 2^24 codes.
 /// CPU only (no adapter): the twins.
 #[test]
 fn encoders_equal_the_ones_they_replaced() {
-    let (cube, raw) = common::random_cube_and_bits(0x21, 1 << 22);
+    // 2^20 random vectors of each kind in the default tier, 2^22 in the full tier (the rule of
+    // `common::tier::fibonacci_log2`).
+    let r = common::tier::by_tier(20, 22);
+    let (cube, raw) = common::random_cube_and_bits(0x21, 1 << r);
     let bad: Vec<[f32; 3]> = bad_inputs().iter().map(|c| c.0).collect();
+    let (fib_label, fib) = common::tier::fibonacci_set();
+    let labels = [format!("random cube 2^{r}"), format!("random bits 2^{r}")];
     let sets: [(&str, Vec<[f32; 3]>); 6] = [
-        ("fibonacci 2^24", fibonacci_directions(1 << 24)),
+        (&fib_label, fib),
         ("adversarial", adversarial_directions()),
         ("bad inputs", bad),
-        ("random cube 2^22", cube),
-        ("random bits 2^22", raw),
+        (&labels[0], cube),
+        (&labels[1], raw),
         ("near ties", near_ties()),
     ];
     for (set, inputs) in &sets {

@@ -1,5 +1,6 @@
 //! `wgsl/normal_oct.wgsl` on the adapter: round-trip error of the precise and rounding encoders
-//! over 2^24 spherical-Fibonacci directions and the adversarial set, the precise encoder's
+//! over the tier's spherical-Fibonacci directions (`common::tier::fibonacci_set`: 2^20, 2^24 in the
+//! full tier) and the adversarial set, the precise encoder's
 //! optimality among its four neighbour codes, every 16-, 20- and 24-bit code decoded, a stratified
 //! 2^26 sample of the 32-bit codes, bad input, and the render-target forms — each against the
 //! Rust twin `src/normal/oct.rs` and f64 references.
@@ -16,19 +17,24 @@ use prepass::sweep::normal::{
 };
 use std::sync::OnceLock;
 
-fn fibonacci() -> &'static [[f32; 3]] {
-    static F: OnceLock<Vec<[f32; 3]>> = OnceLock::new();
-    F.get_or_init(|| fibonacci_directions(1 << 24))
+/// "fibonacci 2^k" for the tier's set ([`common::tier::fibonacci_log2`]).
+fn fibonacci_label() -> String {
+    common::tier::fibonacci_set_label()
 }
 
-/// Round trip over 2^24 Fibonacci directions plus the adversarial set: the encoder is the Rust
+fn fibonacci() -> &'static [[f32; 3]] {
+    static F: OnceLock<Vec<[f32; 3]>> = OnceLock::new();
+    F.get_or_init(|| common::tier::fibonacci_set().1)
+}
+
+/// Round trip over the tier's Fibonacci directions plus the adversarial set: the encoder is the Rust
 /// twin bit for bit, the decoder too, every result is unit length, the error meets the issue's
 /// target (its acceptance rule: no worse than the float64 reproduction by more than 2%), and
 /// for the precise encoders every choice is optimal among the four neighbour codes.
 fn check(c: &Codec) {
     let (mean_t, max_t) = c.target.unwrap_or_else(|| reference_round_trip(c));
     for (set, inputs) in [
-        ("fibonacci 2^24", fibonacci()),
+        (fibonacci_label().as_str(), fibonacci()),
         ("adversarial", &adversarial_directions()[..]),
     ] {
         let rt = round_trip(gpu(), c, inputs).unwrap();
@@ -83,7 +89,7 @@ fn check(c: &Codec) {
 
 /// A codec without a published target (oct20: the survey tabulates none) is held to its own
 /// float64 reproduction, computed here: `Codec::reference_encode` then `reference_decode` in
-/// f64 over the same 2^24 Fibonacci directions, (mean°, max°).
+/// f64 over the same Fibonacci directions, (mean°, max°).
 fn reference_round_trip(c: &Codec) -> (f64, f64) {
     let (mut sum, mut max) = (0.0, 0f64);
     for n in fibonacci() {
@@ -97,8 +103,9 @@ fn reference_round_trip(c: &Codec) -> (f64, f64) {
     }
     let mean = sum / fibonacci().len() as f64;
     eprintln!(
-        "{}: f64 reproduction over 2^24 directions: mean {mean:.6}° max {max:.6}°",
-        c.name
+        "{}: f64 reproduction over the {}: mean {mean:.6}° max {max:.6}°",
+        c.name,
+        fibonacci_label()
     );
     (mean, max)
 }
@@ -168,7 +175,7 @@ fn oct32_precise_and_fast_round_trip() {
 
 /// The vouched encoders pass the robust ones' round-trip suite on their own (`check`: the WGSL
 /// equals the vouched twin, the error meets the same targets, the precise choice is optimal
-/// among its neighbours) over 2^24 Fibonacci directions and the adversarial set, all inside
+/// among its neighbours) over the tier's Fibonacci directions and the adversarial set, all inside
 /// the vouched contract.
 #[test]
 fn vouched_encoders_round_trip_like_the_robust_ones() {
@@ -466,22 +473,30 @@ mod loop_reference {
 
 /// The precise encoder as issues 13 and 21 reshaped it (straight-line selection, branch-free
 /// lattice, continuous coordinates stopping below M instead of a clamp of `floor`) returns the
-/// old loop's code for every input tried: the 2^24 Fibonacci directions, the adversarial set,
-/// the bad inputs, 2^22 random vectors in the cube [−1, 1]^3, 2^22 vectors of random f32 bit
-/// patterns (every exponent, NaN and infinities included) and 2.4 M near-tie directions, at
+/// old loop's code for every input tried: the tier's Fibonacci directions, the adversarial set,
+/// the bad inputs, 2^20 random vectors in the cube [−1, 1]^3 and 2^20 vectors of random f32 bit
+/// patterns (2^22 each in the full tier) (every exponent, NaN and infinities included) and 2.4 M near-tie directions, at
 /// 8, 12 and 16 bits (the rounding encoder, whose coordinates stop below M too, equals its old
 /// self on the same inputs); and its lattice equals the old one on every code of 8 and 12 bits
 /// and the stratified 32-bit codes. CPU only (no adapter): the twins.
 #[test]
 fn straight_line_precise_encoder_equals_the_loop_it_replaced() {
-    let (cube, raw) = common::random_cube_and_bits(0x13, 1 << 22);
+    // The random sets: 2^20 vectors each in the default tier, 2^22 in the full tier (the rule
+    // of `common::tier::fibonacci_log2`: a per-input claim checked at fewer inputs).
+    let r = common::tier::by_tier(20, 22);
+    let (cube, raw) = common::random_cube_and_bits(0x13, 1 << r);
     let bad: Vec<[f32; 3]> = bad_inputs().iter().map(|c| c.0).collect();
+    let labels = [
+        fibonacci_label(),
+        format!("random cube 2^{r}"),
+        format!("random bits 2^{r}"),
+    ];
     let sets: [(&str, &[[f32; 3]]); 5] = [
-        ("fibonacci 2^24", fibonacci()),
+        (&labels[0], fibonacci()),
         ("adversarial", &adversarial_directions()),
         ("bad inputs", &bad),
-        ("random cube 2^22", &cube),
-        ("random bits 2^22", &raw),
+        (&labels[1], &cube),
+        (&labels[2], &raw),
     ];
     let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
     for bits in [8, 12, 16] {

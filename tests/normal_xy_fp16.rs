@@ -1,5 +1,5 @@
 //! `wgsl/normal_xy_fp16.wgsl` (Killzone 2's view-space xy as two FP16 in RGBA8) on the adapter:
-//! round trip over 2^24 spherical-Fibonacci directions (split at z = 0) and the adversarial set,
+//! round trip over the tier's spherical-Fibonacci directions (2^20; 2^24 in the full tier) (split at z = 0) and the adversarial set,
 //! a stratified 2^26 sample of the 2^32 codes decoded, the perspective "myth" measured, bad input
 //! and the render-target form — against the Rust twin `src/normal/xy_fp16.rs` and f64.
 
@@ -9,8 +9,8 @@ use common::gpu;
 use glam::Vec3;
 use prepass::normal::{F32_SLACK_DEG, xy_fp16};
 use prepass::sweep::normal::{
-    UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, fibonacci_directions,
-    killzone_myth, round_trip, stratified_codes32,
+    UNIT_TOLERANCE, adversarial_directions, bad_inputs, codec, decode_codes, killzone_myth,
+    round_trip, stratified_codes32,
 };
 use prepass::{assert_at_least, assert_within, assert_within_abs};
 
@@ -18,9 +18,10 @@ use prepass::{assert_at_least, assert_within, assert_within_abs};
 fn round_trip_upper_hemisphere_and_the_mirror_below() {
     let c = codec("xy fp16");
     for (set, inputs) in [
-        ("fibonacci 2^24", fibonacci_directions(1 << 24)),
-        ("adversarial", adversarial_directions()),
+        common::tier::fibonacci_set(),
+        ("adversarial".to_string(), adversarial_directions()),
     ] {
+        let set = set.as_str();
         let rt = round_trip(gpu(), c, &inputs).unwrap();
         eprintln!(
             "xy fp16 {set}: z >= 0 mean {:.6}° max {:.6}° (bound {:.4}°); all mean {:.3}° max {:.3}°",

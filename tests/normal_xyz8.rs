@@ -1,4 +1,5 @@
-//! `wgsl/normal_xyz8.wgsl` on the adapter: round trip over 2^24 spherical-Fibonacci directions
+//! `wgsl/normal_xyz8.wgsl` on the adapter: round trip over the tier's spherical-Fibonacci
+//! directions (2^20; 2^24 in the full tier)
 //! and the adversarial set, all 2^24 codes decoded, bad input and the render-target form —
 //! against the Rust twin `src/normal/xyz8.rs` and f64 references.
 
@@ -25,13 +26,15 @@ fn round_trip_meets_target_and_twin_is_bit_identical() {
         rt.error.mean(),
         mean_t * 1.02,
         rule,
-        "fibonacci 2^24: mean degrees"
+        "{}: mean degrees",
+        common::tier::fibonacci_set_label()
     );
     assert_within!(
         rt.error.max,
         max_t * 1.02,
         rule,
-        "fibonacci 2^24: max degrees"
+        "{}: max degrees",
+        common::tier::fibonacci_set_label()
     );
 }
 
@@ -237,21 +240,22 @@ fn best_fit_is_the_nearest_of_all_codes() {
     }
 }
 
-/// The WGSL best-fit encoder on the adapter: bit for bit the twin over 2^24 Fibonacci directions
+/// The WGSL best-fit encoder on the adapter: bit for bit the twin over the tier's Fibonacci
+/// directions (2^20; 2^24 in the full tier)
 /// and the adversarial set (where the adapter evaluates like the twins), every round trip within
 /// the rounding encoder's derived bound, and its max error no larger than the rounding
 /// encoder's on the same directions; near-lattice and near-tie directions too.
 #[test]
 fn best_fit_round_trip_and_twin_is_bit_identical() {
     use prepass::precision::metrics::angle_degrees;
-    use prepass::sweep::normal::{fibonacci_directions, round_trip};
+    use prepass::sweep::normal::round_trip;
     let rt = common::assert_linear_round_trip(
         "xyz8 best-fit",
         0xff_ffff,
         xyz8::max_angle_deg(),
         "normal::xyz8::max_angle_deg(), asin(√3/255): the rounding code is a candidate",
     );
-    let dirs = fibonacci_directions(1 << 24);
+    let dirs = common::tier::fibonacci_set().1;
     let rounding = dirs
         .iter()
         .map(|v| {

@@ -6,6 +6,8 @@ compile_error!(
      `cargo test --release --all-features` (the README's test command)"
 );
 
+pub mod tier;
+
 use prepass::harness::{Arg, Gpu, Output};
 use std::sync::OnceLock;
 
@@ -429,7 +431,7 @@ pub fn slots_cell((least, most, exhaustive): (u32, u32, bool)) -> String {
 /// case instead.
 #[allow(dead_code)]
 pub fn full_strength() -> bool {
-    std::env::var_os("PREPASS_FULL").is_some_and(|v| v != "0")
+    tier::tier() == tier::Tier::Full
 }
 
 /// The `Scene` of `examples/deferred_minimal/main.rs`, as the example builds it (oct24 normals,
@@ -696,8 +698,8 @@ pub fn assert_vouched_codes_are_the_robust_ones(names: &[&str], inputs: &[[f32; 
     }
 }
 
-/// The round trip of a per-channel (linear) normal codec over 2^24 Fibonacci directions and the
-/// adversarial set: the twins' promise ([`assert_round_trip_matches_twins`]), no NaN, no bit
+/// The round trip of a per-channel (linear) normal codec over the tier's Fibonacci directions
+/// ([`tier::fibonacci_set`]: 2^20, 2^24 in the full tier) and the adversarial set: the twins' promise ([`assert_round_trip_matches_twins`]), no NaN, no bit
 /// outside `code_mask`, and the max angle within the derived `bound_deg` (named `bound`) plus
 /// `normal::F32_SLACK_DEG`. Returns the Fibonacci round trip for further checks.
 #[allow(dead_code)]
@@ -707,13 +709,14 @@ pub fn assert_linear_round_trip(
     bound_deg: f64,
     bound: &str,
 ) -> prepass::sweep::normal::RoundTrip {
-    use prepass::sweep::normal::{adversarial_directions, fibonacci_directions, round_trip};
+    use prepass::sweep::normal::{adversarial_directions, round_trip};
     let c = prepass::sweep::normal::codec(name);
     let mut fib = None;
     for (set, inputs) in [
-        ("fibonacci 2^24", fibonacci_directions(1 << 24)),
-        ("adversarial", adversarial_directions()),
+        tier::fibonacci_set(),
+        ("adversarial".to_string(), adversarial_directions()),
     ] {
+        let set = set.as_str();
         let rt = round_trip(gpu(), c, &inputs).unwrap();
         eprintln!(
             "{name} {set}: mean {:.6}° max {:.6}° (bound {bound_deg:.4}°)",

@@ -138,6 +138,33 @@ pub const PRECISE_SAMPLE: usize = 4;
 /// `every_normal_encoding_under_emulation`'s 240 s of CPU (2026-12-06).
 pub const BEST_FIT_SAMPLE: usize = 64;
 
+/// The default tier's emulation sample of the codecs whose [`Codec::emulation_sample`] is 1
+/// (the rounding encoders and the decoder-only forms): see [`default_tier_sample`].
+pub const ROUNDING_DEFAULT_TIER_SAMPLE: usize = 8;
+
+/// The emulation sample of `c` in the default tier (`bash .ci/test`; the full tier,
+/// `PREPASS_FULL=1`, emulates every input): the rounding encoders at one input in
+/// [`ROUNDING_DEFAULT_TIER_SAMPLE`], the encoders that choose at four times their
+/// [`Codec::emulation_sample`] (precise octahedral 1 in 16, best fit 1 in 256), each with
+/// [`crate::sweep::conforming::emulation_sample`]'s rule: one input in `k` by a hash of its
+/// index, plus the `1/k` of the inputs the adapter's round trip erred most on.
+///
+/// Why it holds the worst: a policy moves a code only where the exact value lies within a few
+/// ULPs of a rounding boundary or of a tie between candidates (the emulation's code is within
+/// one step of the twin's, asserted), and there the adapter's code is one of the two a
+/// conforming adapter may give, so the emulated round trip errs by at most the decoder's
+/// allowance more than the adapter's round trip at an input with the same error: the inputs
+/// the adapter erred most on, kept whole, are where the emulated worst lies. Over 434,204
+/// inputs the kept part is 54,275 inputs for a rounding encoder, 27,137 for a precise one and
+/// 1,696 for the best fit. `tests/conforming.rs` (`default_tier_sample_finds_the_full_tiers_worst`)
+/// checks that the sample's worst equals every input's on a rounding and a precise encoder.
+pub fn default_tier_sample(c: &Codec) -> usize {
+    match c.emulation_sample {
+        1 => ROUNDING_DEFAULT_TIER_SAMPLE,
+        k => 4 * k,
+    }
+}
+
 fn xyfp16_ref_encode(n: [f64; 3]) -> u32 {
     let u = crate::normal::exact::unit(n).unwrap_or([0.0, 0.0, 1.0]);
     let h = |x: f64| u32::from(half::f16::from_f64(x.clamp(-1.0, 1.0)).to_bits());

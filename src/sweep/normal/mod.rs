@@ -18,7 +18,10 @@ mod round_trip;
 mod searched;
 mod unorm;
 
-pub use codecs::{BEST_FIT_SAMPLE, CODECS, Codec, Lane, LaneKind, PRECISE_SAMPLE, codec};
+pub use codecs::{
+    BEST_FIT_SAMPLE, CODECS, Codec, Lane, LaneKind, PRECISE_SAMPLE, ROUNDING_DEFAULT_TIER_SAMPLE,
+    codec, default_tier_sample,
+};
 pub use decision::{
     DecisionInput, SCORES_FN, SearchedDecision, chain_choice, decision_inputs, scores_source,
     searched_decisions,
