@@ -106,10 +106,6 @@ fn readme_is_short_and_in_the_readers_order() {
 /// the Quick start's scene composes, as the README says to use it, it must validate with naga.
 #[test]
 fn readme_wgsl_validates_on_the_quick_start_scene() {
-    use prepass::projection::DepthConvention;
-    use prepass::scene::{
-        DepthChoice, DepthStorage, NormalChoice, NormalEncoding, PositionChoice, Scene,
-    };
     let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
         .expect("README.md");
     let blocks: Vec<&str> = readme
@@ -122,20 +118,9 @@ fn readme_wgsl_validates_on_the_quick_start_scene() {
         1,
         "README.md should hold one ```wgsl block, the Quick start's"
     );
-    // The Quick start's scene, as its doctest declares it.
-    let scene = Scene {
-        depth: DepthChoice {
-            storage: DepthStorage::Float32,
-            convention: DepthConvention::Reversed,
-            infinite_far: true,
-        },
-        normal: NormalChoice {
-            encoding: Some(NormalEncoding::Oct24),
-            fast_encoder: false,
-        },
-        position: PositionChoice::View,
-        ..Scene::default()
-    };
+    // The Quick start's doctest declares the example's scene: reversed-Z infinite Float32
+    // depth, oct24 normals, view positions.
+    let scene = common::deferred_minimal_scene();
     let source = scene.wgsl().unwrap() + "\n" + blocks[0] + "\n";
     let checked = prepass::wgsl::parse_and_validate(&source)
         .unwrap_or_else(|e| panic!("README.md's WGSL on the Quick start's scene: {e}"));
