@@ -311,15 +311,29 @@ pub fn measured_on() -> String {
     )
 }
 
+/// The comment lines that open and close the generated block `name`.
+fn block_markers(name: &str) -> (String, String) {
+    (
+        format!("<!-- generated:{name}:begin -->"),
+        format!("<!-- generated:{name}:end -->"),
+    )
+}
+
+/// The committed text of block `name` in `path` (from its opening marker to its closing one),
+/// or `None` where the file has no such block.
+fn committed_block(path: &str, name: &str) -> Option<String> {
+    let text = std::fs::read_to_string(format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))).ok()?;
+    let (b, e) = block_markers(name);
+    let (i, j) = text.find(&b).zip(text.find(&e))?;
+    Some(text[i..j].to_string())
+}
+
 fn publish_block(path: &str, name: &str, body: &str, measured: Option<String>) {
     static FILES: std::sync::Mutex<()> = std::sync::Mutex::new(());
     let _g = FILES.lock().unwrap_or_else(|e| e.into_inner());
     let full = format!("{}/{path}", env!("CARGO_MANIFEST_DIR"));
     let text = std::fs::read_to_string(&full).unwrap_or_default();
-    let (b, e) = (
-        format!("<!-- generated:{name}:begin -->"),
-        format!("<!-- generated:{name}:end -->"),
-    );
+    let (b, e) = block_markers(name);
     let block = format!("{b}\n{}{body}{e}", measured.as_deref().unwrap_or(""));
     let found = text.find(&b).zip(text.find(&e));
     if std::env::var_os("PREPASS_WRITE_DOCS").is_some() {

@@ -48,33 +48,9 @@ pub fn regenerate_command(test: &str) -> String {
 
 /// The numbers in a table cell, in order (`"0.0390 / 0.0390 · 0.0594"` gives three; `"97 %"` one).
 pub fn numbers(cell: &str) -> Vec<f64> {
-    let mut out = Vec::new();
-    let b = cell.as_bytes();
-    let mut i = 0;
-    while i < b.len() {
-        let starts =
-            b[i].is_ascii_digit() || (b[i] == b'-' && i + 1 < b.len() && b[i + 1].is_ascii_digit());
-        if !starts {
-            i += 1;
-            continue;
-        }
-        let mut j = i + 1;
-        while j < b.len()
-            && (b[j].is_ascii_digit()
-                || b[j] == b'.'
-                || ((b[j] == b'e' || b[j] == b'E')
-                    && j + 1 < b.len()
-                    && (b[j + 1].is_ascii_digit() || b[j + 1] == b'-' || b[j + 1] == b'+'))
-                || ((b[j] == b'-' || b[j] == b'+') && (b[j - 1] == b'e' || b[j - 1] == b'E')))
-        {
-            j += 1;
-        }
-        if let Ok(v) = cell[i..j].trim_end_matches('.').parse::<f64>() {
-            out.push(v);
-        }
-        i = j;
-    }
-    out
+    cell.split(|c: char| !(c.is_ascii_digit() || "+-.eE".contains(c)))
+        .filter_map(|t| t.trim_end_matches('.').parse().ok())
+        .collect()
 }
 
 /// A Markdown table's header cells and rows (cells trimmed), from the first `|` line on.
@@ -156,22 +132,12 @@ pub fn publish_sampled(path: &str, name: &str, body: &str, worst_columns: &[&str
         super::publish_measured(path, name, body);
         return;
     }
-    let full = format!("{}/{path}", env!("CARGO_MANIFEST_DIR"));
-    let text = std::fs::read_to_string(&full).unwrap_or_default();
-    let (b, e) = (
-        format!("<!-- generated:{name}:begin -->"),
-        format!("<!-- generated:{name}:end -->"),
-    );
-    let committed = text
-        .find(&b)
-        .zip(text.find(&e))
-        .map(|(i, j)| &text[i..j])
-        .unwrap_or_else(|| {
-            panic!(
-                "{path} has no block `{name}`: run {}",
-                regenerate_command(test)
-            )
-        });
+    let committed = super::committed_block(path, name).unwrap_or_else(|| {
+        panic!(
+            "{path} has no block `{name}`: run {}",
+            regenerate_command(test)
+        )
+    });
     if std::env::var_os("PREPASS_WRITE_DOCS").is_some() {
         eprintln!(
             "{path}, block `{name}`: not written by the default tier (the published figures come \
@@ -186,7 +152,7 @@ pub fn publish_sampled(path: &str, name: &str, body: &str, worst_columns: &[&str
         );
         return;
     }
-    let exceeded = worsts_exceeded(committed, body, worst_columns);
+    let exceeded = worsts_exceeded(&committed, body, worst_columns);
     assert!(
         exceeded.is_empty(),
         "{path}, block `{name}`: the default tier's sample measured more than the published \
