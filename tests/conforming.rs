@@ -1595,11 +1595,15 @@ fn assert_searched_promises(r: &prepass::sweep::conforming::NormalFigures) {
 /// The default tier's emulation sample (`sweep::normal::default_tier_sample`) finds the worst
 /// that every input finds, on one encoder of each kind it samples: a rounding encoder (oct16's)
 /// and a precise one (oct16), over the same 2^18 Fibonacci and adversarial directions as
-/// [`every_normal_encoding_under_emulation`], under the upper and lower policies. Runs in both
-/// tiers: it is the evidence for the default tier's rule.
+/// [`every_normal_encoding_under_emulation`], under the upper and lower policies; and with it
+/// the default tier's round-trip search (`SEARCHED_NORMAL_INPUTS_DEFAULT_TIER` inputs of the
+/// sample's pool) finds the worst the full tier's (`SEARCHED_NORMAL_INPUTS` of every input's)
+/// does. Runs in both tiers: it is the evidence for the default tier's rules.
 #[test]
 fn default_tier_sample_finds_the_full_tiers_worst() {
-    use prepass::sweep::conforming::normal_figures;
+    use prepass::sweep::conforming::{
+        SEARCHED_NORMAL_INPUTS, SEARCHED_NORMAL_INPUTS_DEFAULT_TIER, normal_figures,
+    };
     use prepass::sweep::normal::{
         adversarial_directions, codec, default_tier_sample, fibonacci_directions,
     };
@@ -1608,21 +1612,28 @@ fn default_tier_sample_finds_the_full_tiers_worst() {
     let policies = [Policy::Upper, Policy::Lower];
     for name in ["oct16 fast", "oct16"] {
         let c = codec(name);
-        let at = |k: usize| {
+        let at = |k: usize, searched: usize| {
             let c = prepass::sweep::normal::Codec {
                 emulation_sample: k,
                 ..*c
             };
-            normal_figures(gpu(), &[c], &inputs, &policies, 0)
+            normal_figures(gpu(), &[c], &inputs, &policies, searched)
                 .unwrap()
                 .remove(0)
         };
-        let (sampled, every) = (at(default_tier_sample(c)), at(1));
+        let (sampled, every) = (
+            at(default_tier_sample(c), SEARCHED_NORMAL_INPUTS_DEFAULT_TIER),
+            at(1, SEARCHED_NORMAL_INPUTS),
+        );
         eprintln!(
-            "{name}: emulated max (upper, lower) at 1 in {} inputs {:?}°, at every input {:?}°",
+            "{name}: emulated max (upper, lower) at 1 in {} inputs {:?}°, at every input {:?}°; searched at {} inputs {:.7}°, at {} {:.7}°",
             default_tier_sample(c),
             sampled.emulated_max,
-            every.emulated_max
+            every.emulated_max,
+            sampled.searched_inputs,
+            sampled.searched,
+            every.searched_inputs,
+            every.searched
         );
         assert!(sampled.emulated_inputs < every.emulated_inputs);
         assert_eq!(
@@ -1630,7 +1641,22 @@ fn default_tier_sample_finds_the_full_tiers_worst() {
             "{name}: the default tier's emulation sample (sweep::normal::default_tier_sample) \
              missed the worst round trip that every input finds; its rule no longer holds"
         );
+        assert_eq!(
+            sampled.searched, every.searched,
+            "{name}: the default tier's search ({SEARCHED_NORMAL_INPUTS_DEFAULT_TIER} inputs of the \
+             sample's pool, sweep::conforming::SEARCHED_NORMAL_INPUTS_DEFAULT_TIER) missed the \
+             worst the full tier's ({SEARCHED_NORMAL_INPUTS} of every input's pool) finds; its rule \
+             no longer holds"
+        );
     }
+}
+
+/// The inputs per codec the round-trip search runs at in this tier (the full tier's
+/// `SEARCHED_NORMAL_INPUTS`, the default tier's `SEARCHED_NORMAL_INPUTS_DEFAULT_TIER`: the
+/// head of the same pool; the rule in the latter's rustdoc).
+fn searched_normal_inputs() -> usize {
+    use prepass::sweep::conforming::{SEARCHED_NORMAL_INPUTS, SEARCHED_NORMAL_INPUTS_DEFAULT_TIER};
+    common::tier::by_tier(SEARCHED_NORMAL_INPUTS_DEFAULT_TIER, SEARCHED_NORMAL_INPUTS)
 }
 
 /// Every normal encoding on the emulated worst adapter (upper, lower, one seed): round-trip
@@ -1645,8 +1671,7 @@ fn default_tier_sample_finds_the_full_tiers_worst() {
 #[test]
 fn every_normal_encoding_under_emulation() {
     use prepass::sweep::conforming::{
-        SEARCHED_NORMAL_INPUTS, UNIT_TOLERANCE_CONFORMING, normal_figures_with,
-        optimality_tolerance_conforming_deg,
+        UNIT_TOLERANCE_CONFORMING, normal_figures_with, optimality_tolerance_conforming_deg,
     };
     use prepass::sweep::normal::{
         adversarial_directions, fibonacci_directions, optimality_tolerance_deg, precise_optimality,
@@ -1741,9 +1766,9 @@ fn every_normal_encoding_under_emulation() {
             );
         }
     };
-    // The round-trip search at the SEARCHED_NORMAL_INPUTS inputs the policies erred most on
-    // (per codec: each policy's worst, pooled): the encoder's and decoder's ends chosen
-    // together, which the greedy policies never combine.
+    // The round-trip search at the inputs the policies erred most on (per codec: each
+    // policy's worst, pooled; `searched_normal_inputs` of them): the encoder's and decoder's
+    // ends chosen together, which the greedy policies never combine.
     // The full tier emulates every codec at every input; the default tier at
     // `sweep::normal::default_tier_sample` of them (its rustdoc: the rule, and why the sample
     // holds the worst; `default_tier_sample_finds_the_full_tiers_worst` checks it on one codec
@@ -1758,12 +1783,13 @@ fn every_normal_encoding_under_emulation() {
             ..*c
         })
         .collect();
+    let searched = searched_normal_inputs();
     let rows = normal_figures_with(
         gpu(),
         &codecs,
         &inputs,
         &policies,
-        SEARCHED_NORMAL_INPUTS,
+        searched,
         &codes_for,
         &mut inspect,
     )
@@ -1785,7 +1811,7 @@ fn every_normal_encoding_under_emulation() {
             r.name, r.searched_inputs, r.searched, r.searched_at
         );
         assert_eq!(
-            r.searched_inputs, SEARCHED_NORMAL_INPUTS,
+            r.searched_inputs, searched,
             "{}: the search ran at fewer inputs than asked",
             r.name
         );
@@ -1902,8 +1928,7 @@ fn every_normal_encoding_under_emulation() {
 fn vouched_encoders_under_emulation() {
     use prepass::normal::{hemioct, oct};
     use prepass::sweep::conforming::{
-        SEARCHED_NORMAL_INPUTS, UNIT_TOLERANCE_CONFORMING, normal_figures_with,
-        optimality_tolerance_conforming_deg,
+        UNIT_TOLERANCE_CONFORMING, normal_figures_with, optimality_tolerance_conforming_deg,
     };
     use prepass::sweep::normal::{
         adversarial_directions, fibonacci_directions, precise_optimality, stratified_codes32,
@@ -1993,7 +2018,7 @@ fn vouched_encoders_under_emulation() {
             &vouched,
             inputs,
             policies,
-            SEARCHED_NORMAL_INPUTS,
+            searched_normal_inputs(),
             codes_for,
             &mut inspect,
         )

@@ -353,8 +353,26 @@ pub fn normal_figures(
     )
 }
 
-/// Inputs per codec the round-trip search runs at in CI: the worst of every policy's sweep.
+/// Inputs per codec the round-trip search runs at in the full tier (`PREPASS_FULL=1`, where
+/// the published figures come from): the worst of every policy's sweep, pooled.
 pub const SEARCHED_NORMAL_INPUTS: usize = 16;
+
+/// Inputs per codec the round-trip search runs at in the default tier: the first
+/// [`SEARCHED_NORMAL_INPUTS_DEFAULT_TIER`] of the same pool, the inputs the policies erred most
+/// on, each searched from every start as in the full tier.
+///
+/// Why that holds the worst: the search climbs each input on its own (`search::climb`: one
+/// lane per input and start, none reads another's), so the default tier's search is the full
+/// tier's restricted to the pool's head, and the worst round trip a search finds sits where the
+/// greedy policies already erred most: the search only recombines the ends those policies
+/// take. Measured at every codec of the normal-encodings block (2026-12-07, the search's 16
+/// inputs, each lane's error after every round logged): the worst of the first 4 inputs equals
+/// the worst of all 16 on all 19 codecs, the first input alone on 18 (not oct32 fast), and no
+/// lane improved after its sixth round of 24; searching from the upper and lower starts only
+/// loses oct16 fast's worst (by under 10^-6°), so every start is kept.
+/// `default_tier_sample_finds_the_full_tiers_worst` (tests/conforming.rs) checks the default
+/// tier's whole rule, emulation sample and search together, against the full tier's.
+pub const SEARCHED_NORMAL_INPUTS_DEFAULT_TIER: usize = 4;
 
 /// What [`normal_figures_with`] hands each emulated sweep to: the codec, the policy, the inputs
 /// the sweep ran at ([`emulation_sample`]) and its measurement.
