@@ -1,6 +1,7 @@
 //! Every figure of a quick errplot run is checked as it is written (errplot fails on a figure
 //! with text or a box outside the image, two series drawn alike or named alike, or no data),
-//! and `errplot --check` measures the written SVGs again and catches text that runs off.
+//! and `errplot --check` measures the written SVGs again and catches text that runs off. With
+//! `PREPASS_WRITE_DOCS=1` the run's `which_to_pick.png` becomes the README's figure.
 
 use std::path::Path;
 use std::process::Command;
@@ -46,6 +47,15 @@ fn every_figure_of_a_quick_run_fits_its_image() {
         assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n", "{png}");
         assert!(out.join(png.replace(".png", ".svg")).exists(), "{png}");
     }
+
+    // The README's "which to pick" figure is this run's (PREPASS_WRITE_DOCS=1 writes it, as
+    // `bash .ci/docs` does the README's tables).
+    let readme_figure = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/which_to_pick.png");
+    if std::env::var_os("PREPASS_WRITE_DOCS").is_some() {
+        std::fs::copy(out.join("which_to_pick.png"), &readme_figure).unwrap();
+    }
+    let committed = std::fs::read(&readme_figure).expect("docs/which_to_pick.png");
+    assert_eq!(&committed[..8], b"\x89PNG\r\n\x1a\n");
 
     let check = errplot(&["--check"], &out);
     let said = String::from_utf8_lossy(&check.stdout);

@@ -457,7 +457,8 @@ fn pareto(
         let (Some(e), Some(x)) = (v.error, pick(c)) else {
             continue;
         };
-        let peer = v.name.starts_with(peers::PREFIX);
+        // Peers and the textbook baselines are drawn alike: hollow, not shipped.
+        let peer = !peers::is_shipped(&v.name);
         let rounding = !peer && v.name.ends_with("_fast");
         let name = short_name(&v.name);
         let group = name.trim_end_matches(" fast").to_string();

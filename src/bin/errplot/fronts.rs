@@ -1,5 +1,5 @@
 //! The error-against-cost charts: one panel per competing bit budget, each point labelled beside
-//! it, prepass's functions filled and the peers hollow, the Pareto front of each panel drawn.
+//! it, prepass's functions filled and the peers (and textbook baselines) hollow, the Pareto front of each panel drawn.
 
 use crate::plot::{DrawResult, FAMILY, colour, fitted, log_ticks, padded, tick};
 use plotters::coord::Shift;
@@ -13,7 +13,7 @@ pub enum Kind {
     Shipped,
     /// A shipped function's rounding (`_fast`) form.
     Rounding,
-    /// A baseline from another project.
+    /// A baseline: another project's function, or a textbook form.
     Peer,
 }
 
@@ -183,7 +183,7 @@ pub fn draw<DB: DrawingBackend>(c: &Scatter, root: &DrawingArea<DB, Shift>) -> D
         parts.push("▲ its rounding encoder (same colour, joined)");
     }
     if has(Kind::Peer) {
-        parts.push("hollow ■ ◆ peers");
+        parts.push("hollow ■ ◆ peers and textbook baselines");
     }
     parts.push("grey steps: the Pareto front (nothing both cheaper and more precise)");
     let key = parts.join("  ·  ");
@@ -275,6 +275,11 @@ fn draw_panel<DB: DrawingBackend>(
     if let Some(&(x, _)) = f.first() {
         steps.insert(0, (x, ys.1));
     }
+    // Lines a label should not cover, as pixel segments.
+    let mut segments: Vec<((i32, i32), (i32, i32))> = steps
+        .windows(2)
+        .map(|w| (chart.backend_coord(&w[0]), chart.backend_coord(&w[1])))
+        .collect();
     chart.draw_series(LineSeries::new(
         steps,
         RGBColor(170, 170, 170).stroke_width(5),
@@ -289,6 +294,10 @@ fn draw_panel<DB: DrawingBackend>(
     for (i, (p, s)) in pts.iter().enumerate() {
         for (q, _) in &pts[i + 1..] {
             if q.group == p.group {
+                segments.push((
+                    chart.backend_coord(&(p.x, p.y)),
+                    chart.backend_coord(&(q.x, q.y)),
+                ));
                 chart.draw_series(LineSeries::new(
                     [(p.x, p.y), (q.x, q.y)],
                     colour(s.colour).stroke_width(2),
@@ -296,6 +305,17 @@ fn draw_panel<DB: DrawingBackend>(
             }
         }
     }
+    // Each segment as small boxes every 4 pixels along it.
+    let lines: Vec<Rect> = segments
+        .iter()
+        .flat_map(|&((x0, y0), (x1, y1))| {
+            let n = ((x1 - x0).abs().max((y1 - y0).abs()) / 4).max(1);
+            (0..=n).map(move |k| {
+                let (x, y) = (x0 + (x1 - x0) * k / n, y0 + (y1 - y0) * k / n);
+                [x - 3, y - 3, x + 3, y + 3]
+            })
+        })
+        .collect();
     let mut taken: Vec<Rect> = Vec::new();
     let centres: Vec<(i32, i32)> = pts
         .iter()
@@ -339,7 +359,9 @@ fn draw_panel<DB: DrawingBackend>(
                 let lx = lx.clamp(px.start + 2, (px.end - 2 - tw).max(px.start + 2));
                 let ly = ly.clamp(py.start + 2, (py.end - 2 - th).max(py.start + 2));
                 let r = [lx, ly, lx + tw, ly + th];
-                let cover: i64 = taken.iter().map(|t| overlap(t, &r)).sum();
+                // Covering a marker or a label costs more than crossing a line.
+                let cover: i64 = 8 * taken.iter().map(|t| overlap(t, &r)).sum::<i64>()
+                    + lines.iter().map(|t| overlap(t, &r)).sum::<i64>();
                 (cover, r)
             })
             .min_by_key(|(cover, _)| *cover)

@@ -1,6 +1,7 @@
 //! The README's "which to pick" figure: every shipped normal encoding's max round-trip error
 //! against the bits it stores, each point tagged with the uses the README recommends it for
-//! (thin G-buffer, quality, an engine's layout), the front of bits against error drawn.
+//! (thin G-buffer, quality, an engine's layout), the front of bits against error drawn. The
+//! rounding forms appear where a use names one.
 
 use crate::ctx::Ctx;
 use crate::fronts::{Kind, Labelled, Panel, Scatter};
@@ -37,8 +38,12 @@ fn engines(stored_by: &str) -> Vec<String> {
 
 /// Draw `which_to_pick` from each codec's max round-trip error over `n` directions.
 pub fn figure(ctx: &mut Ctx, maxima: &[(&Codec, f64)], n: u32) -> Result<(), String> {
+    // A rounding (`_fast`) form is drawn where a use names it: the others sit just above their
+    // precise forms, at the same bits, and would crowd the labels.
+    let used = |name: &str| USES.iter().any(|(n, _)| *n == name);
     let points = maxima
         .iter()
+        .filter(|(codec, _)| !codec.name.ends_with(" fast") || used(codec.name))
         .map(|&(codec, max)| {
             let mut tags: Vec<String> = USES
                 .iter()
