@@ -1,7 +1,7 @@
 //! The error-against-cost charts: one panel per competing bit budget, each point labelled beside
 //! it, prepass's functions filled and the peers (and textbook baselines) hollow, the Pareto front of each panel drawn.
 
-use crate::plot::{DrawResult, FAMILY, colour, fitted, log_ticks, padded, tick};
+use crate::plot::{DrawResult, FAMILY, colour, fitted, log_ticks, padded, tick, titled};
 use plotters::coord::Shift;
 use plotters::prelude::*;
 
@@ -229,27 +229,20 @@ fn draw_panel<DB: DrawingBackend>(
     ys: (f64, f64),
 ) -> DrawResult<DB> {
     let (w, h) = area.dim_in_pixel();
-    let (y_area, x_area) = (78, 56);
-    let caption_size = fitted(area, &panel.title, 18.0, w as i32 - 30);
-    let desc_size = fitted(area, &c.x_label, 15.0, w as i32 - y_area - 30).min(fitted(
+    let (y_area, x_area) = (78u32, 56u32);
+    let desc_size = fitted(area, &c.x_label, 15.0, (w - y_area) as i32 - 30).min(fitted(
         area,
         &c.y_label,
         15.0,
-        h as i32 - x_area - 60,
+        (h - x_area) as i32 - 60,
     ));
     let x_keys = c.x_ticks.clone().unwrap_or_else(|| log_ticks(xs.0, xs.1));
-    let mut chart = ChartBuilder::on(area)
-        .caption(&panel.title, (FAMILY, caption_size))
-        .margin(10)
-        .margin_right(24)
-        .x_label_area_size(x_area)
-        .y_label_area_size(y_area)
-        .build_cartesian_2d(
-            (xs.0..xs.1).log_scale().with_key_points(x_keys),
-            (ys.0..ys.1)
-                .log_scale()
-                .with_key_points(log_ticks(ys.0, ys.1)),
-        )?;
+    let mut chart = titled(area, &panel.title, 18.0, [10, 24, x_area, y_area]).build_cartesian_2d(
+        (xs.0..xs.1).log_scale().with_key_points(x_keys),
+        (ys.0..ys.1)
+            .log_scale()
+            .with_key_points(log_ticks(ys.0, ys.1)),
+    )?;
     chart
         .configure_mesh()
         .x_desc(&c.x_label)

@@ -175,6 +175,27 @@ pub fn fitted<DB: DrawingBackend>(
     s
 }
 
+/// A chart builder on `area` under `title` (at most `size`, fitted to the area's width), with
+/// `[margin, right margin, x label area, y label area]` in pixels.
+pub fn titled<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    title: &str,
+    size: f64,
+    [margin, right, x_area, y_area]: [u32; 4],
+) -> ChartBuilder<'a, 'static, DB> {
+    let w = area.dim_in_pixel().0 as i32;
+    let mut b = ChartBuilder::on(area);
+    b.caption(
+        title,
+        (FAMILY, fitted(area, title, size, w - 20 - right as i32)),
+    )
+    .margin(margin)
+    .margin_right(right)
+    .x_label_area_size(x_area)
+    .y_label_area_size(y_area);
+    b
+}
+
 fn render<DB: DrawingBackend>(chart: &Chart, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     match chart {
@@ -275,13 +296,7 @@ pub fn line_style(k: usize, n: usize) -> (usize, u32) {
 fn lines<DB: DrawingBackend>(c: &LineChart, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
     let xs = decades(c.series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
     let ys = decades(c.series.iter().flat_map(|s| s.points.iter().map(|p| p.1)));
-    let w = root.dim_in_pixel().0 as i32;
-    let mut chart = ChartBuilder::on(root)
-        .caption(&c.title, (FAMILY, fitted(root, &c.title, 22.0, w - 40)))
-        .margin(14)
-        .margin_right(40)
-        .x_label_area_size(50)
-        .y_label_area_size(80)
+    let mut chart = titled(root, &c.title, 22.0, [14, 40, 50, 80])
         .build_cartesian_2d((xs.0..xs.1).log_scale(), (ys.0..ys.1).log_scale())?;
     log_log_mesh(&mut chart, &c.x_label, &c.y_label)?;
     let n = c.series.len();
@@ -339,14 +354,8 @@ fn image<DB: DrawingBackend>(c: &ErrorImage, root: &DrawingArea<DB, Shift>) -> D
         (lo - 0.5, lo + 0.5)
     };
     let [(x0, x1), (y0, y1)] = c.extent;
-    let w = main.dim_in_pixel().0 as i32;
-    let mut chart = ChartBuilder::on(&main)
-        .caption(&c.title, (FAMILY, fitted(&main, &c.title, 22.0, w - 40)))
-        .margin(14)
-        .margin_right(40)
-        .x_label_area_size(50)
-        .y_label_area_size(70)
-        .build_cartesian_2d(x0..x1, y0..y1)?;
+    let mut chart =
+        titled(&main, &c.title, 22.0, [14, 40, 50, 70]).build_cartesian_2d(x0..x1, y0..y1)?;
     chart
         .configure_mesh()
         .disable_mesh()
@@ -431,17 +440,11 @@ fn histogram<DB: DrawingBackend>(c: &Histogram, root: &DrawingArea<DB, Shift>) -
             .fold(0.0, f64::max)
             .max(1.0)
             * 1.25;
-        let pw = area.dim_in_pixel().0 as i32;
-        let mut chart = ChartBuilder::on(area)
-            .caption(&s.label, (FAMILY, fitted(area, &s.label, 16.0, pw - 20)))
-            .margin(6)
-            .margin_right(14)
-            .x_label_area_size(24)
-            .y_label_area_size(if k % HIST_COLUMNS == 0 { 52 } else { 40 })
-            .build_cartesian_2d(
-                (x0..x1).log_scale().with_key_points(decade_ticks(x0, x1)),
-                0.0..top,
-            )?;
+        let y_area = if k % HIST_COLUMNS == 0 { 52 } else { 40 };
+        let mut chart = titled(area, &s.label, 16.0, [6, 14, 24, y_area]).build_cartesian_2d(
+            (x0..x1).log_scale().with_key_points(decade_ticks(x0, x1)),
+            0.0..top,
+        )?;
         let mut mesh = chart.configure_mesh();
         mesh.light_line_style(WHITE)
             .label_style((FAMILY, 12))
