@@ -296,8 +296,15 @@ pub fn line_style(k: usize, n: usize) -> (usize, u32) {
 fn lines<DB: DrawingBackend>(c: &LineChart, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
     let xs = decades(c.series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
     let ys = decades(c.series.iter().flat_map(|s| s.points.iter().map(|p| p.1)));
-    let mut chart = titled(root, &c.title, 22.0, [14, 40, 50, 80])
-        .build_cartesian_2d((xs.0..xs.1).log_scale(), (ys.0..ys.1).log_scale())?;
+    // 1-2-5 ticks where an axis spans few decades (one label on a decade-wide axis before).
+    let mut chart = titled(root, &c.title, 22.0, [14, 40, 50, 80]).build_cartesian_2d(
+        (xs.0..xs.1)
+            .log_scale()
+            .with_key_points(log_ticks(xs.0, xs.1)),
+        (ys.0..ys.1)
+            .log_scale()
+            .with_key_points(log_ticks(ys.0, ys.1)),
+    )?;
     log_log_mesh(&mut chart, &c.x_label, &c.y_label)?;
     let n = c.series.len();
     for (k, s) in c.series.iter().enumerate() {
