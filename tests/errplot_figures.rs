@@ -57,6 +57,31 @@ fn every_figure_of_a_quick_run_fits_its_image() {
     let committed = std::fs::read(&readme_figure).expect("docs/which_to_pick.png");
     assert_eq!(&committed[..8], b"\x89PNG\r\n\x1a\n");
 
+    // The figure tags the README's recommendations: each use's encodings, as its list names them.
+    let svg = std::fs::read_to_string(out.join("which_to_pick.svg")).unwrap();
+    let readme =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    for (bullet, named, tag) in [
+        ("- **Thin G-buffer:**", "oct16", "oct16: thin G-buffer"),
+        (
+            "- **Thin G-buffer:**",
+            "oct24 `_fast`",
+            "oct24 fast: thin G-buffer",
+        ),
+        ("- **Quality:**", "oct24", "oct24: quality"),
+        ("- **Quality:**", "oct32", "oct32: quality"),
+    ] {
+        let line = readme
+            .lines()
+            .find(|l| l.starts_with(bullet))
+            .unwrap_or_else(|| panic!("README has no {bullet:?} line"));
+        assert!(
+            line.contains(named),
+            "README's {bullet:?} no longer names {named}: {line}"
+        );
+        assert!(svg.contains(tag), "which_to_pick.svg does not tag {tag:?}");
+    }
+
     let check = errplot(&["--check"], &out);
     let said = String::from_utf8_lossy(&check.stdout);
     assert!(check.status.success(), "{said}");

@@ -180,12 +180,12 @@ pub fn draw<DB: DrawingBackend>(c: &Scatter, root: &DrawingArea<DB, Shift>) -> D
     let has = |k: Kind| c.panels.iter().flat_map(|p| &p.points).any(|p| p.kind == k);
     let mut parts = vec!["filled ● prepass"];
     if has(Kind::Rounding) {
-        parts.push("▲ its rounding encoder (same colour, joined)");
+        parts.push("▲ its rounding form (same colour, joined)");
     }
     if has(Kind::Peer) {
-        parts.push("hollow ■ ◆ peers and textbook baselines");
+        parts.push("hollow ■ ◆ peers, textbook baselines");
     }
-    parts.push("grey steps: the Pareto front (nothing both cheaper and more precise)");
+    parts.push("grey steps: the Pareto front");
     let key = parts.join("  ·  ");
     let key_size = fitted(&head, &key, 14.0, w as i32 - 30);
     head.draw(&Text::new(

@@ -221,6 +221,73 @@ mod tests {
         )
     }
 
+    /// The busiest figures the report draws, on synthetic data: a front with every kind of
+    /// point (the key at its longest) and a long title and axis label, and a histogram of 19
+    /// panels, pass both checks. (A default run's encode front failed here once: its key, in
+    /// full, ran 23 px past the right edge at the smallest font.)
+    #[test]
+    fn the_busiest_figures_pass_their_checks() {
+        use crate::fronts::{Kind, Labelled, Panel, Scatter};
+        use crate::plot::{HistSeries, Histogram};
+        plot::init().unwrap();
+        let point = |k: usize, kind: Kind| Labelled {
+            label: format!("{kind:?} encoding number {k}"),
+            group: format!("group {k}"),
+            kind,
+            x: 10.0 + 37.0 * k as f64,
+            y: 0.001 * (1.0 + k as f64).powi(2),
+        };
+        let panel = |bits: usize| Panel {
+            title: format!("{bits}-bit codes (they compete)"),
+            points: (0..8)
+                .flat_map(|k| {
+                    let k = bits + k;
+                    [
+                        point(k, Kind::Shipped),
+                        point(k, Kind::Rounding),
+                        point(k, Kind::Peer),
+                    ]
+                })
+                .collect(),
+        };
+        let front = Chart::Scatter(Scatter {
+            title: "Max error against cost: view distance from a reversed-Z f32 depth, \
+                    infinite far, and then some more words"
+                .into(),
+            x_label: "RDNA2 (navi21): ACO inverse throughput (cycles/wave64) per evaluation, \
+                      net; static estimate of Mesa 25.0.7-2~bpo12+1; log"
+                .into(),
+            y_label: "max error (degrees, log scale)".into(),
+            panels: vec![panel(16), panel(24), panel(32)],
+            x_ticks: None,
+        });
+        let hist = Chart::Histogram(Histogram {
+            title: "Normal encodings: round-trip error, every encoding (65536 directions)".into(),
+            x_label: "angular error (degrees, log scale; red: the largest)".into(),
+            series: (0..19)
+                .map(|k| HistSeries {
+                    label: format!("hemioct24 fast {k} (24 bits, z ≥ 0)"),
+                    bins: (0..60)
+                        .map(|b| {
+                            let lo = 10f64.powf(-5.0 + b as f64 / 10.0);
+                            (lo, lo * 10f64.powf(0.1), (b * (60 - b)) as u64)
+                        })
+                        .collect(),
+                    max: 10f64.powf(-3.0 + k as f64 / 6.0),
+                })
+                .collect(),
+        });
+        let dir = std::env::temp_dir().join(format!("errplot-layout-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for (chart, stem) in [(front, "front"), (hist, "hist")] {
+            assert_eq!(chart_problems(&chart), Vec::<String>::new(), "{stem}");
+            let svg = plot::save(&chart, &dir, stem).unwrap();
+            let text = std::fs::read_to_string(svg).unwrap();
+            assert_eq!(svg_problems(&text), Vec::<String>::new(), "{stem}");
+        }
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
     /// A label centred near the left edge runs off it; the same label in the middle does not;
     /// a rotated axis label is measured along its own direction.
     #[test]
