@@ -4,6 +4,7 @@
 //!
 //! ```text
 //! cargo run --release --all-features --bin errplot -- [--out DIR] [--quick | --full] [--exhaustive32]
+//! cargo run --release --all-features --bin errplot -- --check DIR   # measure written SVGs
 //! ```
 //! Three tiers ([`ctx::Tier`]): `--quick` (CI's smoke run), the default (every section sized for
 //! a few minutes on two cores: long sweeps sampled, no timing on a software adapter) and
@@ -14,7 +15,8 @@
 //! One file per section. A new module joins the report with:
 //! 1. a file here with `pub fn section(ctx: &mut Ctx) -> Result<(), String>` that runs its sweeps
 //!    (from `src/sweep/<topic>`), writes Markdown (`ctx.line`), CSV (`ctx.csv`) and charts
-//!    (`ctx.chart` with a `plot::Chart`), marking adapter-only cells `NEEDS_ADAPTER` when
+//!    (`ctx.chart` with a `plot::Chart`; it fails the run on a figure that fails [`layout`]'s
+//!    checks), marking adapter-only cells `NEEDS_ADAPTER` when
 //!    `ctx.gpu()` is `None`;
 //! 2. one line in [`MEASURING`] (the sections that run side by side before the cost table);
 //! 3. one `ctx.variants.push(variant::Variant { .. })` per encoding variant (its error, the WGSL and
