@@ -12,8 +12,9 @@
 //!   for eight targets without a GPU (static compiler estimates, net of a same-loads baseline).
 
 use crate::ctx::{Ctx, NEEDS_ADAPTER, num};
+use crate::fronts::{Kind, Labelled, Panel, Scatter};
 use crate::peers::{self, Point};
-use crate::plot::{Chart, Labelled, Scatter};
+use crate::plot::Chart;
 use crate::variant::{TimedArg, TwinTimer, Variant, twin_timer};
 use prepass::harness::{Arg, Feed, MIN_TIMED_INVOCATIONS, TimingMethod};
 use prepass::isa::{Costing, Function, Net, Target};
@@ -373,12 +374,12 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             continue;
         };
         let what = match t.vendor() {
-            prepass::isa::Vendor::Amd => "ACO inverse throughput, cycles per wave64",
+            prepass::isa::Vendor::Amd => "ACO inverse throughput (cycles/wave64)",
             prepass::isa::Vendor::Intel => "brw cycles per SIMD thread",
         };
         axes.push((
             format!(
-                "{} net per evaluation ({what}; static estimate, {version}; log scale)",
+                "{}: {what} per evaluation, net; static estimate of {version}; log",
                 t.label()
             ),
             Box::new(move |c: &Costs| c.isa[ti].map(|n| n.rank()).filter(|&x| x > 0.0)),
@@ -402,7 +403,28 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
 /// A Pareto plot's x axis: its label, the cost it reads, the file-name suffix.
 type Axis = (String, Box<dyn Fn(&Costs) -> Option<f64>>, String);
 
-/// One family's Pareto plot: max error against the cost `pick` reads.
+/// The bit budgets that compete: codes of up to 8, 16, 24 and 32 bits, and longer ones.
+fn budget(bits: u32) -> u32 {
+    bits.div_ceil(8).min(5)
+}
+
+/// A variant's name as drawn beside its point: the family's common prefixes and a peer's
+/// parenthetical left out (the hollow marker says "peer"; the table has the full name).
+fn short_name(name: &str) -> String {
+    let name = name.strip_prefix(peers::PREFIX).unwrap_or(name);
+    let name = name.split(" (").next().unwrap_or(name);
+    let mut s = name.to_string();
+    for p in ["encode_normal_", "decode_normal_", "encode_", "decode_"] {
+        if let Some(rest) = s.strip_prefix(p) {
+            s = rest.to_string();
+            break;
+        }
+    }
+    s.replace("_normal", "").replace('_', " ")
+}
+
+/// One family's error-against-cost figure: max error against the cost `pick` reads, one panel
+/// per bit budget.
 fn pareto(
     ctx: &mut Ctx,
     family: &str,
@@ -413,7 +435,7 @@ fn pareto(
 ) -> Result<(), String> {
     let unit = members[0].0.unit;
     // A zero maximum (an exact variant) cannot sit on a log axis: it is drawn at a floor
-    // one decade below the smallest non-zero maximum, and its label says "exact".
+    // one decade below the smallest non-zero maximum, and its label says so.
     let nonzero = members
         .iter()
         .filter_map(|(v, _)| v.error.map(|e| e.max))
@@ -424,35 +446,77 @@ fn pareto(
     } else {
         1.0
     };
-    let points: Vec<Labelled> = members
-        .iter()
-        .filter_map(|(v, c)| {
-            let y = v.error?.max;
-            let x = pick(c)?;
-            Some(Labelled {
-                peer: v.name.starts_with(peers::PREFIX),
-                label: if y == 0.0 {
-                    format!("{} (max error 0, drawn at {})", v.name, num(floor))
-                } else {
-                    v.name.clone()
-                },
-                x,
-                y: if y == 0.0 { floor } else { y },
-            })
-        })
-        .collect();
-    if points.is_empty() {
+    let mut budgets: Vec<(u32, u32, u32, Vec<Labelled>)> = Vec::new();
+    let mut seen: Vec<&str> = Vec::new();
+    for (v, c) in members {
+        // One decoder may serve two encodings (xyz8 and its best-fit encoder): one point.
+        if seen.contains(&v.name.as_str()) {
+            continue;
+        }
+        seen.push(&v.name);
+        let (Some(e), Some(x)) = (v.error, pick(c)) else {
+            continue;
+        };
+        // Peers and the textbook baselines are drawn alike: hollow, not shipped.
+        let peer = !peers::is_shipped(&v.name);
+        let rounding = !peer && v.name.ends_with("_fast");
+        let name = short_name(&v.name);
+        let group = name.trim_end_matches(" fast").to_string();
+        let point = Labelled {
+            label: if e.max == 0.0 {
+                format!("{name} (max 0)")
+            } else {
+                name
+            },
+            group,
+            kind: if peer {
+                Kind::Peer
+            } else if rounding {
+                Kind::Rounding
+            } else {
+                Kind::Shipped
+            },
+            x,
+            y: if e.max == 0.0 { floor } else { e.max },
+        };
+        let b = budget(v.bits);
+        match budgets.iter_mut().find(|p| p.0 == b) {
+            Some(p) => {
+                p.1 = p.1.min(v.bits);
+                p.2 = p.2.max(v.bits);
+                p.3.push(point);
+            }
+            None => budgets.push((b, v.bits, v.bits, vec![point])),
+        }
+    }
+    if budgets.is_empty() {
         ctx.line(format!(
             "*Pareto plot for {family} ({x_label}): no points ({NEEDS_ADAPTER} for the error).*"
         ));
         ctx.line("");
         return Ok(());
     }
+    budgets.sort_by_key(|p| p.0);
+    let several = budgets.len() > 1;
+    let panels = budgets
+        .into_iter()
+        .map(|(_, lo, hi, points)| Panel {
+            title: match (lo == hi, several) {
+                (_, false) if hi == 0 => "every variant (f32 input, no stored code)".into(),
+                (true, true) => format!("{lo}-bit codes"),
+                (false, true) => format!("{lo}–{hi}-bit codes (they compete)"),
+                (true, false) => format!("every variant: {lo}-bit codes"),
+                (false, false) => format!("every variant: {lo}–{hi}-bit codes"),
+            },
+            points,
+        })
+        .collect();
     let chart = Chart::Scatter(Scatter {
         title: format!("Max error against cost: {family}"),
         x_label: x_label.into(),
         y_label: format!("max error ({unit}, log scale)"),
-        points,
+        panels,
+        x_ticks: None,
     });
     // Named after the family, so a family's file keeps its name as others are added.
     let slug: String = family

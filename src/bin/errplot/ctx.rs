@@ -151,6 +151,18 @@ impl Ctx {
     /// Draw `chart` as `stem.svg` + `stem.png` and embed the PNG in the report under `alt`.
     pub fn chart(&mut self, chart: &Chart, stem: &str, alt: &str) -> Result<(), String> {
         let svg = plot::save(chart, &self.opts.out, stem)?;
+        // A figure that clips its text, draws two series alike or shows nothing fails the run.
+        let text = std::fs::read_to_string(&svg).map_err(|e| format!("{}: {e}", svg.display()))?;
+        let problems: Vec<String> = crate::layout::chart_problems(chart)
+            .into_iter()
+            .chain(crate::layout::svg_problems(&text))
+            .collect();
+        if !problems.is_empty() {
+            return Err(format!(
+                "figure {stem} fails its layout check:\n  {}",
+                problems.join("\n  ")
+            ));
+        }
         self.written.push(svg);
         self.written.push(self.opts.out.join(format!("{stem}.png")));
         self.line(format!("![{alt}]({stem}.png) ([SVG]({stem}.svg))"));

@@ -4,6 +4,7 @@
 //!
 //! ```text
 //! cargo run --release --all-features --bin errplot -- [--out DIR] [--quick | --full] [--exhaustive32]
+//! cargo run --release --all-features --bin errplot -- --check DIR   # measure written SVGs
 //! ```
 //! Three tiers ([`ctx::Tier`]): `--quick` (CI's smoke run), the default (every section sized for
 //! a few minutes on two cores: long sweeps sampled, no timing on a software adapter) and
@@ -14,7 +15,8 @@
 //! One file per section. A new module joins the report with:
 //! 1. a file here with `pub fn section(ctx: &mut Ctx) -> Result<(), String>` that runs its sweeps
 //!    (from `src/sweep/<topic>`), writes Markdown (`ctx.line`), CSV (`ctx.csv`) and charts
-//!    (`ctx.chart` with a `plot::Chart`), marking adapter-only cells `NEEDS_ADAPTER` when
+//!    (`ctx.chart` with a `plot::Chart`; it fails the run on a figure that fails [`layout`]'s
+//!    checks), marking adapter-only cells `NEEDS_ADAPTER` when
 //!    `ctx.gpu()` is `None`;
 //! 2. one line in [`MEASURING`] (the sections that run side by side before the cost table);
 //! 3. one `ctx.variants.push(variant::Variant { .. })` per encoding variant (its error, the WGSL and
@@ -27,10 +29,13 @@ mod ctx;
 mod depth24;
 mod depth_resolution;
 mod files;
+mod fronts;
+mod layout;
 mod linear_depth;
 mod lpp;
 mod normal;
 mod peers;
+mod pick;
 mod plot;
 mod roughness;
 mod roughness_ggx;
@@ -83,9 +88,13 @@ fn parse_args() -> Result<Options, String> {
             "--quick" => o.tier = Tier::Quick,
             "--full" => o.tier = Tier::Full,
             "--exhaustive32" => o.exhaustive32 = true,
+            "--check" => {
+                let dir = PathBuf::from(args.next().ok_or("--check needs a directory")?);
+                std::process::exit(check(&dir));
+            }
             "-h" | "--help" => {
                 println!(
-                    "usage: errplot [--out DIR] [--quick | --full] [--exhaustive32]\n\n\
+                    "usage: errplot [--out DIR] [--quick | --full] [--exhaustive32] | --check DIR\n\n\
                      Writes report.md, CSV files and SVG/PNG plots into DIR (default errplot-out).\n\
                      Three tiers:\n\
                      \x20 --quick: CI's smoke run (notebooks too): fewer cases, one codec per kind \
@@ -95,6 +104,8 @@ fn parse_args() -> Result<Options, String> {
                      \x20 --full: every sweep at full size, every codec under every policy, every \
                      variant timed (lavapipe too): the report's published figures.\n\
                      --exhaustive32: also decode all 2^32 codes of oct32 and xy fp16 (~15 min on lavapipe).\n\
+                     --check DIR: measure every SVG in DIR (text and boxes inside the image; \
+                     errplot checks each figure as it writes it) and exit 1 on a problem.\n\
                      PREPASS_ADAPTER=NAME picks an adapter by name; WGPU_BACKEND restricts backends."
                 );
                 std::process::exit(0);
@@ -103,6 +114,31 @@ fn parse_args() -> Result<Options, String> {
         }
     }
     Ok(o)
+}
+
+/// `errplot --check DIR`: every SVG in DIR measured for text and boxes outside the image
+/// (the check each figure passes as errplot writes it, for figures written before).
+fn check(dir: &std::path::Path) -> i32 {
+    if let Err(e) = plot::init() {
+        eprintln!("errplot: {e}");
+        return 1;
+    }
+    match layout::check_dir(dir) {
+        Ok((files, problems)) => {
+            for p in &problems {
+                println!("{p}");
+            }
+            println!(
+                "errplot --check: {files} SVG files, {} problems",
+                problems.len()
+            );
+            i32::from(!problems.is_empty() || files == 0)
+        }
+        Err(e) => {
+            eprintln!("errplot: {e}");
+            1
+        }
+    }
 }
 
 fn cpu_name() -> String {

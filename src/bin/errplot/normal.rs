@@ -4,7 +4,7 @@
 
 use crate::ctx::{Ctx, num};
 use crate::peers;
-use crate::plot::{Bin, Chart, ErrorImage, Histogram};
+use crate::plot::{Bin, Chart, ErrorImage, HistSeries, Histogram};
 use crate::variant::{TimedArg, Variant, Wgsl, twin_timer};
 use glam::Vec3;
 use prepass::precision::metrics::{ErrorStats, angle_degrees, widen3};
@@ -92,6 +92,7 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     ctx.line("|---|---|---|---|---|");
     let mut csv = String::from("encoding,bits,directions,where,mean_deg,max_deg,rms_deg\n");
     let mut hist = Vec::new();
+    let mut maxima = Vec::new();
     for (codec, e, place) in &measured {
         let upper_only = codec.hemisphere;
         let mut s = ErrorStats::default();
@@ -118,11 +119,13 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             s.max,
             s.rms()
         );
-        // Histogram: 40 log-spaced bins from 1e-5° to 10°.
-        let mut bins: Vec<Bin> = (0..40)
+        // Histogram: ten log-spaced bins a decade from 1e-5° to 10° (smaller errors counted in
+        // the first).
+        const BINS: usize = 60;
+        let mut bins: Vec<Bin> = (0..BINS)
             .map(|k| {
-                let lo = 10f64.powf(-5.0 + 6.0 * k as f64 / 40.0);
-                let hi = 10f64.powf(-5.0 + 6.0 * (k + 1) as f64 / 40.0);
+                let lo = 10f64.powf(-5.0 + 6.0 * k as f64 / BINS as f64);
+                let hi = 10f64.powf(-5.0 + 6.0 * (k + 1) as f64 / BINS as f64);
                 (lo, hi, 0)
             })
             .collect();
@@ -130,24 +133,33 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
             if upper_only && d[2] < 0.0 {
                 continue;
             }
-            let k = (((err.max(1e-5)).log10() + 5.0) / 6.0 * 40.0).floor() as usize;
-            bins[k.min(39)].2 += 1;
+            let k = (((err.max(1e-5)).log10() + 5.0) / 6.0 * BINS as f64).floor() as usize;
+            bins[k.min(BINS - 1)].2 += 1;
         }
-        if ["xyz8", "oct16", "oct24", "oct32", "xy fp16"].contains(&codec.name) {
-            hist.push((codec.name.to_string(), bins));
-        }
+        maxima.push((*codec, s.max));
+        hist.push(HistSeries {
+            label: format!(
+                "{} ({} bits{})",
+                codec.name,
+                codec.bits,
+                if upper_only { ", z ≥ 0" } else { "" }
+            ),
+            bins,
+            max: s.max,
+        });
     }
     ctx.line("");
     ctx.csv("normal_error.csv", &csv)?;
     ctx.chart(
         &Chart::Histogram(Histogram {
-            title: format!("Normal encodings: round-trip error histogram ({n} directions)"),
-            x_label: "angular error (degrees, log scale)".into(),
+            title: format!("Normal encodings: round-trip error, every encoding ({n} directions)"),
+            x_label: "angular error (degrees, log scale; red: the largest)".into(),
             series: hist,
         }),
         "normal_error_histogram",
         "normal encoding error histogram",
     )?;
+    crate::pick::figure(ctx, &maxima, n)?;
     ctx.line(
         "Error over the sphere, drawn in octahedral coordinates (centre = +z, corners = −z; \
          each cell shows the largest error of the directions in it):",

@@ -3,16 +3,15 @@
 //! Text is drawn with DejaVu Sans embedded in the binary (`font/`, Bitstream Vera licence), so
 //! PNGs render the same on a fresh machine with no fonts installed.
 
+pub use crate::fronts::Scatter;
 use plotters::coord::Shift;
 use plotters::coord::ranged1d::ValueFormatter;
 use plotters::prelude::*;
 use std::path::{Path, PathBuf};
 
 const FONT: &[u8] = include_bytes!("font/DejaVuSans.ttf");
-const FAMILY: &str = "sans-serif";
+pub const FAMILY: &str = "sans-serif";
 const SIZE: (u32, u32) = (960, 600);
-/// Width of the scatter charts' legend strip, in pixels (labels up to about 36 characters).
-const LEGEND_WIDTH: i32 = 290;
 
 /// Register the embedded font with plotters; call once before drawing.
 pub fn init() -> Result<(), String> {
@@ -20,9 +19,10 @@ pub fn init() -> Result<(), String> {
         .map_err(|_| "the embedded font could not be read".to_string())
 }
 
-/// Distinct colours for series (colour-blind-friendly Okabe–Ito order, then greys).
-fn colour(k: usize) -> RGBColor {
-    const C: [RGBColor; 8] = [
+/// Distinct colours for series: the colour-blind-friendly Okabe–Ito eight, then four of Paul
+/// Tol's muted scheme.
+pub fn colour(k: usize) -> RGBColor {
+    const C: [RGBColor; 12] = [
         RGBColor(0, 114, 178),
         RGBColor(213, 94, 0),
         RGBColor(0, 158, 115),
@@ -31,6 +31,10 @@ fn colour(k: usize) -> RGBColor {
         RGBColor(86, 180, 233),
         RGBColor(0, 0, 0),
         RGBColor(120, 120, 120),
+        RGBColor(136, 34, 85),
+        RGBColor(153, 153, 51),
+        RGBColor(51, 34, 136),
+        RGBColor(68, 170, 153),
     ];
     C[k % C.len()]
 }
@@ -55,33 +59,6 @@ pub struct LineChart {
     pub y_label: String,
     /// The lines.
     pub series: Vec<Series>,
-}
-
-/// One point of a scatter chart, with a label drawn beside it.
-#[derive(Clone, Debug)]
-pub struct Labelled {
-    /// A peer (a baseline from another project): drawn as a cross, shipped points as filled
-    /// shapes.
-    pub peer: bool,
-    /// Text beside the point.
-    pub label: String,
-    /// Position.
-    pub x: f64,
-    /// Position.
-    pub y: f64,
-}
-
-/// A labelled scatter chart on log–log axes (the Pareto plots).
-#[derive(Clone, Debug)]
-pub struct Scatter {
-    /// Title above the chart.
-    pub title: String,
-    /// x-axis label, with units.
-    pub x_label: String,
-    /// y-axis label, with units.
-    pub y_label: String,
-    /// The points.
-    pub points: Vec<Labelled>,
 }
 
 /// A `width × height` image of values (e.g. error over the octahedral square), drawn with a
@@ -109,15 +86,27 @@ pub struct ErrorImage {
 /// One histogram bin: `(lower edge, upper edge, count)`.
 pub type Bin = (f64, f64, u64);
 
-/// A histogram with a logarithmic count axis.
+/// One panel of a histogram: its bins and its largest value, marked.
+#[derive(Clone, Debug)]
+pub struct HistSeries {
+    /// Panel heading.
+    pub label: String,
+    /// Bins on a log x axis (positive edges).
+    pub bins: Vec<Bin>,
+    /// The largest value counted (marked with a line and its value).
+    pub max: f64,
+}
+
+/// Histograms as small multiples (one panel per series, three across) on a shared log x axis,
+/// each panel's y the share of the values in each bin.
 #[derive(Clone, Debug)]
 pub struct Histogram {
-    /// Title above the chart.
+    /// Title above the panels.
     pub title: String,
-    /// x-axis label, with units.
+    /// x-axis label, with units (once, under the panels).
     pub x_label: String,
-    /// Named series of bins.
-    pub series: Vec<(String, Vec<Bin>)>,
+    /// The panels.
+    pub series: Vec<HistSeries>,
 }
 
 /// Anything the report draws.
@@ -137,24 +126,81 @@ pub enum Chart {
 pub fn save(chart: &Chart, dir: &Path, stem: &str) -> Result<PathBuf, String> {
     let svg = dir.join(format!("{stem}.svg"));
     let png = dir.join(format!("{stem}.png"));
+    let size = size(chart);
     {
-        let root = SVGBackend::new(&svg, SIZE).into_drawing_area();
+        let root = SVGBackend::new(&svg, size).into_drawing_area();
         render(chart, &root)?;
         root.present().map_err(|e| e.to_string())?;
     }
     {
-        let root = BitMapBackend::new(&png, SIZE).into_drawing_area();
+        let root = BitMapBackend::new(&png, size).into_drawing_area();
         render(chart, &root)?;
         root.present().map_err(|e| e.to_string())?;
     }
     Ok(svg)
 }
 
+/// Columns of the histograms' small multiples.
+const HIST_COLUMNS: usize = 3;
+/// Height of one histogram panel, in pixels.
+const HIST_PANEL: u32 = 200;
+
+/// A chart's image size in pixels: panelled charts grow with their panels.
+fn size(chart: &Chart) -> (u32, u32) {
+    match chart {
+        Chart::Scatter(c) => crate::fronts::size(c.panels.len()),
+        Chart::Histogram(c) => (
+            SIZE.0,
+            50 + 50 + HIST_PANEL * c.series.len().div_ceil(HIST_COLUMNS).max(1) as u32,
+        ),
+        _ => SIZE,
+    }
+}
+
+/// The largest font size at most `size` (down to 9) at which `text` is at most `width`
+/// pixels wide on `area`'s backend: titles and axis labels shrink to fit rather than run off.
+pub fn fitted<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    text: &str,
+    size: f64,
+    width: i32,
+) -> f64 {
+    let mut s = size;
+    while s > 9.0 {
+        match area.estimate_text_size(text, &(FAMILY, s).into_text_style(area)) {
+            Ok((w, _)) if w as i32 > width => s -= 0.5,
+            _ => break,
+        }
+    }
+    s
+}
+
+/// A chart builder on `area` under `title` (at most `size`, fitted to the area's width), with
+/// `[margin, right margin, x label area, y label area]` in pixels.
+pub fn titled<'a, DB: DrawingBackend>(
+    area: &'a DrawingArea<DB, Shift>,
+    title: &str,
+    size: f64,
+    [margin, right, x_area, y_area]: [u32; 4],
+) -> ChartBuilder<'a, 'static, DB> {
+    let w = area.dim_in_pixel().0 as i32;
+    let mut b = ChartBuilder::on(area);
+    b.caption(
+        title,
+        (FAMILY, fitted(area, title, size, w - 20 - right as i32)),
+    )
+    .margin(margin)
+    .margin_right(right)
+    .x_label_area_size(x_area)
+    .y_label_area_size(y_area);
+    b
+}
+
 fn render<DB: DrawingBackend>(chart: &Chart, root: &DrawingArea<DB, Shift>) -> Result<(), String> {
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     match chart {
         Chart::Lines(c) => lines(c, root),
-        Chart::Scatter(c) => scatter(c, root),
+        Chart::Scatter(c) => crate::fronts::draw(c, root),
         Chart::Image(c) => image(c, root),
         Chart::Histogram(c) => histogram(c, root),
     }
@@ -162,7 +208,7 @@ fn render<DB: DrawingBackend>(chart: &Chart, root: &DrawingArea<DB, Shift>) -> R
 }
 
 /// Tick text: plain numbers between 0.001 and 10^5, scientific outside.
-fn tick(v: &f64) -> String {
+pub fn tick(v: &f64) -> String {
     let a = v.abs();
     if a == 0.0 {
         "0".into()
@@ -175,7 +221,7 @@ fn tick(v: &f64) -> String {
 }
 
 /// A log range around the positive values with a margin of `pad` (a factor) on both sides.
-fn padded(values: impl Iterator<Item = f64>, pad: f64) -> (f64, f64) {
+pub fn padded(values: impl Iterator<Item = f64>, pad: f64) -> (f64, f64) {
     let (lo, hi) = values
         .filter(|v| v.is_finite() && *v > 0.0)
         .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
@@ -189,7 +235,7 @@ fn padded(values: impl Iterator<Item = f64>, pad: f64) -> (f64, f64) {
 
 /// Ticks at 1, 2 and 5 times powers of ten inside `[lo, hi]` (powers of ten only when that
 /// would give more than a dozen), so a log axis narrower than a decade still has labels.
-fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
+pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
     let all: Vec<f64> = (lo.log10().floor() as i32..=hi.log10().ceil() as i32)
         .flat_map(|e| [1.0, 2.0, 5.0].map(|m| m * 10f64.powi(e)))
         .filter(|v| (lo..=hi).contains(v))
@@ -203,7 +249,7 @@ fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
     }
 }
 
-type DrawResult<DB> = Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
+pub type DrawResult<DB> = Result<(), DrawingAreaErrorKind<<DB as DrawingBackend>::ErrorType>>;
 
 /// The axes, labels and grid of a chart whose both axes are logarithmic, ticks in [`tick`]'s form.
 fn log_log_mesh<DB: DrawingBackend, X, Y>(
@@ -241,22 +287,29 @@ fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo, hi)
 }
 
+/// The `k`-th of `n` lines' palette index and width: earlier series are drawn wider, so a
+/// later one lying exactly on top leaves them visible.
+pub fn line_style(k: usize, n: usize) -> (usize, u32) {
+    (k % 12, (2 + (n - 1 - k) as u32).min(7))
+}
+
 fn lines<DB: DrawingBackend>(c: &LineChart, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
     let xs = decades(c.series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
     let ys = decades(c.series.iter().flat_map(|s| s.points.iter().map(|p| p.1)));
-    let mut chart = ChartBuilder::on(root)
-        .caption(&c.title, (FAMILY, 22))
-        .margin(14)
-        .margin_right(40)
-        .x_label_area_size(50)
-        .y_label_area_size(80)
-        .build_cartesian_2d((xs.0..xs.1).log_scale(), (ys.0..ys.1).log_scale())?;
+    // 1-2-5 ticks where an axis spans few decades (one label on a decade-wide axis before).
+    let mut chart = titled(root, &c.title, 22.0, [14, 40, 50, 80]).build_cartesian_2d(
+        (xs.0..xs.1)
+            .log_scale()
+            .with_key_points(log_ticks(xs.0, xs.1)),
+        (ys.0..ys.1)
+            .log_scale()
+            .with_key_points(log_ticks(ys.0, ys.1)),
+    )?;
     log_log_mesh(&mut chart, &c.x_label, &c.y_label)?;
     let n = c.series.len();
     for (k, s) in c.series.iter().enumerate() {
-        let col = colour(k);
-        // Earlier series are drawn wider, so a later one lying exactly on top leaves them visible.
-        let width = (2 + (n - 1 - k) as u32).min(7);
+        let (ci, width) = line_style(k, n);
+        let col = colour(ci);
         let pts: Vec<(f64, f64)> = s
             .points
             .iter()
@@ -277,155 +330,6 @@ fn lines<DB: DrawingBackend>(c: &LineChart, root: &DrawingArea<DB, Shift>) -> Dr
         .draw()?;
     Ok(())
 }
-
-fn scatter<DB: DrawingBackend>(c: &Scatter, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
-    let xs = padded(c.points.iter().map(|p| p.x), 1.5);
-    let ys = decades(c.points.iter().map(|p| p.y));
-    // The legend gets its own strip on the right: drawn over the plot it hid points.
-    let (plot, key) = root.split_horizontally(root.dim_in_pixel().0 as i32 - LEGEND_WIDTH);
-    let mut chart = ChartBuilder::on(&plot)
-        .caption(&c.title, (FAMILY, 22))
-        .margin(14)
-        .margin_right(40)
-        .x_label_area_size(50)
-        .y_label_area_size(80)
-        .build_cartesian_2d(
-            (xs.0..xs.1)
-                .log_scale()
-                .with_key_points(log_ticks(xs.0, xs.1)),
-            (ys.0..ys.1)
-                .log_scale()
-                .with_key_points(log_ticks(ys.0, ys.1)),
-        )?;
-    log_log_mesh(&mut chart, &c.x_label, &c.y_label)?;
-    // Every point has its own (colour, marker) pair: shipped points are filled shapes, the
-    // colour cycling fastest and the shape changing after each round of colours; peers are
-    // crosses (× then +), numbered separately. Variants with equal cost and error coincide,
-    // so the sizes also differ.
-    let (mut shipped, mut peers) = (0usize, 0usize);
-    let mut legend = Vec::new();
-    for p in &c.points {
-        if !(p.x > 0.0 && p.y > 0.0 && p.x.is_finite() && p.y.is_finite()) {
-            continue;
-        }
-        let k = if p.peer { &mut peers } else { &mut shipped };
-        let (col, shape) = marker_style(*k, p.peer);
-        // Sizes step down with the index, so coinciding points stay visible around each other.
-        let size = 13 - 2 * (*k % 4) as i32;
-        *k += 1;
-        chart.draw_series(std::iter::once(
-            Marker::new(shape, size, col).at((p.x, p.y)),
-        ))?;
-        legend.push((p.label.as_str(), shape, col));
-    }
-    // One line per point, in drawing order, from the top of the plotting area.
-    for (i, (label, shape, col)) in legend.into_iter().enumerate() {
-        let y = 60 + 20 * i as i32;
-        key.draw(&Marker::new(shape, 6, col).at((10, y)))?;
-        key.draw(&Text::new(label, (24, y - 8), (FAMILY, 13)))?;
-    }
-    Ok(())
-}
-
-/// Marker shapes of the scatter charts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Shape {
-    Square,
-    Circle,
-    Triangle,
-    Diamond,
-    Cross,
-    Plus,
-}
-
-/// The colour and shape of the `k`-th shipped point or the `k`-th peer: the colour cycles
-/// through the palette's eight, the shape steps after each cycle, so no two points of one chart
-/// share both (for up to 32 shipped points and 16 peers).
-fn marker_style(k: usize, peer: bool) -> (RGBColor, Shape) {
-    const SHIPPED: [Shape; 4] = [
-        Shape::Square,
-        Shape::Circle,
-        Shape::Triangle,
-        Shape::Diamond,
-    ];
-    const PEER: [Shape; 2] = [Shape::Cross, Shape::Plus];
-    let shape = if peer {
-        PEER[(k / 8) % PEER.len()]
-    } else {
-        SHIPPED[(k / 8) % SHIPPED.len()]
-    };
-    (colour(k), shape)
-}
-
-/// One marker of a scatter chart, centred on its coordinate.
-struct Marker {
-    shape: Shape,
-    size: i32,
-    colour: RGBColor,
-}
-
-impl Marker {
-    fn new(shape: Shape, size: i32, colour: RGBColor) -> Self {
-        Marker {
-            shape,
-            size,
-            colour,
-        }
-    }
-
-    /// The marker as one element type for every shape (so the chart and its legend take it
-    /// alike): a filled polygon plus two strokes; crosses have a one-pixel polygon, filled shapes
-    /// stroke their own outline.
-    fn at<C: Clone, DB: DrawingBackend>(self, at: C) -> MarkerElement<C, DB> {
-        let (s, col) = (self.size, self.colour);
-        let fill: Vec<(i32, i32)> = match self.shape {
-            Shape::Square => vec![(-s, -s), (s, -s), (s, s), (-s, s)],
-            Shape::Circle => (0..16)
-                .map(|k| {
-                    let t = f64::from(k) / 16.0 * std::f64::consts::TAU;
-                    (
-                        (f64::from(s) * t.cos()) as i32,
-                        (f64::from(s) * t.sin()) as i32,
-                    )
-                })
-                .collect(),
-            Shape::Triangle => vec![(0, -s), (s, s), (-s, s)],
-            Shape::Diamond => vec![(0, -s), (s, 0), (0, s), (-s, 0)],
-            Shape::Cross | Shape::Plus => vec![(0, 0)],
-        };
-        let (a, b) = match self.shape {
-            Shape::Cross => (vec![(-s, -s), (s, s)], vec![(-s, s), (s, -s)]),
-            Shape::Plus => (vec![(-s, 0), (s, 0)], vec![(0, -s), (0, s)]),
-            _ => {
-                let mut outline = fill.clone();
-                outline.push(fill[0]);
-                (outline, vec![(0, 0)])
-            }
-        };
-        let width = if matches!(self.shape, Shape::Cross | Shape::Plus) {
-            3
-        } else {
-            1
-        };
-        EmptyElement::at(at)
-            + Polygon::new(fill, col.filled())
-            + PathElement::new(a, col.stroke_width(width))
-            + PathElement::new(b, col.stroke_width(width))
-    }
-}
-
-/// What [`Marker::at`] builds.
-type MarkerElement<C, DB> = plotters::element::ComposedElement<
-    C,
-    DB,
-    Polygon<(i32, i32)>,
-    plotters::element::ComposedElement<
-        (i32, i32),
-        DB,
-        PathElement<(i32, i32)>,
-        PathElement<(i32, i32)>,
-    >,
->;
 
 /// Viridis-like ramp: dark blue (low) through green to yellow (high).
 fn ramp(t: f64) -> RGBColor {
@@ -457,13 +361,8 @@ fn image<DB: DrawingBackend>(c: &ErrorImage, root: &DrawingArea<DB, Shift>) -> D
         (lo - 0.5, lo + 0.5)
     };
     let [(x0, x1), (y0, y1)] = c.extent;
-    let mut chart = ChartBuilder::on(&main)
-        .caption(&c.title, (FAMILY, 22))
-        .margin(14)
-        .margin_right(40)
-        .x_label_area_size(50)
-        .y_label_area_size(70)
-        .build_cartesian_2d(x0..x1, y0..y1)?;
+    let mut chart =
+        titled(&main, &c.title, 22.0, [14, 40, 50, 70]).build_cartesian_2d(x0..x1, y0..y1)?;
     chart
         .configure_mesh()
         .disable_mesh()
@@ -512,48 +411,106 @@ fn image<DB: DrawingBackend>(c: &ErrorImage, root: &DrawingArea<DB, Shift>) -> D
 }
 
 fn histogram<DB: DrawingBackend>(c: &Histogram, root: &DrawingArea<DB, Shift>) -> DrawResult<DB> {
-    let bins = || c.series.iter().flat_map(|s| s.1.iter());
+    let (w, h) = root.dim_in_pixel();
+    let (head, rest) = root.split_vertically(50);
+    let (body, foot) = rest.split_vertically(h - 100);
+    head.draw(&Text::new(
+        c.title.clone(),
+        (14, 12),
+        (FAMILY, fitted(&head, &c.title, 22.0, w as i32 - 30)).into_font(),
+    ))?;
+    let foot_size = fitted(&foot, &c.x_label, 16.0, w as i32 - 30);
+    let foot_font = (FAMILY, foot_size).into_text_style(&foot);
+    let (fw, _) = foot.estimate_text_size(&c.x_label, &foot_font)?;
+    foot.draw(&Text::new(
+        c.x_label.clone(),
+        ((w as i32 - fw as i32) / 2, 20),
+        foot_font,
+    ))?;
+    let bins = || c.series.iter().flat_map(|s| s.bins.iter());
     let x0 = bins().map(|b| b.0).fold(f64::INFINITY, f64::min);
     let x1 = bins().map(|b| b.1).fold(f64::NEG_INFINITY, f64::max);
-    let (x0, x1) = if x0 < x1 { (x0, x1) } else { (0.0, 1.0) };
-    let top = bins().map(|b| b.2).max().unwrap_or(1).max(1) as f64;
-    let top = 10f64.powf(top.log10().ceil().max(1.0));
-    let mut chart = ChartBuilder::on(root)
-        .caption(&c.title, (FAMILY, 22))
-        .margin(14)
-        .margin_right(40)
-        .x_label_area_size(50)
-        .y_label_area_size(80)
-        .build_cartesian_2d(x0..x1, (0.5..top).log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc(&c.x_label)
-        .y_desc("count (log scale)")
-        .label_style((FAMILY, 14))
-        .axis_desc_style((FAMILY, 16))
-        .y_label_formatter(&|v| format!("{v:.0e}"))
-        .draw()?;
-    for (k, (label, series)) in c.series.iter().enumerate() {
-        let col = colour(k);
-        // Outlined steps so overlapping series stay readable.
-        let mut pts = Vec::new();
-        for &(a, b, n) in series {
-            let h = (n as f64).max(0.5);
-            pts.push((a, h));
-            pts.push((b, h));
+    let (x0, x1) = if 0.0 < x0 && x0 < x1 {
+        (x0, x1)
+    } else {
+        (1e-5, 10.0)
+    };
+    let rows = c.series.len().div_ceil(HIST_COLUMNS).max(1);
+    let panels = body.split_evenly((rows, HIST_COLUMNS));
+    for (k, (s, area)) in c.series.iter().zip(&panels).enumerate() {
+        let total: u64 = s.bins.iter().map(|b| b.2).sum::<u64>().max(1);
+        let share = |n: u64| 100.0 * n as f64 / total as f64;
+        let top = s
+            .bins
+            .iter()
+            .map(|b| share(b.2))
+            .fold(0.0, f64::max)
+            .max(1.0)
+            * 1.25;
+        let y_area = if k % HIST_COLUMNS == 0 { 52 } else { 40 };
+        let mut chart = titled(area, &s.label, 16.0, [6, 14, 24, y_area]).build_cartesian_2d(
+            (x0..x1).log_scale().with_key_points(decade_ticks(x0, x1)),
+            0.0..top,
+        )?;
+        let mut mesh = chart.configure_mesh();
+        mesh.light_line_style(WHITE)
+            .label_style((FAMILY, 12))
+            .axis_desc_style((FAMILY, 13))
+            .x_label_formatter(&tick)
+            .y_labels(4)
+            .y_label_formatter(&|v| format!("{v:.0}"));
+        if k % HIST_COLUMNS == 0 {
+            mesh.y_desc("% of directions");
         }
-        chart
-            .draw_series(LineSeries::new(pts, col.stroke_width(2)))?
-            .label(label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 24, y)], col.stroke_width(2)));
+        mesh.draw()?;
+        let col = colour(0);
+        chart.draw_series(
+            s.bins
+                .iter()
+                .filter(|b| b.2 > 0)
+                .map(|&(a, b, n)| Rectangle::new([(a, 0.0), (b, share(n))], col.mix(0.8).filled())),
+        )?;
+        if s.max > 0.0 && s.max.is_finite() {
+            let m = s.max.clamp(x0, x1);
+            chart.draw_series(LineSeries::new(
+                [(m, 0.0), (m, top)],
+                RGBColor(200, 0, 0).stroke_width(2),
+            ))?;
+            // The value beside the line, on the side with room.
+            let text = format!("max {}°", tick_sig(s.max));
+            let font = (FAMILY, 13)
+                .into_text_style(area)
+                .color(&RGBColor(200, 0, 0));
+            let (tw, _) = area.estimate_text_size(&text, &font)?;
+            let (px, py) = chart.plotting_area().get_pixel_range();
+            let (mx, _) = chart.backend_coord(&(m, top));
+            let x = if mx + 4 + tw as i32 <= px.end {
+                mx + 4
+            } else {
+                mx - 4 - tw as i32
+            };
+            root.draw(&Text::new(text, (x.max(px.start), py.start + 2), font))?;
+        }
     }
-    chart
-        .configure_series_labels()
-        .label_font((FAMILY, 14))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .draw()?;
     Ok(())
+}
+
+/// Powers of ten in `[lo, hi]`.
+fn decade_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    (lo.log10().floor() as i32..=hi.log10().ceil() as i32)
+        .map(|e| 10f64.powi(e))
+        .filter(|v| (lo * 0.999..=hi * 1.001).contains(v))
+        .collect()
+}
+
+/// A value with two significant digits (for marked maxima).
+fn tick_sig(v: f64) -> String {
+    if (1e-3..1e3).contains(&v) {
+        let digits = (1 - v.log10().floor() as i32).max(0) as usize;
+        format!("{v:.digits$}")
+    } else {
+        format!("{v:.1e}")
+    }
 }
 
 #[cfg(test)]
@@ -593,12 +550,13 @@ mod tests {
         let hist = Chart::Histogram(Histogram {
             title: "test histogram".into(),
             x_label: "error (degrees)".into(),
-            series: vec![(
-                "a".into(),
-                (0..20)
-                    .map(|k| (k as f64 * 0.1, (k + 1) as f64 * 0.1, 1u64 << k))
+            series: vec![HistSeries {
+                label: "a".into(),
+                bins: (0..20)
+                    .map(|k| ((k + 1) as f64 * 0.1, (k + 2) as f64 * 0.1, 1u64 << k))
                     .collect(),
-            )],
+                max: 2.05,
+            }],
         });
         for (chart, stem) in [(image, "image"), (hist, "hist")] {
             save(&chart, &dir, stem).unwrap();
