@@ -60,6 +60,16 @@ struct Case {
     f16_codes: bool,
 }
 
+/// An unpack builtin: operation, CTS rule, WGSL function, codes, lanes, one lane's interval.
+type Unpack<'a> = (
+    &'static str,
+    &'static str,
+    &'static str,
+    &'a [u32],
+    usize,
+    fn(u32) -> Option<Interval>,
+);
+
 fn bits(xs: &[f32]) -> Vec<u32> {
     xs.iter().map(|x| x.to_bits()).collect()
 }
@@ -172,6 +182,37 @@ fn binary(
         label: pairs
             .iter()
             .map(|(x, y)| format!("({x:e}, {y:e})"))
+            .collect(),
+        f16_codes: false,
+    }
+}
+
+fn dot_case<const N: usize>(
+    op: &'static str,
+    rule: &'static str,
+    function: &'static str,
+    a: &[[f32; N]],
+    b: &[[f32; N]],
+) -> Case {
+    Case {
+        op,
+        rule,
+        function,
+        columns: vec![
+            a.iter().flat_map(|v| bits(v)).collect(),
+            b.iter().flat_map(|v| bits(v)).collect(),
+        ],
+        n: a.len(),
+        lanes: 1,
+        want: a
+            .iter()
+            .zip(b)
+            .map(|(x, y)| cts::dot(&f64s(x), &f64s(y)))
+            .collect(),
+        label: a
+            .iter()
+            .zip(b)
+            .map(|(x, y)| format!("{x:?}·{y:?}"))
             .collect(),
         f16_codes: false,
     }
@@ -373,52 +414,22 @@ fn cases() -> Vec<Case> {
         label: v3.iter().map(|v| format!("{v:?}")).collect(),
         f16_codes: false,
     });
-    out.push(Case {
-        op: "dot (vec3)",
-        rule: "dotInterval: products correctly rounded, every summation order",
-        function: "c_dot3",
-        columns: vec![
-            v3.iter().flat_map(|v| bits(v)).collect(),
-            w3.iter().flat_map(|v| bits(v)).collect(),
-        ],
-        n: v3.len(),
-        lanes: 1,
-        want: v3
-            .iter()
-            .zip(&w3)
-            .map(|(a, b)| cts::dot(&f64s(a), &f64s(b)))
-            .collect(),
-        label: v3
-            .iter()
-            .zip(&w3)
-            .map(|(a, b)| format!("{a:?}·{b:?}"))
-            .collect(),
-        f16_codes: false,
-    });
+    out.push(dot_case(
+        "dot (vec3)",
+        "dotInterval: products correctly rounded, every summation order",
+        "c_dot3",
+        &v3,
+        &w3,
+    ));
     let v2: Vec<[f32; 2]> = v3.iter().map(|v| [v[0], v[1]]).collect();
     let w2: Vec<[f32; 2]> = w3.iter().map(|v| [v[0], v[2]]).collect();
-    out.push(Case {
-        op: "dot (vec2)",
-        rule: "dotInterval: products correctly rounded, then added",
-        function: "c_dot2",
-        columns: vec![
-            v2.iter().flat_map(|v| bits(v)).collect(),
-            w2.iter().flat_map(|v| bits(v)).collect(),
-        ],
-        n: v2.len(),
-        lanes: 1,
-        want: v2
-            .iter()
-            .zip(&w2)
-            .map(|(a, b)| cts::dot(&f64s(a), &f64s(b)))
-            .collect(),
-        label: v2
-            .iter()
-            .zip(&w2)
-            .map(|(a, b)| format!("{a:?}·{b:?}"))
-            .collect(),
-        f16_codes: false,
-    });
+    out.push(dot_case(
+        "dot (vec2)",
+        "dotInterval: products correctly rounded, then added",
+        "c_dot2",
+        &v2,
+        &w2,
+    ));
     let ms: Vec<[[f32; 3]; 3]> = (0..32).map(|i| [v3[i], w3[i], v3[63 - i]]).collect();
     let vs: Vec<[f32; 3]> = (0..32).map(|i| w3[63 - i]).collect();
     out.push(Case {
@@ -450,59 +461,55 @@ fn cases() -> Vec<Case> {
 
     // Unpacks: every code of every lane.
     let b8: Vec<u32> = (0..256u32).map(|v| v * 0x0101_0101).collect();
-    out.push(Case {
-        op: "unpack4x8unorm",
-        rule: "unpack4x8unormInterval: ulpInterval(v / 255, 3)",
-        function: "c_unpack4x8unorm",
-        columns: vec![b8.clone()],
-        n: 256,
-        lanes: 4,
-        want: (0..256u32)
-            .flat_map(|v| [cts::unpack_unorm8(v as u8); 4])
-            .collect(),
-        label: (0..256).map(|v| format!("byte {v}")).collect(),
-        f16_codes: false,
-    });
-    out.push(Case {
-        op: "unpack4x8snorm",
-        rule: "unpack4x8snormInterval: ulpInterval(max(v / 127, −1), 3)",
-        function: "c_unpack4x8snorm",
-        columns: vec![b8],
-        n: 256,
-        lanes: 4,
-        want: (0..256u32)
-            .flat_map(|v| [cts::unpack_snorm8(v as u8 as i8); 4])
-            .collect(),
-        label: (0..256).map(|v| format!("byte {v}")).collect(),
-        f16_codes: false,
-    });
     let w16: Vec<u32> = (0..65536u32).map(|v| v | (v << 16)).collect();
-    out.push(Case {
-        op: "unpack2x16unorm",
-        rule: "unpack2x16unormInterval: ulpInterval(v / 65535, 3)",
-        function: "c_unpack2x16unorm",
-        columns: vec![w16.clone()],
-        n: 65536,
-        lanes: 2,
-        want: (0..65536u32)
-            .flat_map(|v| [cts::unpack_unorm16(v as u16); 2])
-            .collect(),
-        label: (0..65536).map(|v| format!("code {v}")).collect(),
-        f16_codes: false,
-    });
-    out.push(Case {
-        op: "unpack2x16snorm",
-        rule: "unpack2x16snormInterval: ulpInterval(max(v / 32767, −1), 3)",
-        function: "c_unpack2x16snorm",
-        columns: vec![w16],
-        n: 65536,
-        lanes: 2,
-        want: (0..65536u32)
-            .flat_map(|v| [cts::unpack_snorm16(v as u16 as i16); 2])
-            .collect(),
-        label: (0..65536).map(|v| format!("code {v}")).collect(),
-        f16_codes: false,
-    });
+    let unpacks: [Unpack<'_>; 4] = [
+        (
+            "unpack4x8unorm",
+            "unpack4x8unormInterval: ulpInterval(v / 255, 3)",
+            "c_unpack4x8unorm",
+            &b8,
+            4,
+            |v| cts::unpack_unorm8(v as u8),
+        ),
+        (
+            "unpack4x8snorm",
+            "unpack4x8snormInterval: ulpInterval(max(v / 127, −1), 3)",
+            "c_unpack4x8snorm",
+            &b8,
+            4,
+            |v| cts::unpack_snorm8(v as u8 as i8),
+        ),
+        (
+            "unpack2x16unorm",
+            "unpack2x16unormInterval: ulpInterval(v / 65535, 3)",
+            "c_unpack2x16unorm",
+            &w16,
+            2,
+            |v| cts::unpack_unorm16(v as u16),
+        ),
+        (
+            "unpack2x16snorm",
+            "unpack2x16snormInterval: ulpInterval(max(v / 32767, −1), 3)",
+            "c_unpack2x16snorm",
+            &w16,
+            2,
+            |v| cts::unpack_snorm16(v as u16 as i16),
+        ),
+    ];
+    for (op, rule, function, codes, lanes, lane) in unpacks {
+        let n = codes.len() as u32;
+        out.push(Case {
+            op,
+            rule,
+            function,
+            columns: vec![codes.to_vec()],
+            n: codes.len(),
+            lanes,
+            want: (0..n).flat_map(|v| vec![lane(v); lanes]).collect(),
+            label: (0..n).map(|v| format!("code {v}")).collect(),
+            f16_codes: false,
+        });
+    }
 
     // pack2x16float: lanes between adjacent normal f16s; either neighbour is accepted.
     let mut lanes: Vec<[f32; 2]> = Vec::new();

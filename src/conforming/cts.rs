@@ -431,8 +431,9 @@ pub fn abs(x: f64) -> Option<Interval> {
     unary(Some(Interval::point(x)), |m| correctly_rounded(m.abs()))
 }
 
-/// `min(x, y)` (`MinIntervalOp`): either input where both are subnormal.
-pub fn min(x: f64, y: f64) -> Option<Interval> {
+/// `min` or `max` (`pick`) of two f32: correctly rounded, either input where both are
+/// subnormal (`MinIntervalOp`, `MaxIntervalOp`).
+fn min_or_max(x: f64, y: f64, pick: fn(f64, f64) -> f64) -> Option<Interval> {
     binary(
         Some(Interval::point(x)),
         Some(Interval::point(y)),
@@ -442,27 +443,20 @@ pub fn min(x: f64, y: f64) -> Option<Interval> {
                     .zip(correctly_rounded(b))
                     .map(|(p, q)| p.span(q))
             } else {
-                correctly_rounded(a.min(b))
+                correctly_rounded(pick(a, b))
             }
         },
     )
 }
 
-/// `max(x, y)` (`MaxIntervalOp`).
+/// `min(x, y)` (`MinIntervalOp`): either input where both are subnormal.
+pub fn min(x: f64, y: f64) -> Option<Interval> {
+    min_or_max(x, y, f64::min)
+}
+
+/// `max(x, y)` (`MaxIntervalOp`): either input where both are subnormal.
 pub fn max(x: f64, y: f64) -> Option<Interval> {
-    binary(
-        Some(Interval::point(x)),
-        Some(Interval::point(y)),
-        |a, b| {
-            if is_subnormal(a) && is_subnormal(b) {
-                correctly_rounded(a)
-                    .zip(correctly_rounded(b))
-                    .map(|(p, q)| p.span(q))
-            } else {
-                correctly_rounded(a.max(b))
-            }
-        },
-    )
+    min_or_max(x, y, f64::max)
 }
 
 /// `fract(x)` (`FractIntervalOp`): `x − floor(x)`, widened to the float below 1 where it
