@@ -183,6 +183,7 @@ pub mod search;
 #[cfg_attr(docsrs, doc(cfg(feature = "harness")))]
 pub use probe::{PROBE_FUNCTION, PROBE_WGSL, check_host, check_host_with, probe_source};
 
+pub mod cts;
 pub mod interval;
 
 use std::collections::BTreeMap;
