@@ -616,6 +616,162 @@ fn unity_layout_is_oct24_in_unitys_bytes() {
     }
 }
 
+/// HDRP's normal-buffer reader, transcribed from Unity-Technologies/Graphics
+/// (`com.unity.render-pipelines.core/ShaderLibrary/Packing.hlsl`: `Unpack888ToFloat2` on the
+/// sampled unorm8 channels — `(uint3)(c·255.5)`, byte 2's low nibble the high bits of x, its
+/// high nibble those of y, `/4095` — then `·2 − 1` and `UnpackNormalOctQuadEncode`: `z = 1 −
+/// |x| − |y|`, `t = max(−z, 0)`, `x −= t` where `x ≥ 0` else `+= t`, likewise `y`), the channel
+/// step in f32 as the engine's, the rest in f64; the result unnormalised (its signs are what the
+/// seam tests read). Written from Unity's source, not from `oct::unity_word`.
+fn unity_read(texel: u32) -> [f64; 3] {
+    let i = [0, 8, 16].map(|k| ((((texel >> k) & 0xff) as f32 / 255.0) * 255.5) as u32);
+    let (hi, lo) = (i[2] >> 4, i[2] & 15);
+    let f = [i[0] | (lo << 8), i[1] | (hi << 8)].map(|k| f64::from(k) / 4095.0 * 2.0 - 1.0);
+    let z = 1.0 - f[0].abs() - f[1].abs();
+    let t = (-z).max(0.0);
+    let unfold = |a: f64| if a >= 0.0 { a - t } else { a + t };
+    [unfold(f[0]), unfold(f[1]), z]
+}
+
+/// The bytes of Unity's `PackFloat2To888` (`Packing.hlsl`) from its two 12-bit integers: the
+/// low 8 bits of each in bytes 0 and 1, then `hi.x | hi.y << 4`. Written from Unity's source.
+fn unity_pack888(i: [u32; 2]) -> u32 {
+    (i[0] & 255) | ((i[1] & 255) << 8) | (((i[0] >> 8) | ((i[1] >> 8) << 4)) << 16)
+}
+
+/// The seam directions: 200k normals with `|z| ≤ 9e-4` (z evenly spaced, azimuth by the golden
+/// angle), then 2^18 azimuths at each of `z = ±1/1024` (HDRP's floor), `±(1 + 2^-12)/1024` (the
+/// smallest |z| the floor leaves alone, where a code is likeliest to cross the equator), `±2^-12`
+/// and `±0`, and the axes and diagonals with `z = ±0`.
+fn seam_directions() -> (Vec<[f32; 3]>, usize) {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    let at = |phi: f64, z: f64| {
+        let r = (1.0 - z * z).sqrt();
+        [(r * phi.cos()) as f32, (r * phi.sin()) as f32, z as f32]
+    };
+    let n = 200_000;
+    let mut v: Vec<[f32; 3]> = (0..n)
+        .map(|i| {
+            at(
+                i as f64 * golden,
+                9e-4 * (2.0 * (i as f64 + 0.5) / n as f64 - 1.0),
+            )
+        })
+        .collect();
+    let k = 1 << 18;
+    for z in [
+        1.0 / 1024.0,
+        (1.0 + 1.0 / 4096.0) / 1024.0,
+        1.0 / 4096.0,
+        0.0,
+    ] {
+        for sign in [1.0, -1.0] {
+            v.extend((0..k).map(|i| {
+                at(
+                    std::f64::consts::TAU * (i as f64 + 0.25) / k as f64,
+                    sign * z,
+                )
+            }));
+        }
+    }
+    for (x, y) in [
+        (1.0, 0.0),
+        (0.0, 1.0),
+        (-1.0, 0.0),
+        (0.0, -1.0),
+        (1.0, 1.0),
+        (-1.0, 1.0),
+    ] {
+        for z in [0.0, -0.0] {
+            v.push([x, y, z]);
+        }
+    }
+    (v, n)
+}
+
+/// z's sign as HDRP's writer keeps it (`CopySign`: −0 counts as +).
+fn hdrp_sign(z: f32) -> bool {
+    z >= 0.0
+}
+
+/// HDRP's seam (issue 60, finding 1): HDRP's writer raises `|z|` to 1/1024 so that z's sign
+/// survives; `encode_normal_oct24_unity` (URP's bytes: no floor) does not, and
+/// `encode_normal_oct24_hdrp` does. On the quoted input the old writer's bytes read (by Unity's
+/// reader, transcribed above) with z > 0 and HDRP's and the new writer's with z < 0; over the seam
+/// directions the new writer, on the adapter and as twin, never flips z's sign, where the old one
+/// does (the counts are printed); the adapter's codes are the twin's.
+#[test]
+fn hdrp_writer_keeps_z_sign() {
+    use prepass::harness::Arg;
+    use prepass::wgsl::NORMAL_OCT;
+    let q = [0.977_181_43, 0.212_406_22, -0.0001];
+    let before = oct::encode_normal_oct24_unity(glam::Vec3::from(q));
+    let hdrp_own = unity_engine_encode(q);
+    let after = oct::encode_normal_oct24_hdrp(glam::Vec3::from(q));
+    eprintln!(
+        "n = {q:?}: encode_normal_oct24_unity {before:#x} (Unity reads z = {:+.6}), HDRP's writer \
+         {hdrp_own:#x} (z = {:+.6}), encode_normal_oct24_hdrp {after:#x} (z = {:+.6})",
+        unity_read(before)[2],
+        unity_read(hdrp_own)[2],
+        unity_read(after)[2]
+    );
+    assert_eq!(
+        (before, hdrp_own),
+        (0x9e6d91, 0x9e6e92),
+        "the issue's quoted bytes"
+    );
+    assert!(unity_read(before)[2] > 0.0 && unity_read(hdrp_own)[2] < 0.0);
+    assert!(unity_read(after)[2] < 0.0, "{after:#x} reads with z >= 0");
+
+    let (inputs, sampled) = seam_directions();
+    let n = inputs.len() as u64;
+    let got = common::run_kernel(
+        NORMAL_OCT,
+        "encode_normal_oct24_hdrp",
+        &[Arg::column(&inputs)],
+        n,
+    )
+    .into_words();
+    let flips = |code: &dyn Fn(usize) -> u32, range: std::ops::Range<usize>| {
+        range
+            .filter(|&i| (unity_read(code(i))[2] > 0.0) != hdrp_sign(inputs[i][2]))
+            .count()
+    };
+    let twin = |i: usize| oct::encode_normal_oct24_hdrp(glam::Vec3::from(inputs[i]));
+    let unity = |i: usize| oct::encode_normal_oct24_unity(glam::Vec3::from(inputs[i]));
+    let engine = |i: usize| unity_engine_encode(inputs[i]);
+    let all = 0..inputs.len();
+    eprintln!(
+        "z's sign flipped, {sampled} normals with |z| <= 9e-4: encode_normal_oct24_unity {}, \
+         HDRP's writer {}, encode_normal_oct24_hdrp {}; all {} seam directions: {}, {}, {}",
+        flips(&unity, 0..sampled),
+        flips(&engine, 0..sampled),
+        flips(&|i| got[i], 0..sampled),
+        inputs.len(),
+        flips(&unity, all.clone()),
+        flips(&engine, all.clone()),
+        flips(&|i| got[i], all.clone()),
+    );
+    assert!(
+        flips(&unity, 0..sampled) > 0,
+        "the finding: the unfloored writer flips some"
+    );
+    assert_eq!(
+        flips(&|i| got[i], all.clone()),
+        0,
+        "adapter: z's sign flipped"
+    );
+    assert_eq!(flips(&twin, all.clone()), 0, "twin: z's sign flipped");
+    if common::evaluates_like_the_twins() {
+        let differ = all.clone().find(|&i| got[i] != twin(i));
+        assert!(
+            differ.is_none(),
+            "adapter != twin at {:?}",
+            differ.map(|i| inputs[i])
+        );
+    }
+}
+
 /// Unity's writer as its HLSL computes it (HDRP's `EncodeIntoNormalBuffer` first raises `|z|` to
 /// at least 1/1024, the sign kept as `CopySign` keeps it, −0 read as +; then
 /// `PackNormalOctQuadEncode`: `n·rcp(max(‖n‖₁, 1e-6))`, the lower half folded by
@@ -630,8 +786,7 @@ fn unity_engine_encode(n: [f32; 3]) -> u32 {
     let t = (-m[2]).clamp(0.0, 1.0);
     let fold = |a: f32| a + if a >= 0.0 { t } else { -t };
     let f = [fold(m[0]), fold(m[1])].map(|o| (o * 0.5 + 0.5).clamp(0.0, 1.0));
-    let i = f.map(|x| (x * 4095.5) as u32);
-    oct::unity_bytes(i[0] | (i[1] << 12))
+    unity_pack888(f.map(|x| (x * 4095.5) as u32))
 }
 
 /// Interop with Unity's normal buffer: (1) every one of the 2^24 byte triples reads, with
