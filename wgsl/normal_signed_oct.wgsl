@@ -146,16 +146,18 @@ fn encode_normal_signed_oct_fast(n: vec3<f32>) -> u32 {
 
 // The unit vector of a texel as O3DE's decoder reads it: the direction of (R - G, R + G - 1,
 // (2B - 1)(1 - |x| - |y|)) on R, G, B = (u, v, b)/1023, i.e. of (1023 D.x, 1023 D.y,
-// (2b - 1023) D.z): integers below 2^20, so exact in f32 (fused or not); normalised. For the
-// B the encoders write (1023, 0) the direction is D's with z's sign, and D itself is normalised
-// (so those decodes keep their bits from before issue 60). On the equator z is -0 for b < 512
-// (0 times a negative factor). Bits 30-31 are ignored.
+// (2b - 1023) D.z) (signed_oct_decode_any_b). For the B the encoders write, 1023 and 0, that is
+// D's direction with z's sign, and D itself is normalised: z negated (to -0 on the equator) for
+// B = 0 -- z >= 0, so negating is setting its sign bit, B's lowest bit (bit 20) clear moved to
+// bit 31 -- as before issue 60, so those decodes keep their bits. Bits 30-31 are ignored.
 fn decode_normal_signed_oct(p: u32) -> vec3<f32> {
     let d = signed_oct_lattice(vec2<f32>(vec2<u32>(p, p >> 10u) & vec2<u32>(0x3ffu)));
-    let b = f32((p >> 20u) & 0x3ffu);
-    let f = (b + b) - 1023.0;
-    let v = select(vec3<f32>(d.xy * 1023.0, d.z * f), vec3<f32>(d.xy, d.z * sign(f)), abs(f) == 1023.0);
-    return normalize(v);
+    let b = (p >> 20u) & 0x3ffu;
+    if (b != 0u && b != 0x3ffu) {
+        return signed_oct_decode_any_b(d, b);
+    }
+    let z = bitcast<f32>(bitcast<u32>(d.z) | ((~p & 0x100000u) << 11u));
+    return normalize(vec3<f32>(d.xy, z));
 }
 
 // Render-target form: the rgb10a2unorm channels to write, R = u/1023, G = v/1023, B = 1 for
@@ -176,4 +178,12 @@ fn decode_normal_signed_oct_unorm(c: vec4<f32>) -> vec3<f32> {
     let x = select(select(b, vec3<u32>(0x3f800000u), b >= vec3<u32>(0x3f800000u)), vec3<u32>(0u), b > vec3<u32>(0x7f800000u));
     let k = vec3<u32>(round(bitcast<vec3<f32>>(x) * 1023.0));
     return decode_normal_signed_oct(k.x | (k.y << 10u) | (k.z << 20u));
+}
+
+// O3DE's reading of a texel whose B code b is neither 0 nor 1023 (no encoder writes one, a
+// filtered or foreign texel may hold one): the direction of (1023 D.x, 1023 D.y,
+// (2b - 1023) D.z), D from the texel's R and G -- integers below 2^20, exact in f32 (fused or
+// not) -- normalised. On the equator z is -0 for b < 512 (0 times a negative factor).
+fn signed_oct_decode_any_b(d: vec3<f32>, b: u32) -> vec3<f32> {
+    return normalize(vec3<f32>(d.xy * 1023.0, d.z * (f32(b + b) - 1023.0)));
 }

@@ -157,14 +157,16 @@ pub fn encode_normal_signed_oct_fast(n: Vec3) -> u32 {
 /// unit vector; its direction is within `√2·2^-24` rad of the exact one. (Breaking fix: see the
 /// module docs.)
 pub fn decode_normal_signed_oct(p: u32) -> Vec3 {
-    let d = lattice(codes(p)).as_vec3();
-    let f = z_factor(b_code(p)) as f32;
-    let m = M as f32;
-    normalize(if f.abs() == m {
-        Vec3::new(d.x, d.y, d.z * f.signum())
-    } else {
-        Vec3::new(d.x * m, d.y * m, d.z * f)
-    })
+    let mut d = lattice(codes(p)).as_vec3();
+    let b = b_code(p);
+    if b != 0 && b != M {
+        let m = M as f32;
+        return normalize(Vec3::new(d.x * m, d.y * m, d.z * z_factor(b) as f32));
+    }
+    if b == 0 {
+        d.z = -d.z;
+    }
+    normalize(d)
 }
 
 /// The texel of a code index `k < 2^21` (R and G its low 20 bits, z > 0 where bit 20 is set):

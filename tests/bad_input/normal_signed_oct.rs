@@ -29,6 +29,10 @@ pub const WGSL_HELPERS: &[(&str, &str)] = &[
         "private to normal_signed_oct.wgsl: continuous code coordinates, behind the encoder rows",
     ),
     (
+        "signed_oct_decode_any_b",
+        "private to normal_signed_oct.wgsl: the decoder's path for B other than 0 and 1023, behind the B = 1 and B = 512 rows",
+    ),
+    (
         "signed_oct_lattice",
         "private to normal_signed_oct.wgsl: a code's integer vector, behind the decoder rows",
     ),
