@@ -772,14 +772,18 @@ fn hdrp_writer_keeps_z_sign() {
     }
 }
 
-/// Unity's writer as its HLSL computes it (HDRP's `EncodeIntoNormalBuffer` first raises `|z|` to
-/// at least 1/1024, the sign kept as `CopySign` keeps it, −0 read as +; then
-/// `PackNormalOctQuadEncode`: `n·rcp(max(‖n‖₁, 1e-6))`, the lower half folded by
-/// `t = saturate(−z)`; `saturate(o·0.5 + 0.5)`; `PackFloat2To888`'s `u32(f·4095.5)`), `rcp` taken
-/// as a correctly rounded `1/x`, in f32: the engine's own encoder, for comparison (sources:
-/// tests/baselines/peer_unity.wgsl's header).
-fn unity_engine_encode(n: [f32; 3]) -> u32 {
-    let za = n[2].abs().max(1.0 / 1024.0);
+/// Unity's writer as its HLSL computes it (`PackNormalOctQuadEncode`: `n·rcp(max(‖n‖₁, 1e-6))`,
+/// the lower half folded by `t = saturate(−z)`; `saturate(o·0.5 + 0.5)`; `PackFloat2To888`'s
+/// `u32(f·4095.5)`), `rcp` taken as a correctly rounded `1/x`, in f32; with `hdrp`, HDRP's
+/// `EncodeIntoNormalBuffer` first raises `|z|` to at least 1/1024, the sign kept as `CopySign`
+/// keeps it, −0 read as + (URP's writers, `UnityGBuffer.hlsl`, do not): the engine's own
+/// encoder (sources: tests/baselines/peer_unity.wgsl's header).
+fn unity_engine_encode_with(n: [f32; 3], hdrp: bool) -> u32 {
+    let za = if hdrp {
+        n[2].abs().max(1.0 / 1024.0)
+    } else {
+        n[2].abs()
+    };
     let n = [n[0], n[1], if n[2] >= 0.0 { za } else { -za }];
     let r = 1.0 / (n[0].abs() + n[1].abs() + n[2].abs()).max(1e-6);
     let m = n.map(|c| c * r);
@@ -789,51 +793,257 @@ fn unity_engine_encode(n: [f32; 3]) -> u32 {
     unity_pack888(f.map(|x| (x * 4095.5) as u32))
 }
 
-/// Interop with Unity's normal buffer: (1) every one of the 2^24 byte triples reads, with
-/// prepass, in the direction Unity's `Unpack888ToFloat2` + `UnpackNormalOctQuadEncode` gives it
-/// (f64, to the angle's own rounding); (2) bytes prepass's precise encoder writes, read by
-/// Unity's decoder, stay within oct24's stated round-trip bound; (3) on the same directions,
-/// Unity's own writer errs more than prepass's precise and rounding encoders (the figures are
-/// printed).
+/// HDRP's writer ([`unity_engine_encode_with`], the floor on).
+fn unity_engine_encode(n: [f32; 3]) -> u32 {
+    unity_engine_encode_with(n, true)
+}
+
+/// [`unity_read`] normalised: the direction Unity's reader gives a texel, in f64.
+fn unity_direction(texel: u32) -> [f64; 3] {
+    let v = unity_read(texel);
+    let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    v.map(|c| c / l)
+}
+
+/// Interop with Unity's normal buffer, both ways, Unity's code transcribed above
+/// ([`unity_read`], [`unity_engine_encode_with`]): (1) every one of the 2^24 byte triples decodes
+/// with `decode_normal_oct24_unity` on the adapter in the direction Unity's reader gives it, to
+/// the decoder's rounding; (2) over 2^20 Fibonacci directions, `encode_normal_oct24_unity` and
+/// `encode_normal_oct24_hdrp` on the adapter, read by Unity's reader, stay within oct24's round
+/// trip (Codec::target, 2%) and err less than URP's and HDRP's own writers; the words that differ
+/// from the engines' are counted. Publishes docs/figures.md's `interop-unity` with the seam
+/// counts of [`hdrp_writer_keeps_z_sign`]'s set.
 #[test]
 fn reads_and_writes_unitys_normal_buffer() {
-    use prepass::precision::metrics::angle_degrees;
-    let worst_read = (0..1u32 << 24)
-        .map(|p| {
-            angle_degrees(
-                oct::exact::decode(oct::unity_word(p), 12),
-                oct::exact::unity_decode(p),
-            )
-        })
+    use prepass::harness::Arg;
+    use prepass::precision::metrics::{angle_degrees, widen3};
+    use prepass::wgsl::NORMAL_OCT;
+    let texels: Vec<u32> = (0..1u32 << 24)
+        .map(|p| p | ((p * 29) & 0xff) << 24)
+        .collect();
+    let n = texels.len() as u64;
+    let got = common::run_kernel(
+        NORMAL_OCT,
+        "decode_normal_oct24_unity",
+        &[Arg::column(&texels)],
+        n,
+    );
+    let worst_read = texels
+        .iter()
+        .zip(got.as_vec3())
+        .map(|(&p, &v)| angle_degrees(widen3(v), unity_direction(p)))
         .fold(0f64, f64::max);
     assert_within!(
         worst_read,
-        1e-12,
-        "the f64 angle's own rounding (about 1e-15°), as in sweep::normal::decode_angle_deg",
-        "angle between prepass's and Unity's reading of the same bytes, degrees"
+        prepass::sweep::normal::decode_angle_deg(),
+        "sweep::normal::decode_angle_deg: the decoder's rounding of the exact direction",
+        "decode_normal_oct24_unity against Unity's reader (f64), all 2^24 texels, degrees"
     );
     let dirs = &fibonacci()[..1 << 20];
-    let err = |enc: &dyn Fn([f32; 3]) -> u32| {
+    let m = dirs.len() as u64;
+    let run = |f: &str| common::run_kernel(NORMAL_OCT, f, &[Arg::column(dirs)], m).into_words();
+    let (unity, hdrp) = (
+        run("encode_normal_oct24_unity"),
+        run("encode_normal_oct24_hdrp"),
+    );
+    let urp_own: Vec<u32> = dirs
+        .iter()
+        .map(|&v| unity_engine_encode_with(v, false))
+        .collect();
+    let hdrp_own: Vec<u32> = dirs.iter().map(|&v| unity_engine_encode(v)).collect();
+    let err = |w: &[u32]| {
         dirs.iter()
-            .map(|&v| angle_degrees(v.map(f64::from), oct::exact::unity_decode(enc(v))))
+            .zip(w)
+            .map(|(&v, &p)| angle_degrees(widen3(v), unity_direction(p)))
             .fold(0f64, f64::max)
     };
-    let precise = err(&|v| oct::encode_normal_oct24_unity(glam::Vec3::from(v)));
-    let fast = err(&|v| oct::encode_normal_oct24_unity_fast(glam::Vec3::from(v)));
-    let unity = err(&unity_engine_encode);
-    eprintln!(
-        "Unity 12:12 layout, 2^20 directions read by Unity's decoder: prepass precise max \
-         {precise:.6}°, rounding {fast:.6}°, Unity's writer (×4095.5) {unity:.6}°"
-    );
+    let differ = |a: &[u32], b: &[u32]| a.iter().zip(b).filter(|(x, y)| x != y).count();
+    let (e_unity, e_hdrp, e_urp_own, e_hdrp_own) =
+        (err(&unity), err(&hdrp), err(&urp_own), err(&hdrp_own));
+    let (d_urp, d_hdrp) = (differ(&unity, &urp_own), differ(&hdrp, &hdrp_own));
     let (_, max_t) = codec("oct24").target.unwrap();
+    // The floor moves an input at most asin(1/1024) (encode_normal_oct24_hdrp's error bound).
+    let floor_deg = (1.0f64 / 1024.0).asin().to_degrees();
+    for (name, e, own, bound) in [
+        ("_unity", e_unity, e_urp_own, max_t * 1.02),
+        ("_hdrp", e_hdrp, e_hdrp_own, max_t * 1.02 + floor_deg),
+    ] {
+        assert_within!(
+            e,
+            bound,
+            "Codec::target of oct24 (within 2% of the f64 reproduction), + asin(1/1024) for _hdrp",
+            "encode_normal_oct24{name} read by Unity's reader, max degrees"
+        );
+        assert!(
+            e < own,
+            "encode_normal_oct24{name} ({e}°) should err less than the engine's writer ({own}°)"
+        );
+    }
+    let (seam, sampled) = seam_directions();
+    let seam_flips = |enc: &dyn Fn([f32; 3]) -> u32| {
+        seam.iter()
+            .filter(|v| (unity_read(enc(**v))[2] > 0.0) != hdrp_sign(v[2]))
+            .count()
+    };
+    let flips_unity = seam_flips(&|v| oct::encode_normal_oct24_unity(glam::Vec3::from(v)));
+    let flips_hdrp = seam_flips(&|v| oct::encode_normal_oct24_hdrp(glam::Vec3::from(v)));
+    let flips_own = seam_flips(&unity_engine_encode);
+    let _ = sampled;
+    let body = format!(
+        "| form | engine | reads the engine's texels | writes |\n|---|---|---|---|\n\
+         | `decode_normal_oct24_unity` | Unity HDRP normal buffer, URP accurate G-buffer normals | exact: every 2^24 byte triple within {worst_read:.2e}° of Unity's reader (`Unpack888ToFloat2`, `UnpackNormalOctQuadEncode`) | — |\n\
+         | `encode_normal_oct24_unity` | URP (`UnityGBuffer.hlsl`, no floor) | — | prepass's code in Unity's bytes: differs from URP's writer on {d_urp} of 2^20, max {e_unity:.4}° read by Unity against URP's writer's {e_urp_own:.4}°; z's sign flipped on {flips_unity} of {} seam directions |\n\
+         | `encode_normal_oct24_hdrp` | HDRP (`EncodeIntoNormalBuffer`: `abs(z) ≥ 1/1024`) | — | prepass's code with HDRP's floor: differs from HDRP's writer on {d_hdrp} of 2^20, max {e_hdrp:.4}° against HDRP's writer's {e_hdrp_own:.4}°; z's sign flipped on {flips_hdrp} of the seam directions (HDRP's writer: {flips_own}) |\n",
+        seam.len()
+    );
+    eprintln!("{body}");
+    assert_eq!(flips_hdrp, 0);
+    common::publish_measured("docs/figures.md", "interop-unity", &body);
+}
+
+/// Bevy's deferred G-buffer (`tests/baselines/peer_bevy.wgsl`, transcribed from bevy_pbr:
+/// `render/utils.wgsl` `octahedral_encode`/`octahedral_decode`, `deferred/
+/// pbr_deferred_functions.wgsl` `pack_24bit_normal_and_flags`/`unpack_24bit_normal`).
+fn bevy_read_f64(p: u32) -> [f64; 3] {
+    // unpack_24bit_normal: k/4095 per axis; octahedral_decode: f·2 − 1, z = 1 − |x| − |y|,
+    // t = saturate(−z), xy += select(t, −t, xy ≥ 0), normalised.
+    let f = [p & 0xfff, (p >> 12) & 0xfff].map(|k| f64::from(k) / 4095.0 * 2.0 - 1.0);
+    let z = 1.0 - f[0].abs() - f[1].abs();
+    let t = (-z).clamp(0.0, 1.0);
+    let w = f.map(|a| if a >= 0.0 { a - t } else { a + t });
+    let l = (w[0] * w[0] + w[1] * w[1] + z * z).sqrt();
+    [w[0] / l, w[1] / l, z / l]
+}
+
+/// How far Bevy's f32 reader of a word may turn from the exact direction of its code, in
+/// degrees: `k/4095` within `2^-25` (values ≤ 1), `·2` exact, `− 1` one rounding (`2^-25`):
+/// `|Δf| ≤ 1.5·2^-24`; `z = (1 − |x|) − |y|` two roundings (`2^-25` each): `|Δz| ≤ 4·2^-24`;
+/// the unfold `xy ± t` one more (`2^-25`) on top of `|Δf| + |Δt|`: `|Δxy| ≤ 6·2^-24`, so
+/// `|Δv| ≤ √(2·36 + 16)·2^-24 < 9.4·2^-24` on a vector of length `≥ 1/√3`: `sin∠ ≤ 16.3·2^-24`;
+/// then its `normalize` (`decode_angle_deg`).
+fn bevy_read_deg() -> f64 {
+    (16.3 * 2f64.powi(-24)).to_degrees() + prepass::sweep::normal::decode_angle_deg()
+}
+
+/// Bevy's deferred normal word, both ways (issue 60, finding 5; Bevy's code transcribed in
+/// `tests/baselines/peer_bevy.wgsl` and [`bevy_read_f64`]):
+/// - **reads exact:** every 2^24 word (flag byte set) decodes with `decode_normal_oct24` on the
+///   adapter in the direction Bevy's reader gives it in f64, to the decoder's rounding, and
+///   within [`bevy_read_deg`] of Bevy's f32 reader on the adapter;
+/// - **writes:** over 2^20 Fibonacci directions, the adversarial set and directions with a zero
+///   component of either sign, Bevy's writer (on the adapter) and prepass's rounding and precise
+///   encoders are compared word for word; the counts and each one's max error read by Bevy's
+///   reader are printed, and prepass's precise words read by Bevy's reader err no more than
+///   Bevy's own. The issue's inputs: `(0, 0.6, −0.8)` is Bevy's (877, 4095), prepass's rounding
+///   (3218, 4095); `(0, 0, −1)` Bevy's (0, 0), prepass's (4095, 4095): one direction, two words.
+#[test]
+fn bevy_deferred_word_both_ways() {
+    use prepass::harness::Arg;
+    use prepass::precision::metrics::{angle_degrees, widen3};
+    use prepass::wgsl::NORMAL_OCT;
+    const PEER: &str = include_str!("baselines/peer_bevy.wgsl");
+    let words: Vec<u32> = (0..1u32 << 24)
+        .map(|p| p | ((p * 37) & 0xff) << 24)
+        .collect();
+    let n = words.len() as u64;
+    let ours = common::run_kernel(NORMAL_OCT, "decode_normal_oct24", &[Arg::column(&words)], n);
+    let theirs = common::run_kernel(
+        PEER,
+        "peer_bevy_gbuffer_normal_decode",
+        &[Arg::column(&words)],
+        n,
+    );
+    let (mut exact_worst, mut f32_worst) = (0f64, 0f64);
+    for (i, &p) in words.iter().enumerate() {
+        let a = widen3(ours.as_vec3()[i]);
+        exact_worst = exact_worst.max(angle_degrees(a, bevy_read_f64(p)));
+        f32_worst = f32_worst.max(angle_degrees(a, widen3(theirs.as_vec3()[i])));
+    }
     assert_within!(
-        precise,
-        max_t * 1.02,
-        "Codec::target of oct24: within 2% of the f64 reproduction",
-        "prepass's precise bytes read by Unity's decoder, max degrees"
+        exact_worst,
+        prepass::sweep::normal::decode_angle_deg(),
+        "sweep::normal::decode_angle_deg: the decoder's rounding of the exact direction",
+        "decode_normal_oct24 against Bevy's reader in f64, all 2^24 words"
     );
+    assert_within!(
+        f32_worst,
+        bevy_read_deg(),
+        "bevy_read_deg in this file: Bevy's f32 reader's arithmetic + the decoder's rounding",
+        "decode_normal_oct24 against Bevy's f32 reader on the adapter, all 2^24 words"
+    );
+    let mut dirs: Vec<[f32; 3]> = fibonacci()[..1 << 20].to_vec();
+    dirs.extend(adversarial_directions());
+    for k in 0..4096 {
+        let (s, c) = (f64::from(k) * std::f64::consts::TAU / 4096.0).sin_cos();
+        for zero in [0.0f32, -0.0] {
+            dirs.push([zero, c as f32, s as f32]);
+            dirs.push([c as f32, zero, s as f32]);
+        }
+    }
+    dirs.extend([[0.0, 0.6, -0.8], [0.0, 0.0, -1.0]]);
+    let m = dirs.len() as u64;
+    let run =
+        |src: &str, f: &str| common::run_kernel(src, f, &[Arg::column(&dirs)], m).into_words();
+    let bevy = run(PEER, "peer_bevy_gbuffer_normal_encode");
+    let fast = run(NORMAL_OCT, "encode_normal_oct24_fast");
+    let precise = run(NORMAL_OCT, "encode_normal_oct24");
+    let err = |w: &[u32]| {
+        dirs.iter()
+            .zip(w)
+            .map(|(v, &p)| angle_degrees(widen3(*v), bevy_read_f64(p)))
+            .fold(0f64, f64::max)
+    };
+    let differ = |w: &[u32]| w.iter().zip(&bevy).filter(|(a, b)| a != b).count();
+    let zero_fold = (0..dirs.len())
+        .filter(|&i| fast[i] != bevy[i] && dirs[i][2] < 0.0 && dirs[i][..2].contains(&0.0))
+        .count();
+    let (eb, ef, ep) = (err(&bevy), err(&fast), err(&precise));
+    eprintln!(
+        "Bevy's deferred word, {m} directions: prepass's rounding encoder writes another word on \
+         {} ({zero_fold} of them a zero x or y folded below the equator, the rest at or next to a half), the \
+         precise encoder on {}; read by Bevy's reader: Bevy's writer max {eb:.6}°, rounding \
+         {ef:.6}°, precise {ep:.6}°. Reader: all 2^24 words within {exact_worst:.3e}° of Bevy's f64 \
+         reading, {f32_worst:.3e}° of its f32 reader",
+        differ(&fast),
+        differ(&precise)
+    );
+    let fib = 1usize << 20;
+    let differ_fib = |w: &[u32]| (0..fib).filter(|&i| w[i] != bevy[i]).count();
+    let body = format!(
+        "| form | engine | reads the engine's texels | writes |\n|---|---|---|---|\n\
+         | `decode_normal_oct24` | Bevy deferred (`unpack_24bit_normal`, `octahedral_decode`) | exact: every 2^24 word within {exact_worst:.2e}° of Bevy's reader (f64), flags byte ignored | — |\n\
+         | `encode_normal_oct24_fast` | Bevy deferred (`octahedral_encode`, `pack_24bit_normal_and_flags`) | — | prepass's rounding: differs from Bevy's writer on {} of 2^20 ({} of all {m} inputs: {zero_fold} a zero x or y folded below the equator, where Bevy's fold sign is −1 and prepass's +1; the rest at or next to a half, where Bevy adds 0.5 and truncates and prepass rounds half to even); max {ef:.4}° read by Bevy against Bevy's writer's {eb:.4}° |\n\
+         | `encode_normal_oct24` | Bevy deferred | — | prepass's precise code: differs from Bevy's writer on {} of 2^20; max {ep:.4}° read by Bevy |\n",
+        differ_fib(&fast),
+        differ(&fast),
+        differ_fib(&precise)
+    );
+    eprintln!("{body}");
+    common::publish_measured("docs/figures.md", "interop-bevy", &body);
     assert!(
-        precise < unity && fast < unity,
-        "prepass's encoders ({precise}°, {fast}°) should err less than Unity's writer ({unity}°)"
+        ep <= eb,
+        "prepass's precise words ({ep}°) should err no more than Bevy's ({eb}°)"
     );
+    let uv = |p: u32| (p & 0xfff, p >> 12);
+    let last = dirs.len() - 2;
+    assert_eq!(
+        (uv(bevy[last]), uv(fast[last])),
+        ((877, 4095), (3218, 4095)),
+        "(0, 0.6, −0.8)"
+    );
+    assert_eq!(
+        (uv(bevy[last + 1]), uv(fast[last + 1])),
+        ((0, 0), (4095, 4095)),
+        "(0, 0, −1)"
+    );
+    for i in [last, last + 1] {
+        let apart = angle_degrees(bevy_read_f64(bevy[i]), bevy_read_f64(fast[i]));
+        assert_within!(
+            apart,
+            2.0 * codec("oct24 fast").target.unwrap().1 * 1.02,
+            "two codes of one direction, each within oct24 fast's max of it (Codec::target, 2%)",
+            "Bevy's and prepass's words for {:?}, degrees apart",
+            dirs[i]
+        );
+    }
 }

@@ -575,6 +575,14 @@ fn urp_smoothness_and_substrate_bytes_are_the_engines() {
         ggx::decode_roughness_urp8(r3),
         ggx::decode_roughness_ggx8(r3)
     );
+    let body = format!(
+        "| form | engine | reads the engine's bytes | writes |\n|---|---|---|---|\n\
+         | `decode_roughness_urp8` | URP GBuffer2 alpha (smoothness) | `(255 − b)/255`: within 2^-24 of URP's `1 − b/255` on all 256 bytes (one rounding against URP's two) | — |\n\
+         | `encode_roughness_urp8` | URP | — | the nearest byte (exact): differs from URP's target-rounded `1 − r` on {urp_diff} of {n} sampled `r` |\n\
+         | `decode_roughness_substrate8` | Unreal Substrate (`UnpackR8`) | the engine's value bit for bit on all 256 bytes (`b·(1/255)`, which differs from `b/255` on {ulp_apart}) | — |\n\
+         | `encode_roughness_substrate8` | Unreal Substrate (`PackR8`) | — | the engine's bytes bit for bit on all {n} sampled `r` (truncation: below the nearest byte on {ue_vs_nearest} of them, {uniform} of 2^20 uniform `r`) |\n"
+    );
+    common::publish_measured("docs/figures.md", "interop-roughness", &body);
     assert!(
         ue_vs_nearest > 0 && ulp_apart > 0,
         "the findings: truncation and the reciprocal"
