@@ -155,9 +155,10 @@ fn choose(s: Vec3, c: Vec2, bits: u32) -> u32 {
 /// **Against the engines' writers of the same grids:** at 12 bits this is Bevy's deferred word
 /// (`octahedral_encode`, `pack_24bit_normal_and_flags`) but where a zero x or y folds below the
 /// equator (Bevy's fold sign is `select(-1, 1, n.xy > 0)`: −1 for a zero, here +1: the same
-/// direction, another word) and at half-way coordinates (Bevy adds 0.5 and truncates); at 8
-/// bits it is Unreal 5 mobile's RG8 write but at half-way coordinates. Their decoders read every
-/// word exactly; the counts are in `docs/figures.md`, "Engine interop".
+/// direction, another word) and at or next to half-way coordinates (Bevy adds 0.5 and
+/// truncates); at 8 bits it is Unreal 5 mobile's RG8 write but at or next to half-way
+/// coordinates (Unreal normalises first; the target rounds `⌊0.5 + 255·c⌋`). Their decoders read
+/// every word exactly; the counts are in `docs/figures.md`, "Engine interop".
 pub fn encode_round(n: Vec3, bits: u32) -> u32 {
     let c = continuous(sanitize(n).unwrap_or(Vec3::Z), bits);
     (c.x.round_ties_even() as u32) | ((c.y.round_ties_even() as u32) << bits)
