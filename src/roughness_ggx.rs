@@ -8,10 +8,19 @@
 //! roughness `r` (Brent Burley, "Physically Based Shading at Disney", SIGGRAPH 2012 course):
 //! `D(n·h) = α² / (π ((n·h)²(α² − 1) + 1)²)`, whose peak is `D(1) = 1/(π α²)`.
 //!
-//! Three 8-bit forms:
+//! Five 8-bit forms:
 //! - **linear r** ([`encode_roughness_ggx8`], [`decode_roughness_ggx8`]): byte `b` stands for
-//!   `r = b/255`, what Bevy, Unreal (GBuffer and Substrate), Unity HDRP and URP store in a unorm8
-//!   channel;
+//!   `r = b/255`, what Bevy, Unreal's GBuffer and Unity HDRP store in a unorm8 channel (HDRP's
+//!   normal buffer alpha, `NormalBuffer.hlsl`: perceptual roughness);
+//! - **URP's smoothness** ([`encode_roughness_urp8`], [`decode_roughness_urp8`]): URP stores
+//!   smoothness `1 − r`, not roughness (`UnityGBuffer.hlsl`: `GBuffer2 = half4(packedNormalWS,
+//!   smoothness)`), so byte `b` stands for `r = 1 − b/255`; a URP byte read with
+//!   [`decode_roughness_ggx8`] gives `1 − r`;
+//! - **Unreal Substrate's truncated byte** ([`encode_roughness_substrate8`],
+//!   [`decode_roughness_substrate8`]): Substrate's `PackR8(v) = uint(saturate(v)·255)` truncates
+//!   and its `UnpackR8(b) = b·(1/255)` multiplies by the rounded reciprocal (Unreal's shader
+//!   library, as `Engine/Shaders/Private/Substrate/Substrate.ush` calls them); Unreal's bytes,
+//!   where a renderer needs them, rather than the nearest code;
 //! - **Godot 4's 7 bits + flag** ([`encode_roughness_godot8`], [`decode_roughness_godot8`]):
 //!   Godot's Forward+ writes `w = r·127/255` to the normal-roughness buffer's alpha, and `1 − w`
 //!   for a dynamic object (`servers/rendering/renderer_rd/shaders/forward_clustered/
@@ -144,6 +153,80 @@ pub fn encode_roughness_ggx8_unorm(r: f32) -> f32 {
 /// **Bad input:** NaN channel → byte 0; channels clamped to `[0, 1]`.
 pub fn decode_roughness_ggx8_unorm(c: f32) -> f32 {
     decode_roughness_ggx8(unorm_byte(c))
+}
+
+/// URP's smoothness byte for perceptual roughness `r`: the byte nearest `255·(1 − r)` (`r`
+/// clamped to `[0, 1]`), computed exactly as `255 − `[`encode_roughness_ggx8`]`(r)`: nearest
+/// codes mirror, and the one tie (`r = 1/2`) goes to byte 127 (towards the rougher code).
+///
+/// **Error bound:** `|r − (1 − b/255)| ≤ 1/510`, exact on every conforming adapter (as
+/// [`encode_roughness_ggx8`]). URP's own write (`smoothness` to a unorm8 target) rounds
+/// `fl(255·s)`, which differs only within an ULP or so of a boundary.
+///
+/// **Bad input:** NaN → 0 (smoothness 0: the roughest, as [`encode_roughness_ggx8`]'s 255);
+/// negative, `−0`, subnormal, `−Inf` → 255; `+Inf` and `≥ 1` → 0.
+pub fn encode_roughness_urp8(r: f32) -> u32 {
+    CODE_MAX - encode_roughness_ggx8(r)
+}
+
+/// The perceptual roughness `1 − b/255` of URP's smoothness byte `b`, computed as
+/// `(255 − b)/255`: one division of exact integers, so correctly rounded where `/` is (URP's
+/// own `1 − smoothness` on the unorm read rounds twice; they differ by at most `2^-24`).
+///
+/// **Error bound:** as [`decode_roughness_ggx8`] (it is that of `255 − b`).
+///
+/// **Bad input:** codes above 255 decode as 255 (`r = 0`).
+pub fn decode_roughness_urp8(p: u32) -> f32 {
+    decode_roughness_ggx8(CODE_MAX - p.min(CODE_MAX))
+}
+
+/// Render-target form: the r8unorm channel (URP's GBuffer2 alpha) to write for
+/// [`encode_roughness_urp8`]`(r)`, `b/255` as `unpack4x8unorm` computes it.
+///
+/// **Bad input:** as [`encode_roughness_urp8`].
+pub fn encode_roughness_urp8_unorm(r: f32) -> f32 {
+    crate::depth24::unpack4x8unorm(encode_roughness_urp8(r))[0]
+}
+
+/// The roughness from a sampled URP smoothness channel: the byte `round(255·c)` (clamped; half
+/// to even), then [`decode_roughness_urp8`].
+///
+/// **Bad input:** NaN channel → byte 0 (`r = 1`); channels clamped to `[0, 1]`.
+pub fn decode_roughness_urp8_unorm(c: f32) -> f32 {
+    decode_roughness_urp8(unorm_byte(c))
+}
+
+/// Unreal Substrate's roughness byte, its `PackR8`: `uint(saturate(r)·255)`, the product rounded
+/// in f32 and truncated — Unreal's bytes bit for bit where the product rounds as Unreal's GPU
+/// rounds it (correctly rounded: lavapipe, this twin; a conforming adapter may round the other
+/// way, as Unreal's own shader on it would).
+///
+/// **Error bound:** `0 ≤ 255·r − b < 1` (truncation): up to a code below the nearest, about
+/// half of all `r` one code below [`encode_roughness_ggx8`]'s (counted in
+/// `tests/roughness_ggx.rs`).
+///
+/// **Bad input:** NaN → 255 (the roughest, as every encoder here; Unreal's `saturate(NaN)` is
+/// the GPU's); negative, `−0`, subnormal, `−Inf` → 0; `+Inf` and `≥ 1` → 255.
+pub fn encode_roughness_substrate8(r: f32) -> u32 {
+    // `+0 ≤ r < 1` exactly when its bits are below those of 1; elsewhere (NaN, ±Inf, `r ≥ 1`,
+    // negative values, `−0`) the linear encoder's code, which those share.
+    if r.to_bits() < 0x3f80_0000 {
+        (r * 255.0) as u32
+    } else {
+        encode_roughness_ggx8(r)
+    }
+}
+
+/// Unreal Substrate's `UnpackR8`: `b·(1/255)`, the reciprocal rounded to f32 and the product
+/// rounded once — Unreal's value bit for bit where `×` is correctly rounded; it differs from
+/// [`decode_roughness_ggx8`]'s `b/255` by an ULP on some bytes (counted in
+/// `tests/roughness_ggx.rs`).
+///
+/// **Error bound:** within `2^-24·(1 + 2^-23)` relative of `b/255` (two roundings).
+///
+/// **Bad input:** codes above 255 decode as 255 (`r` ≈ 1: `255·fl(1/255)`).
+pub fn decode_roughness_substrate8(p: u32) -> f32 {
+    p.min(CODE_MAX) as f32 * (1.0 / 255.0)
 }
 
 /// Godot's byte for roughness `r` and the dynamic-object flag (`dynamic_object != 0`): `k`

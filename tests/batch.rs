@@ -561,7 +561,8 @@ fn substrate_every_code_and_rounding_encoder() {
     );
 }
 
-/// O3DE's signed octahedron: every 2^21 code (bits 21–31 carrying noise) through the decoder,
+/// O3DE's signed octahedron: every 2^21 code (bits 21–31 carrying noise: every B, read as O3DE
+/// reads it, and A) through the decoder,
 /// the render-target decoder on every code's exact channels and on channels read from special
 /// bit patterns (NaN, ±Inf, ±0, subnormals, B either side of 1/2), and the precise, rounding and
 /// render-target encoders over the encoder inputs.

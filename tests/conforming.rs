@@ -1691,7 +1691,11 @@ fn every_normal_encoding_under_emulation() {
         16 => codes16.clone(),
         24 => codes24.clone(),
         // The signed octahedron: every 7th of its 2^21 codes, and the last.
-        21 => (0..1 << 21).step_by(7).chain([(1 << 21) - 1]).collect(),
+        21 => (0..1 << 21)
+            .step_by(7)
+            .chain([(1 << 21) - 1])
+            .map(prepass::normal::signed_oct::texel_of_index)
+            .collect(),
         // xyz10: the stratified 32-bit sample's low 30 bits.
         30 => codes32.iter().map(|p| p & 0x3fff_ffff).collect(),
         _ => codes32.clone(),

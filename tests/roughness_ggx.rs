@@ -472,6 +472,123 @@ fn engines_bytes_and_prepass_bytes_interoperate() {
     );
 }
 
+/// URP's smoothness and Unreal Substrate's truncated byte (issue 60, findings 3 and 4), against
+/// the engines' own formulas on the adapter (`tests/baselines/roughness_ggx_engines.wgsl`,
+/// transcribed from `UnityGBuffer.hlsl`/`CommonMaterial.hlsl` and Unreal's `PackR8`/`UnpackR8`):
+/// - URP: every byte reads with `decode_roughness_urp8` as URP's `1 − s` does, within `2^-24`
+///   (prepass rounds `(255 − b)/255` once; URP rounds `b/255`, then `1 − s`), where
+///   `decode_roughness_ggx8` reads `1 − r` (the finding, printed); prepass's bytes read by URP's
+///   reader are within `1/510` of `r`, and URP's own bytes differ from prepass's on the printed
+///   count of the grid;
+/// - Substrate: every byte reads with `decode_roughness_substrate8` bit for bit as `UnpackR8`
+///   (and differs from `b/255` on the printed count), and `encode_roughness_substrate8` writes
+///   `PackR8`'s bytes bit for bit over the grid, the boundaries and `r = 0.618034` (157, where
+///   the nearest byte is 158); the twins agree with the adapter.
+#[test]
+fn urp_smoothness_and_substrate_bytes_are_the_engines() {
+    let src = format!("{ROUGHNESS_GGX}\n{ENGINES}");
+    let bytes: Vec<u32> = (0..=255).collect();
+    let nb = bytes.len() as u64;
+    let run = |f: &str, a: &[u32]| run_kernel(&src, f, &[Arg::column(a)], a.len() as u64);
+    let urp_read = run("engine_urp_smoothness_read", &bytes);
+    let ours_urp = run("decode_roughness_urp8", &bytes);
+    let plain = run("decode_roughness_ggx8", &bytes);
+    let ue_read = run("engine_substrate_roughness_read", &bytes);
+    let ours_ue = run("decode_roughness_substrate8", &bytes);
+    let mut ulp_apart = 0;
+    for b in 0..nb as usize {
+        let (u, o) = (urp_read.as_f32()[b], ours_urp.as_f32()[b]);
+        assert_within!(
+            (f64::from(u) - f64::from(o)).abs(),
+            U,
+            "URP's 1 − fl(b/255) rounds twice (2^-25 each, values ≤ 1), prepass's (255 − b)/255 once",
+            "URP's read of smoothness byte {b} against decode_roughness_urp8"
+        );
+        assert_eq!(
+            o.to_bits(),
+            ggx::decode_roughness_urp8(b as u32).to_bits(),
+            "twin, byte {b}"
+        );
+        let (e, m) = (ue_read.as_f32()[b], ours_ue.as_f32()[b]);
+        assert_eq!(m.to_bits(), e.to_bits(), "Unreal's UnpackR8 of byte {b}");
+        assert_eq!(
+            m.to_bits(),
+            ggx::decode_roughness_substrate8(b as u32).to_bits(),
+            "twin, byte {b}"
+        );
+        ulp_apart += usize::from(m.to_bits() != plain.as_f32()[b].to_bits());
+    }
+    let mut rs: Vec<f32> = (0..=0x3f80_0000u32)
+        .step_by(61)
+        .map(f32::from_bits)
+        .collect();
+    for j in 0..=255 {
+        let c = (j as f32 / 255.0).to_bits() as i64;
+        rs.extend((-8..=8).map(|d| f32::from_bits((c + d).clamp(0, 0x3f80_0000) as u32)));
+    }
+    rs.push(0.618_034);
+    let n = rs.len() as u64;
+    let col = |f: &str| run_kernel(&src, f, &[Arg::column(&rs)], n).into_words();
+    let (urp_w, ours_w, ue_w, ours_ue_w) = (
+        col("engine_urp_smoothness_write"),
+        col("encode_roughness_urp8"),
+        col("engine_substrate_roughness_write"),
+        col("encode_roughness_substrate8"),
+    );
+    let (mut urp_diff, mut ue_vs_nearest) = (0, 0);
+    for (i, &r) in rs.iter().enumerate() {
+        let b = ours_w[i];
+        assert_eq!(b, ggx::encode_roughness_urp8(r), "twin, r = {r:e}");
+        assert_within!(
+            (f64::from(urp_read.as_f32()[b as usize]) - f64::from(r)).abs(),
+            bounds::linear_half_step(255) + U,
+            "bounds::linear_half_step(255) = 1/510, + URP's read's rounding (≤ 2^-24)",
+            "URP's reader on prepass's smoothness byte for r = {r:e}"
+        );
+        urp_diff += usize::from(urp_w[i] != b);
+        assert_eq!(ours_ue_w[i], ue_w[i], "Unreal's PackR8 of r = {r:e}");
+        assert_eq!(
+            ours_ue_w[i],
+            ggx::encode_roughness_substrate8(r),
+            "twin, r = {r:e}"
+        );
+        ue_vs_nearest += usize::from(ue_w[i] != ggx::encode_roughness_ggx8(r));
+    }
+    let last = rs.len() - 1;
+    assert_eq!(
+        (ue_w[last], ggx::encode_roughness_ggx8(0.618_034)),
+        (157, 158),
+        "the issue's r = 0.618034"
+    );
+    // Over uniform r (the grid above is every 61st f32, most of them tiny): 2^20 cell centres.
+    let uniform = (0..1u32 << 20)
+        .map(|i| (i as f32 + 0.5) / 1_048_576.0)
+        .filter(|&r| ggx::encode_roughness_substrate8(r) != ggx::encode_roughness_ggx8(r))
+        .count();
+    let r3 = ggx::encode_roughness_urp8(0.3);
+    eprintln!(
+        "URP: r = 0.3 writes smoothness byte {r3}, read back {} by decode_roughness_urp8 and {} by \
+         decode_roughness_ggx8 (the finding); URP's writer differs from prepass's on {urp_diff} of \
+         {n} sampled r. Substrate: UnpackR8 differs from b/255 on {ulp_apart} of 256 bytes; PackR8 \
+         differs from the nearest byte on {ue_vs_nearest} of {n} sampled r, {uniform} of 2^20 \
+         uniform r",
+        ggx::decode_roughness_urp8(r3),
+        ggx::decode_roughness_ggx8(r3)
+    );
+    let body = format!(
+        "| form | engine | reads the engine's bytes | writes |\n|---|---|---|---|\n\
+         | `decode_roughness_urp8` | URP GBuffer2 alpha (smoothness) | `(255 − b)/255`: within 2^-24 of URP's `1 − b/255` on all 256 bytes (one rounding against URP's two) | — |\n\
+         | `encode_roughness_urp8` | URP | — | the nearest byte (exact): differs from URP's target-rounded `1 − r` on {urp_diff} of {n} sampled `r` |\n\
+         | `decode_roughness_substrate8` | Unreal Substrate (`UnpackR8`) | the engine's value bit for bit on all 256 bytes (`b·(1/255)`, which differs from `b/255` on {ulp_apart}) | — |\n\
+         | `encode_roughness_substrate8` | Unreal Substrate (`PackR8`) | — | the engine's bytes bit for bit on all {n} sampled `r` (truncation: below the nearest byte on {ue_vs_nearest} of them, {uniform} of 2^20 uniform `r`) |\n"
+    );
+    common::publish_measured("docs/figures.md", "interop-roughness", &body);
+    assert!(
+        ue_vs_nearest > 0 && ulp_apart > 0,
+        "the findings: truncation and the reciprocal"
+    );
+}
+
 /// One 8-bit curve, as a renderer reads it: each code's roughness, and the cell of `r` each code
 /// takes (`bounds[k]` is the boundary between codes `k` and `k + 1`).
 struct Curve {
@@ -637,7 +754,7 @@ fn ggx_error_table() {
         let log_bound = (1.0 + bounds::log_relative()).powi(4) * (1.0 + 4.0 * U) - 1.0;
         let rows = [
             (
-                "linear r (Bevy, Unreal, HDRP, URP, Substrate)",
+                "linear r (Bevy, Unreal GBuffer, HDRP; URP stores the same values as 1 − r)",
                 8,
                 lin,
                 linear_bound(h8),

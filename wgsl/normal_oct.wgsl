@@ -458,6 +458,18 @@ fn oct_unity_word(p: u32) -> u32 {
 fn encode_normal_oct24_unity(n: vec3<f32>) -> u32 {
     return oct_unity_bytes(encode_normal_oct24(n));
 }
+// The 2x12-bit code, in Unity's bytes, that HDRP's reader takes as its own writer's
+// (EncodeIntoNormalBuffer, com.unity.render-pipelines.high-definition/Runtime/Material/
+// NormalBuffer.hlsl): the closest code to n after |z| is raised to at least |n|/1024 (HDRP's
+// 1/1024 for unit normals), z's sign kept (-0 as +), so that z's sign survives the G-buffer.
+// encode_normal_oct24_unity floors nothing (as URP writes). The bytes are not HDRP's own
+// (it quantises by u32(f * 4095.5)); the direction is closer.
+fn encode_normal_oct24_hdrp(n: vec3<f32>) -> u32 {
+    let s = oct_sanitize(n).xyz;
+    let za = max(abs(s.z), length(s) * (1.0 / 1024.0));
+    let h = vec3<f32>(s.xy, select(-za, za, s.z >= 0.0));
+    return oct_unity_bytes(oct_choose(h, oct_continuous(h, 4095.0), 12u));
+}
 // The 2x12-bit code by rounding each axis, in Unity's bytes.
 fn encode_normal_oct24_unity_fast(n: vec3<f32>) -> u32 {
     return oct_unity_bytes(encode_normal_oct24_fast(n));

@@ -11,23 +11,24 @@
 // z > 0, 0 for z <= 0), and reads x = R - G, y = (R + G) - 1, z = (2B - 1)(1 - |x| - |y|),
 // normalised. The RGB10A2 write rounds R and G to k/1023.
 //
-// Layout of the u32 form: u (R's code) in bits 0-9, v (G's code) in bits 10-19, z's sign in
-// bit 20 (1: z > 0, B = 1; 0: z <= 0, B = 0) -- the texel's bit order for R and G, and bit 20
-// is B's lowest bit (the texel itself holds B = 1023 or 0, so B's 10 bits are all this bit).
-// Bits 21-31 are left zero by the encoders and ignored by the decoder.
+// Layout of the u32 form: the RGB10A2 texel's bits -- u (R's code) in bits 0-9, v (G's code)
+// in bits 10-19, B in bits 20-29: 1023 for z > 0 (O3DE's B = 1), 0 for z <= 0 (B = 0); bits
+// 30-31 (A) left zero by the encoders and ignored by the decoder. The decoder reads any B as
+// O3DE does, z's factor 2B - 1 on B = b/1023: z > 0 exactly when b >= 512. (Until issue 60 the
+// word held z's sign in bit 20 alone, which O3DE reads as B = 1/1023, z < 0.)
 //
 // Grid: codes (u, v) stand for the exact integer vector D = (u - v, u + v - M, +-(M - |u - v| -
-// |u + v - M|)), M = 1023, z's sign from bit 20 (O3DE's decode times M, exactly): the
+// |u + v - M|)), M = 1023, z's sign from B (O3DE's decode times M, exactly): the
 // hemi-octahedral lattice of wgsl/normal_hemioct.wgsl at 10 bits, with the axes O3DE's way
 // round (R = (x + y)/2 + 1/2 as hemioct's first axis; G = (y - x)/2 + 1/2 is hemioct's second
 // mirrored). |D|_1 = M, so D is never zero; every value is an integer below 2^11, exact in f32.
-// The equator: where M - |x| - |y| = 0 (u or v at 0 or M), z is +0 with bit 20 set and -0
-// without, as O3DE's decoder gives; both are the same direction.
+// The equator: where M - |x| - |y| = 0 (u or v at 0 or M), z is +0 for b >= 512 and -0 below,
+// as O3DE's decoder gives; both are the same direction.
 //
 // Bad input: as wgsl/normal_oct.wgsl: NaN anywhere, the zero vector and all-subnormal vectors
 // encode as +z; subnormal components count as zero; infinite components win (the direction of
 // the infinities); any finite length is fine (the map is scale-free). z = +-0 (after that)
-// writes bit 20 clear, as O3DE's B = saturate(z * FLT_MAX) = 0. Decoders accept every bit
+// writes B = 0, as O3DE's B = saturate(z * FLT_MAX) = 0. Decoders accept every bit
 // pattern (the unorm one every float) and return a finite unit vector.
 //
 // Written to be evaluated identically everywhere it matters: the only products feeding sums are
@@ -98,7 +99,7 @@ fn signed_oct_try(a: vec3<f32>, c00: vec2<f32>, off: vec2<f32>, best: vec3<f32>)
     return select(best, vec3<f32>(c, score), score < best.z);
 }
 
-// Precise: bit 20 from the sign of z (set for z > 0), and of the four codes floor(c) + {0, 1}^2
+// Precise: B from the sign of z (1023 for z > 0, else 0), and of the four codes floor(c) + {0, 1}^2
 // around the continuous coordinates the one whose direction on that hemisphere is closest to n
 // (by signed_oct_try's score for a = (s.x, s.y, |s.z|): mirroring both vectors in z leaves the
 // cross product's squares as they are, so the score is the one against the signed direction);
@@ -131,30 +132,37 @@ fn encode_normal_signed_oct(n: vec3<f32>) -> u32 {
     let j = min(q.z, q.w) < min(q.x, q.y);
     let i = select(q.y < q.x, q.w < q.z, j);
     let w = bitcast<vec2<u32>>(c00 + vec2<f32>(8388608.0)) + vec2<u32>(select(0u, 1u, i), select(0u, 1u, j));
-    return ((w.x + (w.y << 10u)) - 0x4b000000u) | select(0u, 0x100000u, s.z > 0.0);
+    return ((w.x + (w.y << 10u)) - 0x4b000000u) | select(0u, 0x3ff00000u, s.z > 0.0);
 }
 
-// Rounding: the nearest code per axis (half to even) and bit 20 from the sign of z -- for finite
+// Rounding: the nearest code per axis (half to even) and B from the sign of z -- for finite
 // vectors of normal components, the codes O3DE's encoder and a round-to-nearest RGB10A2 write
 // give (the same arithmetic; the power-of-two scaling does not change p).
 fn encode_normal_signed_oct_fast(n: vec3<f32>) -> u32 {
     let s = signed_oct_sanitize(n);
     let uv = vec2<u32>(round(signed_oct_continuous(s)));
-    return uv.x | (uv.y << 10u) | select(0u, 0x100000u, s.z > 0.0);
+    return uv.x | (uv.y << 10u) | select(0u, 0x3ff00000u, s.z > 0.0);
 }
 
-// The unit vector of a signed-octahedral code: normalize(D), z negated (to -0 on the equator)
-// when bit 20 is clear -- z >= 0, so negating is setting its sign bit, bit 20 clear moved to bit
-// 31; bits 21-31 are ignored.
+// The unit vector of a texel as O3DE's decoder reads it: the direction of (R - G, R + G - 1,
+// (2B - 1)(1 - |x| - |y|)) on R, G, B = (u, v, b)/1023, i.e. of (1023 D.x, 1023 D.y,
+// (2b - 1023) D.z) (signed_oct_decode_any_b). For the B the encoders write, 1023 and 0, that is
+// D's direction with z's sign, and D itself is normalised: z negated (to -0 on the equator) for
+// B = 0 -- z >= 0, so negating is setting its sign bit, B's lowest bit (bit 20) clear moved to
+// bit 31 -- as before issue 60, so those decodes keep their bits. Bits 30-31 are ignored.
 fn decode_normal_signed_oct(p: u32) -> vec3<f32> {
     let d = signed_oct_lattice(vec2<f32>(vec2<u32>(p, p >> 10u) & vec2<u32>(0x3ffu)));
+    let b = (p >> 20u) & 0x3ffu;
+    if (b != 0u && b != 0x3ffu) {
+        return signed_oct_decode_any_b(d, b);
+    }
     let z = bitcast<f32>(bitcast<u32>(d.z) | ((~p & 0x100000u) << 11u));
     return normalize(vec3<f32>(d.xy, z));
 }
 
 // Render-target form: the rgb10a2unorm channels to write, R = u/1023, G = v/1023, B = 1 for
-// z > 0 and 0 otherwise (O3DE's B), A = 0 (the renderer's). Any conforming write converts them
-// back to the code.
+// z > 0 and 0 otherwise (O3DE's B; B's ten bits in the word all equal bit 20), A = 0 (the
+// renderer's). Any conforming write converts them back to the code.
 fn encode_normal_signed_oct_unorm(n: vec3<f32>) -> vec4<f32> {
     let p = encode_normal_signed_oct(n);
     let k = vec2<u32>(p, p >> 10u) & vec2<u32>(0x3ffu);
@@ -163,11 +171,19 @@ fn encode_normal_signed_oct_unorm(n: vec3<f32>) -> vec4<f32> {
 
 // The unit vector from sampled rgb10a2unorm channels R, G, B: each taken to [0, 1] from its bits
 // (NaN, negative values and -0 count as 0, values from 1 up to +Inf as 1, so no float operation
-// sees a non-finite channel) and rounded back to its code, round(1023 c); z > 0 when B's code is
-// at least 512 (B > 1/2: the sign O3DE's 2B - 1 gives for every B). A is ignored.
+// sees a non-finite channel) and rounded back to its code, round(1023 c); then that texel
+// decoded (B read as O3DE reads it: z > 0 for B's code at least 512). A is ignored.
 fn decode_normal_signed_oct_unorm(c: vec4<f32>) -> vec3<f32> {
     let b = bitcast<vec3<u32>>(c.xyz);
     let x = select(select(b, vec3<u32>(0x3f800000u), b >= vec3<u32>(0x3f800000u)), vec3<u32>(0u), b > vec3<u32>(0x7f800000u));
     let k = vec3<u32>(round(bitcast<vec3<f32>>(x) * 1023.0));
-    return decode_normal_signed_oct(k.x | (k.y << 10u) | select(0u, 0x100000u, k.z >= 512u));
+    return decode_normal_signed_oct(k.x | (k.y << 10u) | (k.z << 20u));
+}
+
+// O3DE's reading of a texel whose B code b is neither 0 nor 1023 (no encoder writes one, a
+// filtered or foreign texel may hold one): the direction of (1023 D.x, 1023 D.y,
+// (2b - 1023) D.z), D from the texel's R and G -- integers below 2^20, exact in f32 (fused or
+// not) -- normalised. On the equator z is -0 for b < 512 (0 times a negative factor).
+fn signed_oct_decode_any_b(d: vec3<f32>, b: u32) -> vec3<f32> {
+    return normalize(vec3<f32>(d.xy * 1023.0, d.z * (f32(b + b) - 1023.0)));
 }

@@ -1,6 +1,7 @@
 // prepass — GGX perceptual roughness r in 8 bits, as the engines store it (alpha = r^2): linear r
-// in a unorm8 channel (Bevy, Unreal, Unity HDRP and URP, Unreal Substrate), Godot's 7 bits plus a
-// dynamic-object flag, and a log curve on r (hence on alpha) that prepass measures against them.
+// in a unorm8 channel (Bevy, Unreal's GBuffer, Unity HDRP), URP's smoothness 1 - r, Unreal
+// Substrate's truncated byte, Godot's 7 bits plus a dynamic-object flag, and a log curve on r
+// (hence on alpha) that prepass measures against them.
 // Rust twin: src/roughness_ggx.rs. Tests: tests/roughness_ggx.rs.
 // Spaces, handedness, depth conventions, byte order, units, NaN policy: README.md, "Conventions".
 //
@@ -8,7 +9,7 @@
 // Surfaces", EGSR 2007) with Burley's perceptual remapping alpha = r^2 (Brent Burley, "Physically
 // Based Shading at Disney", SIGGRAPH 2012 course): D(n.h) = alpha^2 / (pi ((n.h)^2 (alpha^2 - 1) + 1)^2).
 //
-// Encoders pick the code nearest to r exactly (no f32 rounding of n·r can move a code): the
+// Encoders (Substrate's aside: it truncates, as PackR8) pick the code nearest to r exactly (no f32 rounding of n·r can move a code): the
 // candidate floor(n·r + 1/2) from f32 arithmetic is within one code, and the boundary between
 // codes j and j+1, r = (j + 1/2)/n with n = 2^m - 1, is tested as (2^m·r - (j + 1/2)) >= r,
 // whose subtraction is exact (Sterbenz) wherever the test is close. Ties (only r = 1/2 is one)
@@ -49,7 +50,7 @@ fn ggx_unorm_byte(c: f32) -> u32 {
     return u32(round(bitcast<f32>(x) * 255.0));
 }
 
-// ---- linear r in 8 bits (Bevy, Unreal, HDRP, URP, Substrate) ----
+// ---- linear r in 8 bits (Bevy, Unreal's GBuffer, HDRP) ----
 
 // The byte nearest 255·r (r clamped to [0, 1]; NaN -> 255), ties upwards.
 fn encode_roughness_ggx8(r: f32) -> u32 {
@@ -76,6 +77,49 @@ fn encode_roughness_ggx8_unorm(r: f32) -> f32 {
 // error or a +-0.49/255 filter cannot change it), then decoded.
 fn decode_roughness_ggx8_unorm(c: f32) -> f32 {
     return decode_roughness_ggx8(ggx_unorm_byte(c));
+}
+
+// ---- Unity URP: smoothness 1 - r in GBuffer2's alpha (UnityGBuffer.hlsl) ----
+
+// URP's smoothness byte for roughness r: 255 - encode_roughness_ggx8(r), the byte nearest
+// 255 (1 - r) exactly (the tie r = 1/2 goes to 127). NaN -> 0 (smoothness 0, the roughest).
+fn encode_roughness_urp8(r: f32) -> u32 {
+    return 255u - encode_roughness_ggx8(r);
+}
+
+// The roughness 1 - b/255 of URP's smoothness byte b, as (255 - b)/255 (one rounding); codes
+// above 255 read as 255 (r = 0).
+fn decode_roughness_urp8(p: u32) -> f32 {
+    return decode_roughness_ggx8(255u - min(p, 255u));
+}
+
+// Render-target form: the r8unorm channel (URP's GBuffer2 alpha) to write for
+// encode_roughness_urp8(r).
+fn encode_roughness_urp8_unorm(r: f32) -> f32 {
+    return unpack4x8unorm(encode_roughness_urp8(r)).x;
+}
+
+// The roughness from a sampled URP smoothness channel: the byte rounded back, then decoded.
+fn decode_roughness_urp8_unorm(c: f32) -> f32 {
+    return decode_roughness_urp8(ggx_unorm_byte(c));
+}
+
+// ---- Unreal Substrate: PackR8 / UnpackR8 (Unreal's shader library, as Substrate.ush calls them) ----
+
+// Substrate's roughness byte, uint(saturate(r) * 255): truncated, Unreal's bytes where the
+// product rounds as Unreal's GPU rounds it. +0 <= r < 1 exactly when its bits are below 1's;
+// elsewhere (NaN, +-Inf, r >= 1, negative values, -0) the linear encoder's code (NaN -> 255).
+fn encode_roughness_substrate8(r: f32) -> u32 {
+    if (bitcast<u32>(r) < 0x3f800000u) {
+        return u32(r * 255.0);
+    }
+    return encode_roughness_ggx8(r);
+}
+
+// Substrate's UnpackR8, b * (1/255): the reciprocal rounded to f32, one more rounding; codes
+// above 255 read as 255.
+fn decode_roughness_substrate8(p: u32) -> f32 {
+    return f32(min(p, 255u)) * (1.0 / 255.0);
 }
 
 // ---- Godot 4 (Forward+): 7 bits of roughness and a dynamic-object flag in one unorm8 ----

@@ -326,24 +326,18 @@ pub const DECODERS: &[Entry] = &[
             );
         },
     },
-    codec!(code_decoder; signed_oct::decode_normal_signed_oct, 21),
+    codec!(code_decoder; signed_oct::decode_normal_signed_oct, 30),
     Entry {
         name: "normal::signed_oct::decode_normal_signed_oct_unorm",
         check: |i| {
-            // R and G as xyz10's channels; z > 0 when B's code (as xyz10 reads it) is at least
-            // 512; A ignored.
+            // R, G and B as xyz10's channels, then the texel decoded; A ignored.
             let c = [i.f32(), i.f32(), i.f32(), i.f32()];
             let v = signed_oct::decode_normal_signed_oct_unorm(c);
             assert_unit(v, format_args!("{c:?}"));
             let k = rgb10a2_code(c);
-            let sign = if (k >> 20) & 0x3ff >= 512 {
-                signed_oct::SIGN_BIT
-            } else {
-                0
-            };
             assert_eq!(
                 v,
-                signed_oct::decode_normal_signed_oct((k & 0xf_ffff) | sign),
+                signed_oct::decode_normal_signed_oct(k & 0x3fff_ffff),
                 "{c:?}"
             );
         },

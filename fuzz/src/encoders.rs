@@ -365,14 +365,15 @@ pub const ENCODERS: &[Entry] = &[
             let mut want = rgb10a2_channels(p & 0xf_ffff);
             want[2] = ((p >> 20) & 1) as f32;
             assert_eq!(signed_oct::encode_normal_signed_oct_unorm(n), want, "{n:?}");
-            // Both encoders set bit 20 exactly when the sanitised z is positive (+z for the
-            // degenerate inputs).
+            // Both encoders write B = 1023 exactly when the sanitised z is positive (+z for the
+            // degenerate inputs), else 0, and A = 0.
             let z = prepass::normal::sanitize(n).map_or(1.0, |s| s.z);
             for enc in [
                 signed_oct::encode_normal_signed_oct,
                 signed_oct::encode_normal_signed_oct_fast,
             ] {
-                assert_eq!(enc(n) & signed_oct::SIGN_BIT != 0, z > 0.0, "{n:?}");
+                let b = if z > 0.0 { signed_oct::B_MASK } else { 0 };
+                assert_eq!(enc(n) & 0xfff0_0000, b, "{n:?}");
             }
         },
     },

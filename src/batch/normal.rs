@@ -330,23 +330,34 @@ fn signed_oct_precise_lane(n: Vec3) -> u32 {
     let s = sanitize_or_z(n);
     let a = Vec3::new(s.x, s.y, s.z.abs());
     let (u, v) = best_of_four(a, signed_oct_continuous(s), signed_oct_lattice);
-    u | (v << 10) | sel(s.z > 0.0, signed_oct::SIGN_BIT, 0)
+    u | (v << 10) | sel(s.z > 0.0, signed_oct::B_MASK, 0)
 }
 
 #[inline(always)]
 fn signed_oct_round_lane(n: Vec3) -> u32 {
     let s = sanitize_or_z(n);
     let c = signed_oct_continuous(s);
-    round_even_small(c.x) | (round_even_small(c.y) << 10) | sel(s.z > 0.0, signed_oct::SIGN_BIT, 0)
+    round_even_small(c.x) | (round_even_small(c.y) << 10) | sel(s.z > 0.0, signed_oct::B_MASK, 0)
 }
 
-/// The twin's decode: z (an integer ≥ 0, so `+0` or positive as f32) negated when bit 20 is
-/// clear by setting its sign bit, which is the twin's `−z` (`−0` on the equator).
+/// The twin's decode: `D` with z times the sign of B's factor for B = 0 or 1023, else
+/// `(1023·D.x, 1023·D.y, (2b − 1023)·D.z)` (exact integers; `−0` on the equator for
+/// `b < 512`), normalised.
 #[inline(always)]
 fn signed_oct_decode_lane(p: u32) -> Vec3 {
     let d = signed_oct_lattice(p & 0x3ff, (p >> 10) & 0x3ff);
-    let z = (d[2] as f32).to_bits() | sel(p & signed_oct::SIGN_BIT == 0, 0x8000_0000, 0);
-    normalize(Vec3::new(d[0] as f32, d[1] as f32, f32::from_bits(z)))
+    let m = signed_oct::M as f32;
+    let f = signed_oct::z_factor(signed_oct::b_code(p)) as f32;
+    let whole = f.abs() == m;
+    let (s, zf) = (
+        if whole { 1.0 } else { m },
+        if whole { f.signum() } else { f },
+    );
+    normalize(Vec3::new(
+        d[0] as f32 * s,
+        d[1] as f32 * s,
+        d[2] as f32 * zf,
+    ))
 }
 
 #[inline(always)]
@@ -358,8 +369,8 @@ fn signed_oct_encode_unorm(n: Vec3) -> [f32; 4] {
 
 #[inline(always)]
 fn signed_oct_decode_unorm(c: [f32; 4]) -> Vec3 {
-    let sign = sel(unorm10_code_lane(c[2]) >= 512, signed_oct::SIGN_BIT, 0);
-    signed_oct_decode_lane(unorm10_code_lane(c[0]) | (unorm10_code_lane(c[1]) << 10) | sign)
+    let b = unorm10_code_lane(c[2]) << 20;
+    signed_oct_decode_lane(unorm10_code_lane(c[0]) | (unorm10_code_lane(c[1]) << 10) | b)
 }
 
 /// The per-channel unorm encoders (xyz8: `M = 255`, `W = 8`; xyz10: `1023`, `10`):

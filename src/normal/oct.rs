@@ -151,6 +151,14 @@ fn choose(s: Vec3, c: Vec2, bits: u32) -> u32 {
 
 /// The rounding encoder: each continuous coordinate rounded to the nearest code (half to even).
 /// Bit-identical to the WGSL `_fast` encoders on a correctly rounded adapter.
+///
+/// **Against the engines' writers of the same grids:** at 12 bits this is Bevy's deferred word
+/// (`octahedral_encode`, `pack_24bit_normal_and_flags`) but where a zero x or y folds below the
+/// equator (Bevy's fold sign is `select(-1, 1, n.xy > 0)`: −1 for a zero, here +1: the same
+/// direction, another word) and at or next to half-way coordinates (Bevy adds 0.5 and
+/// truncates); at 8 bits it is Unreal 5 mobile's RG8 write but at or next to half-way
+/// coordinates (Unreal normalises first; the target rounds `⌊0.5 + 255·c⌋`). Their decoders read
+/// every word exactly; the counts are in `docs/figures.md`, "Engine interop".
 pub fn encode_round(n: Vec3, bits: u32) -> u32 {
     let c = continuous(sanitize(n).unwrap_or(Vec3::Z), bits);
     (c.x.round_ties_even() as u32) | ((c.y.round_ties_even() as u32) << bits)
@@ -378,9 +386,45 @@ pub fn unity_word(p: u32) -> u32 {
 /// [`encode_normal_oct24`] in Unity's bytes ([`unity_bytes`]): the 2×12-bit code whose direction
 /// is closest to `n`, as HDRP's normal buffer and URP's accurate G-buffer normals lay it out
 /// (the same 4095-step grid, read back by Unity as `k/4095·2 − 1`). Error bound and bad input:
-/// [`encode_normal_oct24`]'s.
+/// [`encode_normal_oct24`]'s. Unity's bytes as URP writes them (no floor on `|z|`); HDRP's
+/// writer raises `|z|` first so that z's sign survives: [`encode_normal_oct24_hdrp`].
 pub fn encode_normal_oct24_unity(n: Vec3) -> u32 {
     unity_bytes(encode_normal_oct24(n))
+}
+
+/// HDRP's seam floor (`EncodeIntoNormalBuffer`, Unity-Technologies/Graphics
+/// `com.unity.render-pipelines.high-definition/Runtime/Material/NormalBuffer.hlsl`) on a
+/// sanitized vector `s`: `|z|` raised to at least `|s|/1024` — HDRP's `1/1024` for its unit
+/// normals, here relative to the length so any length floors alike — its sign kept as HDRP's
+/// `CopySign` keeps it (`−0` counts as `+`).
+fn hdrp_floor(s: Vec3) -> Vec3 {
+    let za = s.z.abs().max(s.length() * (1.0 / 1024.0));
+    Vec3::new(s.x, s.y, if s.z >= 0.0 { za } else { -za })
+}
+
+/// A 2×12-bit code in Unity's bytes that HDRP's normal-buffer reader takes as its own writer's
+/// (`EncodeIntoNormalBuffer`): the code whose direction is closest to `n` with `|z|` first
+/// raised to at least `|n|/1024`, z's sign kept (`−0` as `+`), as HDRP raises it. HDRP's reason,
+/// in its source: z's sign must survive the G-buffer, or the tangent frame of anisotropic GGX
+/// shows a seam at `z = 0`. [`encode_normal_oct24_unity`] writes the closest code without the
+/// floor (URP's writers, `UnityGBuffer.hlsl`, floor nothing), so a normal within `1/1024` of the
+/// equator may come back with z's sign flipped — for HDRP, use this.
+///
+/// **z's sign:** the decoded z (`1 − |f.x| − |f.y|` on Unity's grid, an odd multiple of `1/4095`,
+/// never 0) has the sign of the floored z whenever the code is within `asin(1/1024)` (0.0560°) of
+/// the floored direction, since every direction with the other sign is at least that far: the
+/// precise choice's error on the oct24 grid is below that on a correctly rounded adapter (README,
+/// oct24's max°), checked near the equator by `tests/normal_oct.rs`
+/// (`hdrp_writer_keeps_z_sign`).
+/// **Error bound:** [`encode_normal_oct24`]'s for `|z| ≥ |n|/1024` (the input is unchanged);
+/// below it, that plus the floor's own move, at most `asin(1/1024)` = 0.0560°.
+/// **Against HDRP's own bytes:** HDRP quantises each axis as `u32(f·4095.5)` (neither round nor
+/// floor); this writes the closest code instead, so the bytes differ on many inputs (each a
+/// neighbouring code of the same cell); `docs/figures.md` ("Engine interop") gives the count.
+/// **Bad input:** [`encode_normal_oct24`]'s (NaN and the zero vector give `+z`'s code).
+pub fn encode_normal_oct24_hdrp(n: Vec3) -> u32 {
+    let h = hdrp_floor(sanitize(n).unwrap_or(Vec3::Z));
+    unity_bytes(choose(h, continuous(h, 12), 12))
 }
 
 /// [`encode_normal_oct24_fast`] in Unity's bytes.

@@ -11,16 +11,24 @@
 //! to `k/1023`.
 //!
 //! **Grid.** Codes `(u, v)` (R's and G's) stand for the exact integer vector
-//! `D = (u − v, u + v − M, ±(M − |u − v| − |u + v − M|))`, `M = 1023`, the sign from bit 20 —
-//! O3DE's decode times `M`, exactly ([`exact::o3de_decode`] checks it). That is
+//! `D = (u − v, u + v − M, ±(M − |u − v| − |u + v − M|))`, `M = 1023`, the sign from B (`+` for
+//! B = 1023, `−` for 0) — O3DE's decode times `M`, exactly ([`exact::o3de_decode`] checks it). That is
 //! [`super::hemioct`]'s lattice at 10 bits with O3DE's axes: `u` is hemioct's first axis,
 //! `v` its second mirrored (`v ↦ M − v`). `|D|₁ = M`: never zero.
 //!
-//! **Layout** of the `u32` form: `u` in bits 0–9, `v` in bits 10–19, z's sign in bit 20 (set
-//! for `z > 0`: O3DE's `B = 1`), the texel's bit order for R and G; the texel holds `B = 1023`
-//! or 0, so bit 20 is B's lowest bit and B's ten bits all equal it. Bits 21–31 are zero when
-//! encoded, ignored when decoded. On the equator (`u` or `v` at 0 or `M`) a clear bit 20 gives
-//! `z = −0`, as O3DE's decoder does.
+//! **Layout** of the `u32` form: the RGB10A2 texel's bits — `u` (R) in bits 0–9, `v` (G) in
+//! bits 10–19, B in bits 20–29: 1023 for `z > 0` (O3DE's `B = 1`), 0 otherwise; bits 30–31 (A)
+//! zero when encoded. The decoders read B as O3DE does: z's factor is `2B/1023 − 1`, so
+//! `z > 0` exactly when `B ≥ 512`, for every B; A is ignored. On the equator (`u` or `v` at 0 or
+//! `M`) a B below 512 gives `z = −0`, as O3DE's decoder does.
+//!
+//! **Breaking fix (issue 60).** Before, the encoders put z's sign in bit 20 alone and the decoder
+//! read bit 20: a word that, stored as the texel, O3DE reads as `B = 1/1023` (z negative, +z
+//! 179.94° off), and a texel with `B = 1022` or 512 that O3DE reads with z > 0 came back with
+//! z < 0. The README's convention is that every encoder returns the `u32` the target stores, and
+//! a renderer storing this word in O3DE's RGB10A2 target (or reading O3DE's texel with
+//! [`decode_normal_signed_oct`]) expects O3DE's bits, so the word is now the texel. A word
+//! written by the old encoder with z > 0 (bit 20 alone) now reads with z < 0: re-encode.
 //!
 //! **Error.** Rounding each of R, G to the nearest code moves the L1-normalised vector
 //! `(x, y, 1 − |x| − |y|)` by `|Δv|² ≤ Δx² + Δy² + (|Δx| + |Δy|)² ≤ 8h²` (`Δx = ΔR − ΔG`,
@@ -42,8 +50,23 @@ use glam::{IVec2, IVec3, UVec2, Vec2, Vec3};
 /// Largest code per axis, `2^10 − 1`.
 pub const M: u32 = 1023;
 
-/// Bit 20: z's sign (set for `z > 0`, O3DE's `B = 1`).
+/// Bit 20, B's lowest bit: set in every word the encoders write for `z > 0` (where B is 1023,
+/// [`B_MASK`]); the decoders read all of B ([`b_code`]).
 pub const SIGN_BIT: u32 = 1 << 20;
+
+/// B's ten bits, 20–29: all set by the encoders for `z > 0` (O3DE's `B = 1`), clear otherwise.
+pub const B_MASK: u32 = 0x3ff << 20;
+
+/// B's code (bits 20–29) of a word.
+pub fn b_code(p: u32) -> u32 {
+    (p >> 20) & 0x3ff
+}
+
+/// O3DE's `2B − 1` on `B = b/1023`, times 1023: `2b − 1023`, an odd integer in `[−1023, 1023]`
+/// (never 0): z's factor. Its sign is z's for every B.
+pub fn z_factor(b: u32) -> i32 {
+    2 * (b & 0x3ff) as i32 - M as i32
+}
 
 /// The top of the clamped continuous coordinates `(R, G)`, `1 − 2^-23`
 /// ([`super::oct::CONTINUOUS_TOP`]): `floor(1023·c)` stays below `M`, `round` still gives `M`.
@@ -54,9 +77,10 @@ pub fn codes(p: u32) -> UVec2 {
     UVec2::new(p & 0x3ff, (p >> 10) & 0x3ff)
 }
 
-/// The word of codes `(u, v)` (each at most `M`) on the hemisphere `positive` (`z > 0`).
+/// The word (texel) of codes `(u, v)` (each at most `M`) on the hemisphere `positive`
+/// (`z > 0`): B = 1023 there, 0 otherwise.
 pub fn word_of(k: UVec2, positive: bool) -> u32 {
-    k.x | (k.y << 10) | if positive { SIGN_BIT } else { 0 }
+    k.x | (k.y << 10) | if positive { B_MASK } else { 0 }
 }
 
 /// The exact integer vector of codes `(u, v)` on the upper hemisphere:
@@ -123,19 +147,37 @@ pub fn encode_normal_signed_oct_fast(n: Vec3) -> u32 {
     )
 }
 
-/// Decode: `normalize(D)` of the code's exact integer vector, z negated (to `−0` on the
-/// equator) when bit 20 is clear; bits 21–31 ignored. Every bit pattern gives a finite unit
-/// vector; its direction is within `√2·2^-24` rad of `D`'s.
+/// Decode a texel as O3DE's `DecodeNormalSignedOctahedron` reads it: the direction of
+/// `(R − G, R + G − 1, (2B − 1)(1 − |x| − |y|))` on `R = u/1023`, `G = v/1023`, `B = b/1023`
+/// (bits 20–29), i.e. of the exact integers `(1023·D.x, 1023·D.y, (2b − 1023)·D.z)` (below 2^20
+/// in magnitude, exact in f32), normalised; for the B the encoders write (1023, 0) that
+/// direction is `D`'s with z's sign, and `normalize` takes `D` itself (as before issue 60, so
+/// those decodes keep their bits). For every B, z's sign is O3DE's (`+` for `b ≥ 512`), and on
+/// the equator `−0` for `b < 512`. Bits 30–31 (A) ignored. Every bit pattern gives a finite
+/// unit vector; its direction is within `√2·2^-24` rad of the exact one. (Breaking fix: see the
+/// module docs.)
 pub fn decode_normal_signed_oct(p: u32) -> Vec3 {
     let mut d = lattice(codes(p)).as_vec3();
-    if p & SIGN_BIT == 0 {
+    let b = b_code(p);
+    if b != 0 && b != M {
+        let m = M as f32;
+        return normalize(Vec3::new(d.x * m, d.y * m, d.z * z_factor(b) as f32));
+    }
+    if b == 0 {
         d.z = -d.z;
     }
     normalize(d)
 }
 
+/// The texel of a code index `k < 2^21` (R and G its low 20 bits, z > 0 where bit 20 is set):
+/// B = 1023 there, else 0 — the 2^21 texels O3DE writes, indexed as the old words were.
+pub fn texel_of_index(k: u32) -> u32 {
+    word_of(codes(k), k & SIGN_BIT != 0)
+}
+
 /// Render-target form of [`encode_normal_signed_oct`]: the rgb10a2unorm channels
-/// `R = u/1023`, `G = v/1023`, `B` = 1 for `z > 0` and 0 otherwise, `A = 0` (the renderer's).
+/// `R = u/1023`, `G = v/1023`, `B` = 1 for `z > 0` and 0 otherwise (B's code 1023 or 0, all its
+/// bits equal to bit 20), `A = 0` (the renderer's).
 pub fn encode_normal_signed_oct_unorm(n: Vec3) -> [f32; 4] {
     let p = encode_normal_signed_oct(n);
     let k = |x: u32| super::xyz10::unorm10(x & 0x3ff);
@@ -144,35 +186,36 @@ pub fn encode_normal_signed_oct_unorm(n: Vec3) -> [f32; 4] {
 
 /// Decode sampled rgb10a2unorm channels R, G, B, each rounded back to its code as
 /// [`crate::normal::xyz10::decode_normal_xyz10_unorm`] reads a channel (NaN and negatives 0,
-/// from 1 up to `+∞` 1, `round(1023·c)`); `z > 0` when B's code is at least 512 (`B > 1/2`,
-/// the sign O3DE's `2B − 1` gives for every B); A ignored. Exact whenever each channel is
-/// within ±0.49/1023 of `k/1023`.
+/// from 1 up to `+∞` 1, `round(1023·c)`), then [`decode_normal_signed_oct`] of that texel (B's
+/// code read as O3DE reads B: `z > 0` for B's code at least 512); A ignored. Exact whenever each
+/// channel is within ±0.49/1023 of `k/1023`.
 pub fn decode_normal_signed_oct_unorm(c: [f32; 4]) -> Vec3 {
     let k = super::xyz10::unorm10_code;
-    let b = k(c[2]) >= 512;
-    decode_normal_signed_oct(word_of(UVec2::new(k(c[0]), k(c[1])), b))
+    decode_normal_signed_oct(k(c[0]) | (k(c[1]) << 10) | (k(c[2]) << 20))
 }
 
 /// Exact references in f64, and O3DE's own formulas.
 pub mod exact {
-    use super::{M, SIGN_BIT, codes, lattice, word_of};
+    use super::{M, b_code, codes, lattice, word_of, z_factor};
     use glam::UVec2;
 
-    /// The direction a word stands for, in f64.
+    /// The direction a word (texel) stands for, in f64: `(D.x, D.y, D.z·(2b − 1023)/1023)`,
+    /// `b` its B code.
     pub fn decode(p: u32) -> [f64; 3] {
         let d = lattice(codes(p));
-        let z = if p & SIGN_BIT == 0 { -d.z } else { d.z };
-        crate::normal::exact::unit([d.x, d.y, z].map(f64::from)).expect("|D|_1 = M")
+        let z = f64::from(d.z) * f64::from(z_factor(b_code(p))) / f64::from(M);
+        crate::normal::exact::unit([f64::from(d.x), f64::from(d.y), z]).expect("|D.xy| + |D.z| > 0")
     }
 
     /// O3DE's `DecodeNormalSignedOctahedron` in f64 on the channels `R = u/1023`, `G = v/1023`
     /// and `b` (B's value): `x = R − G`, `y = (R + G) − 1`, `z = (2b − 1)(1 − |x| − |y|)`,
-    /// normalised. With `b` = 0 or 1 the direction of [`decode`]; the interop reference.
+    /// normalised. With `b = k/1023` the direction of [`decode`] of the texel with B code `k`.
     pub fn o3de_decode(u: u32, v: u32, b: f64) -> [f64; 3] {
         let (r, g) = (f64::from(u) / 1023.0, f64::from(v) / 1023.0);
         let (x, y) = (r - g, (r + g) - 1.0);
         let z = (b * 2.0 - 1.0) * (1.0 - x.abs() - y.abs());
-        crate::normal::exact::unit([x, y, z]).expect("|(x, y)| + |z| > 0 for b = 0 or 1")
+        crate::normal::exact::unit([x, y, z])
+            .expect("2b − 1 ≠ 0 for b = k/1023, so |(x, y)| + |z| > 0")
     }
 
     /// Continuous code coordinates `1023·(R, G)` of a direction in f64, clamped to `[0, M]`.
@@ -252,8 +295,8 @@ mod tests {
         ] {
             for enc in [encode_normal_signed_oct, encode_normal_signed_oct_fast] {
                 let p = enc(v);
-                assert_eq!(p >> 21, 0);
-                assert_eq!(p & SIGN_BIT != 0, v.z > 0.0, "{v}");
+                assert_eq!(p >> 30, 0);
+                assert_eq!(b_code(p), if v.z > 0.0 { M } else { 0 }, "{v}");
                 let d = decode_normal_signed_oct(p);
                 if v.z == 0.0 {
                     assert_eq!(d.abs(), v.abs(), "{v}: {d}");
@@ -265,7 +308,7 @@ mod tests {
                 }
             }
         }
-        // The equator with bit 20 clear: z = −0.
+        // The equator with B = 0: z = −0.
         let d = decode_normal_signed_oct(encode_normal_signed_oct(Vec3::X));
         assert_eq!(d.z.to_bits(), (-0.0f32).to_bits());
         // O3DE's B for z = 0 is 0; the unorm form writes it.

@@ -273,6 +273,20 @@ pub fn spread_codes(bits: u32) -> Vec<u32> {
         .collect()
 }
 
+/// [`spread_codes`] of a codec's code space as the words its decoder reads: for the signed
+/// octahedron, whose 21-bit code indices stand for texels with B = 1023 or 0, those texels
+/// ([`crate::normal::signed_oct::texel_of_index`]).
+pub fn spread_words(c: &Codec) -> Vec<u32> {
+    let codes = spread_codes(c.bits);
+    if c.source == crate::wgsl::NORMAL_SIGNED_OCT {
+        return codes
+            .into_iter()
+            .map(crate::normal::signed_oct::texel_of_index)
+            .collect();
+    }
+    codes
+}
+
 /// The inputs a codec's emulated sweeps run at, and how many of them (the first ones) spread
 /// evenly over `inputs`: all of `inputs` where [`Codec::emulation_sample`] is 1; for `k > 1`,
 /// one input in `k` (picked by a hash of its index), then the `len/k` inputs at which the adapter's round trip (`decoded`,
@@ -348,7 +362,7 @@ pub fn normal_figures(
         inputs,
         policies,
         searched_inputs,
-        &|c| spread_codes(c.bits),
+        &|c| spread_words(c),
         &mut |_, _, _, _| {},
     )
 }

@@ -1,7 +1,11 @@
 // Peer baseline (not public API): Bevy's deferred G-buffer normal and its reversed-infinite view
-// depth, written fresh from the description in the project's research notes (peers.md) to be
-// measured beside wgsl/normal_oct.wgsl and wgsl/linear_depth.wgsl. Measured by errplot
-// (src/bin/errplot/peers.rs) and tests/errplot_peers.rs.
+// depth, written fresh to be measured beside wgsl/normal_oct.wgsl and wgsl/linear_depth.wgsl. The
+// normal as bevy_pbr writes and reads it (checked against its source for issue 60):
+// render/utils.wgsl, octahedral_encode (the fold's sign select(-1, 1, n.xy > 0): a zero
+// component folds negative) and octahedral_decode; deferred/pbr_deferred_functions.wgsl,
+// pack_24bit_normal_and_flags (u32(saturate(x) * 4095 + 0.5), u in bits 0-11, v in 12-23) and
+// unpack_24bit_normal. Measured by errplot (src/bin/errplot/peers.rs), tests/errplot_peers.rs
+// and tests/normal_oct.rs (bevy_deferred_word_both_ways, the interop test).
 
 // Octahedral projection to [0, 1]^2: L1-normalise, fold the lower half (a zero component folds
 // with sign -1), then map [-1, 1] to [0, 1].

@@ -45,3 +45,28 @@ fn engine_godot_roughness_read(c: f32) -> f32 {
     }
     return roughness / (127.0 / 255.0);
 }
+
+// Unity URP's deferred G-buffer (com.unity.render-pipelines.universal/ShaderLibrary/
+// UnityGBuffer.hlsl: GBuffer2 = half4(packedNormalWS, smoothness)): the unorm8 alpha holds the
+// material's smoothness, 1 - perceptual roughness (core ShaderLibrary/CommonMaterial.hlsl,
+// PerceptualRoughnessToPerceptualSmoothness), rounded by the render target.
+fn engine_urp_smoothness_write(r: f32) -> u32 {
+    return pack4x8unorm(vec4<f32>(1.0 - r, 0.0, 0.0, 0.0)) & 0xffu;
+}
+
+// URP's read: the sampled smoothness s = b/255, then PerceptualSmoothnessToPerceptualRoughness,
+// 1 - s.
+fn engine_urp_smoothness_read(b: u32) -> f32 {
+    return 1.0 - f32(b & 0xffu) / 255.0;
+}
+
+// Unreal Substrate's roughness byte: PackR8 (Unreal's shader library, as Substrate.ush calls it),
+// uint(saturate(Value) * 255.0f): truncated.
+fn engine_substrate_roughness_write(r: f32) -> u32 {
+    return u32(saturate(r) * 255.0);
+}
+
+// Unreal's UnpackR8: float(In & 0xFF) * (1.0f / 255.0f).
+fn engine_substrate_roughness_read(b: u32) -> f32 {
+    return f32(b & 0xffu) * (1.0 / 255.0);
+}

@@ -261,7 +261,7 @@ pub const CODECS: [Codec; 19] = [
     },
     oct_codec!(
         "oct16",
-        "Unreal 5 mobile deferred (8:8)",
+        "Unreal 5 mobile deferred (8:8) — reads: exact; writes: prepass's code, a few words differ (docs/figures.md, Engine interop)",
         8,
         &OCT8,
         encode_normal_oct16,
@@ -275,7 +275,7 @@ pub const CODECS: [Codec; 19] = [
     ),
     oct_codec!(
         "oct16 fast",
-        "Unreal 5 mobile deferred (8:8)",
+        "Unreal 5 mobile deferred (8:8) — reads: exact; writes: prepass's code, a few words differ (docs/figures.md, Engine interop)",
         8,
         &OCT8,
         encode_normal_oct16_fast,
@@ -317,7 +317,7 @@ pub const CODECS: [Codec; 19] = [
     ),
     oct_codec!(
         "oct24",
-        "Bevy deferred (the same word); Unity HDRP, URP (`_unity`: its byte order)",
+        "Bevy deferred (the same word); Unity URP (`_unity`: its byte order), HDRP (`_hdrp`: with HDRP's z floor) — reads: exact; writes: prepass's code, some words differ (docs/figures.md, Engine interop)",
         12,
         &OCT12,
         encode_normal_oct24,
@@ -331,7 +331,7 @@ pub const CODECS: [Codec; 19] = [
     ),
     oct_codec!(
         "oct24 fast",
-        "Bevy deferred (the same word); Unity HDRP, URP (`_unity`: its byte order)",
+        "Bevy deferred (the same word); Unity URP (`_unity`: its byte order), HDRP (`_hdrp`: with HDRP's z floor) — reads: exact; writes: prepass's code, some words differ (docs/figures.md, Engine interop)",
         12,
         &OCT12,
         encode_normal_oct24_fast,
@@ -485,7 +485,7 @@ pub const CODECS: [Codec; 19] = [
     },
     Codec {
         name: "signed oct",
-        stored_by: "O3DE (Atom's signed octahedron in RGB10A2)",
+        stored_by: "O3DE (Atom's signed octahedron in RGB10A2) — reads: exact, every B; writes: `_fast` the engine's texels, precise prepass's code (docs/figures.md, Engine interop)",
         bits: 21,
         lanes: &SIGNED_OCT10,
         hemisphere: false,
@@ -501,7 +501,7 @@ pub const CODECS: [Codec; 19] = [
     },
     Codec {
         name: "signed oct fast",
-        stored_by: "O3DE (Atom's signed octahedron in RGB10A2)",
+        stored_by: "O3DE (Atom's signed octahedron in RGB10A2) — reads: exact, every B; writes: `_fast` the engine's texels, precise prepass's code (docs/figures.md, Engine interop)",
         bits: 21,
         lanes: &SIGNED_OCT10,
         hemisphere: false,

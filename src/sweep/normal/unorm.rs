@@ -90,8 +90,8 @@ pub enum RenderTarget {
     /// `rgba8snorm`: x, y, z as two's complement bytes 0–2, channel `b/127`; alpha zero.
     Rgba8Snorm,
     /// `rgb10a2unorm` holding O3DE's signed octahedron (`crate::normal::signed_oct`): R and G
-    /// the 10-bit codes in bits 0–19, `k/1023`; B 1023 (1.0) when bit 20 is set, else 0; alpha
-    /// zero.
+    /// the 10-bit codes in bits 0–19, `k/1023`; B (1023 for z > 0, else 0) in bits 20–29: the
+    /// word is the texel, so its fields are `Rgb10a2Unorm`'s; alpha zero.
     Rgb10a2SignedOct,
 }
 
@@ -101,10 +101,8 @@ impl RenderTarget {
         match self {
             Self::Rgb10a2Unorm => (crate::normal::xyz10::fields(p).map(|k| k as i32), 1023.0),
             Self::Rgba8Snorm => (crate::normal::snorm8::bytes(p), 127.0),
-            Self::Rgb10a2SignedOct => {
-                let f = crate::normal::xyz10::fields(p).map(|k| k as i32);
-                ([f[0], f[1], if f[2] & 1 == 1 { 1023 } else { 0 }], 1023.0)
-            }
+            // The word is the texel: B (1023 or 0) in bits 20–29.
+            Self::Rgb10a2SignedOct => (crate::normal::xyz10::fields(p).map(|k| k as i32), 1023.0),
         }
     }
 
