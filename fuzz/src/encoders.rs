@@ -354,12 +354,14 @@ pub const ENCODERS: &[Entry] = &[
             }
         },
     },
-    codec!(encoder; signed_oct::encode_normal_signed_oct, 21),
-    codec!(encoder; signed_oct::encode_normal_signed_oct_fast, 21),
+    // The RGB10A2 texel: u, v in bits 0-19, B in bits 20-29 (0 or 1023), A = 0.
+    codec!(encoder; signed_oct::encode_normal_signed_oct, 30),
+    codec!(encoder; signed_oct::encode_normal_signed_oct_fast, 30),
     Entry {
         name: "normal::signed_oct::encode_normal_signed_oct_unorm, and z's sign bit",
         check: |i| {
-            // R and G hold u and v as unorm10, B is bit 20 (0 or 1), A is the renderer's (0).
+            // R and G hold u and v as unorm10, B is 0 or 1023 (read here by its lowest bit,
+            // bit 20), A is the renderer's (0).
             let n = i.vec3();
             let p = signed_oct::encode_normal_signed_oct(n);
             let mut want = rgb10a2_channels(p & 0xf_ffff);
