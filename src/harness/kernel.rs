@@ -357,11 +357,16 @@ impl Kernel<'_> {
         Ok(pipeline)
     }
 
+    /// Build one pipeline. With `PREPASS_LOG_COMPILES` set, each build prints a line to stderr:
+    /// the function, a hash of the module's text (the same text compiles once per process),
+    /// its size and the seconds naga and the driver took. Where a run's time goes on a CPU
+    /// adapter: most of an emulated suite is these builds (`docs/timings.md`).
     pub(super) fn build(
         &self,
         source: &str,
         label: &str,
     ) -> Result<wgpu::ComputePipeline, HarnessError> {
+        let start = std::time::Instant::now();
         // naga first: its messages point at the offending line, and wgpu would otherwise panic.
         parse_and_validate(source).map_err(|e| HarnessError::Shader(e.to_string()))?;
         let device = &self.gpu.device;
@@ -380,6 +385,17 @@ impl Kernel<'_> {
         });
         if let Some(e) = pollster::block_on(scope.pop()) {
             return Err(HarnessError::Shader(e.to_string()));
+        }
+        if std::env::var_os("PREPASS_LOG_COMPILES").is_some() {
+            use std::hash::{Hash, Hasher};
+            let mut h = std::collections::hash_map::DefaultHasher::new();
+            source.hash(&mut h);
+            eprintln!(
+                "prepass compile: {label} {:016x} {} bytes {:.3} s",
+                h.finish(),
+                source.len(),
+                start.elapsed().as_secs_f64()
+            );
         }
         Ok(pipeline)
     }
