@@ -97,8 +97,8 @@ fn parse_args() -> Result<Options, String> {
                     "usage: errplot [--out DIR] [--quick | --full] [--exhaustive32] | --check DIR\n\n\
                      Writes report.md, CSV files and SVG/PNG plots into DIR (default errplot-out).\n\
                      Three tiers:\n\
-                     \x20 --quick: CI's smoke run (notebooks too): fewer cases, one codec per kind \
-                     under emulation, the three plotted cost targets, no timing on a software adapter.\n\
+                     \x20 --quick: CI's smoke run (notebooks too): fewer cases, the rounding \
+                     encoders under emulation, the three plotted cost targets, no timing on a software adapter.\n\
                      \x20 (no flag), the default: every section, codec and cost target, the long sweeps \
                      sampled (the report says how much), no timing on a software adapter; minutes on two cores.\n\
                      \x20 --full: every sweep at full size, every codec under every policy, every \
@@ -193,7 +193,7 @@ fn run(ctx: &mut Ctx) -> Result<(), String> {
             Tier::Default =>
                 " — the long sweeps sampled (each section says how much; `--full` runs them \
                  whole), no timing on a software adapter",
-            Tier::Quick => " — CI's smoke run: fewer cases, one codec per kind under emulation",
+            Tier::Quick => " — CI's smoke run: fewer cases, the rounding encoders under emulation",
         }
     ));
     ctx.line(
