@@ -60,6 +60,12 @@ fn t_unpack4x8unorm(p: u32) -> vec4<f32> { return unpack4x8unorm(p); }
 fn t_unpack4x8snorm(p: u32) -> vec4<f32> { return unpack4x8snorm(p); }
 fn t_pack4x8unorm(v: vec4<f32>) -> u32 { return pack4x8unorm(v); }
 fn t_length(v: vec3<f32>) -> f32 { return length(v); }
+fn t_min(a: f32, b: f32) -> f32 { return min(a, b); }
+fn t_max(a: f32, b: f32) -> f32 { return max(a, b); }
+fn t_clamp(a: f32, b: f32) -> f32 { return clamp(a, -b, 2.0); }
+fn t_abs(a: f32) -> f32 { return abs(a); }
+fn t_floor(a: f32) -> f32 { return floor(a); }
+fn t_lt(a: f32, b: f32) -> f32 { return select(0.0, 1.0, a < b); }
 ";
 
 /// The spec's ULP of a real x: the least distance between two adjacent finite f32 values
@@ -866,6 +872,78 @@ fn float_to_integer_conversions_flag_only_non_finite_operands() {
         );
         for (x, flagged) in bad.iter().zip(flags) {
             assert!(flagged, "{policy}: vec2<i32>(1, {x}) is not flagged");
+        }
+    }
+}
+
+/// `min`, `max`, `clamp`, `abs`, `floor` and `<` are exact, so no arithmetic helper sees them;
+/// a ±∞ or NaN operand of theirs still leaves the spec's domain, and raises bit 2 of the flag
+/// word (`EmulatedKernel::run_flags`) under every policy, in either operand; finite operands
+/// (subnormals, ±0, ±f32::MAX included) never raise a flag.
+#[test]
+fn exact_operations_flag_non_finite_operands_with_bit_2() {
+    let finite = [0.0f32, -0.0, 1.5, -2.5, 1e-40, -1e-40, f32::MAX, -f32::MAX];
+    let bad = [f32::INFINITY, f32::NEG_INFINITY, f32::NAN, -f32::NAN];
+    // Two operands: each bad value first, then second, beside a finite one; every finite pair.
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    for &x in &bad {
+        a.extend([x, 1.0]);
+        b.extend([1.0, x]);
+    }
+    let (fa, fb): (Vec<f32>, Vec<f32>) = finite
+        .iter()
+        .flat_map(|&x| finite.iter().map(move |&y| (x, y)))
+        .unzip();
+    let cases: [(&str, Vec<Arg<'_>>, Vec<Arg<'_>>); 6] = [
+        (
+            "t_min",
+            vec![Arg::column(&a), Arg::column(&b)],
+            vec![Arg::column(&fa), Arg::column(&fb)],
+        ),
+        (
+            "t_max",
+            vec![Arg::column(&a), Arg::column(&b)],
+            vec![Arg::column(&fa), Arg::column(&fb)],
+        ),
+        (
+            "t_clamp",
+            vec![Arg::column(&a), Arg::column(&b)],
+            vec![Arg::column(&fa), Arg::column(&fb)],
+        ),
+        (
+            "t_lt",
+            vec![Arg::column(&a), Arg::column(&b)],
+            vec![Arg::column(&fa), Arg::column(&fb)],
+        ),
+        ("t_abs", vec![Arg::column(&bad)], vec![Arg::column(&finite)]),
+        (
+            "t_floor",
+            vec![Arg::column(&bad)],
+            vec![Arg::column(&finite)],
+        ),
+    ];
+    for policy in ALL_POLICIES {
+        let emu = Emulation::new(policy);
+        for (f, bad_args, finite_args) in &cases {
+            let k = EmulatedKernel::new(gpu(), TESTS, f, &emu).unwrap_or_else(|e| panic!("{e}"));
+            let n = |args: &[Arg<'_>]| match args[0] {
+                Arg::Column(bytes) => bytes.len() as u64 / 4,
+                _ => unreachable!(),
+            };
+            let (_, words) = k.run_flags(bad_args, n(bad_args)).unwrap();
+            for (i, w) in words.iter().enumerate() {
+                assert!(
+                    w & 2 != 0,
+                    "{policy}: {f}, bad case {i} (operands from {bad:?}) raised flag word {w:#x}, not bit 2"
+                );
+            }
+            let (_, words) = k.run_flags(finite_args, n(finite_args)).unwrap();
+            for (i, w) in words.iter().enumerate() {
+                assert_eq!(
+                    *w, 0,
+                    "{policy}: {f}, finite case {i} (operands from {finite:?}) flagged"
+                );
+            }
         }
     }
 }
