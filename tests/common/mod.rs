@@ -832,3 +832,37 @@ pub fn assert_writes_like_the_engine(
         differ.first()
     );
 }
+
+/// The directions an engine-interop test writes (issue 60): 2^20 spherical-Fibonacci directions
+/// first (so `[..1 << 20]` is that set), then the adversarial set (axes, folds, poles; its folds
+/// lie on `|x| + |y| + |z| = 1`, not unit: an engine that writes unnormalised input sees them
+/// shorter), circles with a zero x or y of either sign, and the band `|z| < 2^-10` (z = ±0,
+/// ±2^-11, ±1e-6, ±1e-12) at 4,096 azimuths each.
+#[allow(dead_code)]
+pub fn interop_directions() -> Vec<[f32; 3]> {
+    let mut dirs = prepass::sweep::normal::fibonacci_directions(1 << 20);
+    dirs.extend(prepass::sweep::normal::adversarial_directions());
+    let zs = [
+        0.0f32,
+        -0.0,
+        1.0 / 2048.0,
+        -1.0 / 2048.0,
+        1e-6,
+        -1e-6,
+        1e-12,
+        -1e-12,
+    ];
+    for k in 0..4096 {
+        let (s, c) = (f64::from(k) * std::f64::consts::TAU / 4096.0).sin_cos();
+        let (s, c) = (s as f32, c as f32);
+        for zero in [0.0f32, -0.0] {
+            dirs.push([zero, c, s]);
+            dirs.push([c, zero, s]);
+        }
+        for z in zs {
+            let r = (1.0 - f64::from(z).powi(2)).sqrt() as f32;
+            dirs.push([c * r, s * r, z]);
+        }
+    }
+    dirs
+}
