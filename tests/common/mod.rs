@@ -866,3 +866,32 @@ pub fn interop_directions() -> Vec<[f32; 3]> {
     }
     dirs
 }
+
+/// An engine's texels read by prepass's `decoder` (in `source`) on the adapter against the
+/// engine's reader in f64 (`None`: no direction there, skipped): asserts every angle within
+/// `sweep::normal::decode_angle_deg` (the decoder's rounding of the exact direction) and returns
+/// the worst, in degrees. `what` names the decoder and the engine in a failure.
+#[allow(dead_code)]
+pub fn assert_reads_like_the_engine(
+    source: &str,
+    decoder: &str,
+    texels: &[u32],
+    engine: impl Fn(u32) -> Option<[f64; 3]>,
+    what: &str,
+) -> f64 {
+    use prepass::precision::metrics::{angle_degrees, widen3};
+    let got = run_kernel(source, decoder, &[Arg::column(texels)], texels.len() as u64);
+    let worst = texels
+        .iter()
+        .zip(got.as_vec3())
+        .filter_map(|(&p, &v)| engine(p).map(|u| angle_degrees(widen3(v), u)))
+        .fold(0f64, f64::max);
+    prepass::assert_within!(
+        worst,
+        prepass::sweep::normal::decode_angle_deg(),
+        "sweep::normal::decode_angle_deg: the decoder's rounding of the exact direction",
+        "{decoder} against {what}, {} texels, degrees",
+        texels.len()
+    );
+    worst
+}
