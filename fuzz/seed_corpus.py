@@ -213,3 +213,16 @@ for v in VECS + [(f(0.6), f(0.8), NZ), (f(0.6), f(0.8), SUB), (f(1.0), f(-1.0), 
                  (f(0.0), f(0.0), f(-1.0)), (f(1.0), f(1.0), f(1.0))]:
     for e in (39, 40, 41):
         write("encoders", e, words(*v))
+# encoders (appended): 42 encode_normal_oct24_hdrp, 43 its z sign (HDRP's floor: the issue's
+# near-equator normal, signed zeros and subnormal z), 44 the URP and Substrate roughness bytes
+# (two r, monotonic check; Substrate's truncation boundaries k/255). decoders (appended): 31 the
+# URP and Substrate roughness readers (code, channel).
+for v in VECS + [(f(0.97718143), f(0.21240622), f(-0.0001)), (f(0.6), f(0.8), NZ),
+                 (f(0.6), f(0.8), NSUB), (f(1.0), f(0.0), f(-1 / 2048)), (PZ, NZ, f(-1.0))]:
+    for e in (42, 43):
+        write("encoders", e, words(*v))
+for a in FLOATS + [f(k / 255) for k in (1, 157, 158, 254)] + [f(0.618034), f(0.3)]:
+    write("encoders", 44, words(a, f(0.5)))
+for c in CODES:
+    for v in FLOATS:
+        write("decoders", 31, words(c, v))

@@ -735,6 +735,12 @@ fn normal_unorm_and_generic_encoders() {
     );
     check!(
         v,
+        oct::encode_normal_oct24_hdrp,
+        bn::encode_normal_oct24_hdrp,
+        encode_normal_oct24_hdrp_with
+    );
+    check!(
+        v,
         xyz10::encode_normal_xyz10_unorm,
         bn::encode_normal_xyz10_unorm,
         encode_normal_xyz10_unorm_with
@@ -891,8 +897,9 @@ fn roughness_encode() {
 /// GGX roughness (`prepass::batch::roughness_ggx`): every code and the stratified 32-bit sample
 /// through the decoders; every `f32` in `[0, 1]` with a stride of 7 (every code at many
 /// significands), every `f32` within 64 ULP of each linear code boundary (where the exact
-/// quantiser's boundary test decides), and the stratified sample (NaNs, infinities, negatives,
-/// subnormals, huge values) through the encoders, Godot's with both flags.
+/// quantiser's boundary test decides) and of each `k/255` (where Substrate's truncation steps),
+/// and the stratified sample (NaNs, infinities, negatives, subnormals, huge values) through the
+/// encoders, Godot's with both flags.
 #[test]
 fn roughness_ggx_encoders_and_decoders() {
     use prepass::batch::roughness_ggx as bg;
@@ -918,6 +925,18 @@ fn roughness_ggx_encoders_and_decoders() {
         bg::decode_roughness_ggx8_log,
         decode_roughness_ggx8_log_with
     );
+    check!(
+        &codes,
+        g::decode_roughness_urp8,
+        bg::decode_roughness_urp8,
+        decode_roughness_urp8_with
+    );
+    check!(
+        &codes,
+        g::decode_roughness_substrate8,
+        bg::decode_roughness_substrate8,
+        decode_roughness_substrate8_with
+    );
     let mut rs: Vec<f32> = (0..=0x3f80_0000u32)
         .step_by(7)
         .map(f32::from_bits)
@@ -928,12 +947,29 @@ fn roughness_ggx_encoders_and_decoders() {
             rs.extend((c - 64..=c + 64).map(f32::from_bits));
         }
     }
+    // Substrate's truncation boundaries k/255.
+    for k in 1..=255u32 {
+        let c = ((f64::from(k) / 255.0) as f32).to_bits();
+        rs.extend((c - 64..=c + 64).map(f32::from_bits));
+    }
     rs.extend(stratified().iter().step_by(16).map(|&b| f32::from_bits(b)));
     check!(
         &rs,
         g::encode_roughness_ggx8,
         bg::encode_roughness_ggx8,
         encode_roughness_ggx8_with
+    );
+    check!(
+        &rs,
+        g::encode_roughness_urp8,
+        bg::encode_roughness_urp8,
+        encode_roughness_urp8_with
+    );
+    check!(
+        &rs,
+        g::encode_roughness_substrate8,
+        bg::encode_roughness_substrate8,
+        encode_roughness_substrate8_with
     );
     for flag in [0u32, 1, u32::MAX] {
         check(

@@ -375,3 +375,79 @@ fn best_fit_is_at_least_as_accurate_as_godots_encoder() {
         );
     }
 }
+
+/// Godot 4's reader of its Forward+ normal_roughness texel, in f64: `normalize(c·2 − 1)` on the
+/// sampled channels `c = b/255` (`normal_roughness_compatibility` in godotengine/godot
+/// `servers/rendering/renderer_rd/shaders/forward_clustered/scene_forward_clustered_inc.glsl`,
+/// which Godot's docs tell compositor effects to copy); alpha (roughness) ignored.
+fn godot_read_f64(p: u32) -> [f64; 3] {
+    let c = [p & 0xff, (p >> 8) & 0xff, (p >> 16) & 0xff].map(|b| f64::from(b) / 255.0 * 2.0 - 1.0);
+    let l = (c[0] * c[0] + c[1] * c[1] + c[2] * c[2]).sqrt();
+    c.map(|a| a / l)
+}
+
+/// Godot 4's normal texel, both ways (issue 60; Godot's writer is `encode24(n)·0.5 + 0.5` of
+/// `scene_forward_clustered.glsl`, transcribed with its best-fit lookup texel in
+/// `tests/baselines/peer_godot.wgsl`; its reader is [`godot_read_f64`]):
+/// - **reads exact:** every 2^24 texel (alpha set) decodes with `decode_normal_xyz8` on the
+///   adapter in the direction Godot's reader gives it, to the decoder's rounding;
+/// - **writes:** over `common::interop_directions` (2^20 Fibonacci directions and the special
+///   ones), Godot's writer, `encode_normal_xyz8_best` and `encode_normal_xyz8` run on the adapter
+///   and are compared texel for texel; each one's max error as Godot reads it is printed and
+///   published (`interop-godot`), and the best fit's max is no more than Godot's writer's plus
+///   `normal::F32_SLACK_DEG` (its code is the nearest of all, `best_fit_is_the_nearest_of_all_codes`).
+#[test]
+fn godot_normal_texel_both_ways() {
+    use prepass::harness::Arg;
+    use prepass::precision::metrics::{angle_degrees, widen3};
+    use prepass::wgsl::NORMAL_XYZ8;
+    const GODOT: &str = include_str!("baselines/peer_godot.wgsl");
+    let texels: Vec<u32> = (0..1u32 << 24)
+        .map(|p| p | ((p * 53) & 0xff) << 24)
+        .collect();
+    let worst_read = common::assert_reads_like_the_engine(
+        NORMAL_XYZ8,
+        "decode_normal_xyz8",
+        &texels,
+        |p| Some(godot_read_f64(p)),
+        "Godot's reader (f64)",
+    );
+    let dirs = common::interop_directions();
+    let m = dirs.len() as u64;
+    let run = |src: &str, f: &str| {
+        common::run_kernel(src, f, &[Arg::column(&dirs)], m)
+            .into_words()
+            .into_iter()
+            .map(|p| p & 0xff_ffff)
+            .collect::<Vec<u32>>()
+    };
+    let godot = run(GODOT, "peer_godot_normal_encode");
+    let best = run(NORMAL_XYZ8, "encode_normal_xyz8_best");
+    let rounding = run(NORMAL_XYZ8, "encode_normal_xyz8");
+    let err = |w: &[u32]| {
+        dirs.iter()
+            .zip(w)
+            .map(|(v, &p)| angle_degrees(widen3(*v), godot_read_f64(p)))
+            .fold(0f64, f64::max)
+    };
+    let fib = 1usize << 20;
+    let differ = |w: &[u32], k: usize| (0..k).filter(|&i| w[i] != godot[i]).count();
+    let (eg, eb, er) = (err(&godot), err(&best), err(&rounding));
+    let body = format!(
+        "| form | engine | reads the engine's texels | writes |\n|---|---|---|---|\n\
+         | `decode_normal_xyz8` | Godot 4 Forward+ normal_roughness (`normal_roughness_compatibility`) | exact: every 2^24 texel within {worst_read:.2e}° of Godot's reader (f64), alpha ignored | — |\n\
+         | `encode_normal_xyz8_best` | Godot 4 (`encode24`, best-fit lookup texture) | — | the nearest of all codes: differs from Godot's writer on {} of 2^20 ({} of all {m} inputs); max {eb:.4}° read by Godot against Godot's writer's {eg:.4}° |\n\
+         | `encode_normal_xyz8` | Godot 4 | — | per-channel rounding (not Godot's best fit): differs from Godot's writer on {} of 2^20; max {er:.4}° read by Godot |\n",
+        differ(&best, fib),
+        differ(&best, dirs.len()),
+        differ(&rounding, fib)
+    );
+    eprintln!("{body}");
+    common::publish_measured("docs/figures.md", "interop-godot", &body);
+    assert_within!(
+        eb,
+        eg + prepass::normal::F32_SLACK_DEG,
+        "Godot's writer's max on the same inputs + normal::F32_SLACK_DEG",
+        "encode_normal_xyz8_best read by Godot's reader: max degrees"
+    );
+}

@@ -685,6 +685,36 @@ pub const BATCH: &[Entry] = &[
         bn::encode_normal_hemioct24_fast_vouched,
         encode_normal_hemioct24_fast_vouched_with
     ),
+    entry!(
+        Vec3,
+        oct::encode_normal_oct24_hdrp,
+        bn::encode_normal_oct24_hdrp,
+        encode_normal_oct24_hdrp_with
+    ),
+    entry!(
+        f32,
+        g::encode_roughness_urp8,
+        bg::encode_roughness_urp8,
+        encode_roughness_urp8_with
+    ),
+    entry!(
+        u32,
+        g::decode_roughness_urp8,
+        bg::decode_roughness_urp8,
+        decode_roughness_urp8_with
+    ),
+    entry!(
+        f32,
+        g::encode_roughness_substrate8,
+        bg::encode_roughness_substrate8,
+        encode_roughness_substrate8_with
+    ),
+    entry!(
+        u32,
+        g::decode_roughness_substrate8,
+        bg::decode_roughness_substrate8,
+        decode_roughness_substrate8_with
+    ),
 ];
 
 /// [`substrate::encode_substrate_word`] on one `(n, roughness, flags)`, as the word entries

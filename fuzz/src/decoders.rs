@@ -342,6 +342,26 @@ pub const DECODERS: &[Entry] = &[
             );
         },
     },
+    Entry {
+        name: "roughness_ggx::{decode_roughness_urp8, decode_roughness_substrate8} (+ _unorm)",
+        check: |i| {
+            let (p, c) = (i.u32(), i.f32());
+            let b = p.min(255);
+            // URP: (255 − b)/255, one rounding; Substrate's UnpackR8: b·(1/255), two.
+            let urp = ggx::decode_roughness_urp8(p);
+            assert_eq!(urp, (255 - b) as f32 / 255.0, "{p:#x}");
+            let sub = ggx::decode_roughness_substrate8(p);
+            assert_within_abs!(
+                f64::from(sub),
+                f64::from(b) / 255.0,
+                2f64.powi(-24),
+                "two f32 roundings of a value ≤ 1",
+                "decode_roughness_substrate8({p:#x})"
+            );
+            let u = ggx::decode_roughness_urp8_unorm(c);
+            assert!((0.0..=1.0).contains(&u), "{c:?} → {u:?}");
+        },
+    },
 ];
 
 /// A code decoder with `bits` bits of code: a finite unit vector for every pattern, the bits

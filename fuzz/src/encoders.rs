@@ -379,6 +379,54 @@ pub const ENCODERS: &[Entry] = &[
             }
         },
     },
+    codec!(encoder; oct::encode_normal_oct24_hdrp, 24),
+    Entry {
+        name: "normal::oct::encode_normal_oct24_hdrp: z's sign survives HDRP's floor",
+        check: |i| {
+            // A finite input with z ≠ 0 (or −0, which HDRP's CopySign counts +) decodes with
+            // z of the sign HDRP's floor gives it.
+            let n = i.vec3();
+            let Some(s) = prepass::normal::sanitize(n) else {
+                return;
+            };
+            let z = oct::decode_normal_oct24_unity(oct::encode_normal_oct24_hdrp(n)).z;
+            assert_eq!(z >= 0.0, s.z >= 0.0, "{n:?} → z {z:?}");
+        },
+    },
+    Entry {
+        name: "roughness_ggx::{encode_roughness_urp8, encode_roughness_substrate8} (+ _unorm)",
+        check: |i| {
+            let (r, s) = (i.f32(), i.f32());
+            let x = f64::from(r);
+            // URP's smoothness byte: 255 − the exact nearest linear code.
+            let urp = ggx::encode_roughness_urp8(r);
+            assert_eq!(urp, 255 - ggx::exact::linear_code(x, 255), "{r:?}");
+            let c = ggx::encode_roughness_urp8_unorm(r);
+            assert_eq!((c * 255.0).round() as u32, urp, "{r:?}");
+            // Substrate's PackR8 truncates on [+0, 1): at most one step from ⌊255·r⌋ (the f32
+            // product's rounding), never above 254; elsewhere the linear code.
+            let sub = ggx::encode_roughness_substrate8(r);
+            if r.to_bits() < 0x3f80_0000 {
+                assert!(sub <= 254, "{r:?} → {sub}");
+                assert!(
+                    (f64::from(sub) - (255.0 * x).floor()).abs() <= 1.0,
+                    "{r:?} → {sub}"
+                );
+            } else {
+                assert_eq!(sub, ggx::exact::linear_code(x, 255), "{r:?}");
+            }
+            if !r.is_nan() && !s.is_nan() {
+                let (lo, hi) = if r <= s { (r, s) } else { (s, r) };
+                assert!(ggx::encode_roughness_urp8(lo) >= ggx::encode_roughness_urp8(hi));
+                if lo.to_bits() < 0x3f80_0000 && hi.to_bits() < 0x3f80_0000 && lo >= 0.0 {
+                    assert!(
+                        ggx::encode_roughness_substrate8(lo)
+                            <= ggx::encode_roughness_substrate8(hi)
+                    );
+                }
+            }
+        },
+    },
 ];
 
 /// A fixed-size encoder ([`check_encoder`]) on a direction read from the input.

@@ -881,6 +881,14 @@ batch_fn!(
     lane: oct24_unity_precise,
 );
 batch_fn!(
+    /// Batch [`oct::encode_normal_oct24_hdrp`] (the scalar twin per element: HDRP's `|z|` floor
+    /// needs the sanitized vector's length before the precise search).
+    encode_normal_oct24_hdrp, encode_normal_oct24_hdrp_with, "normal::encode_normal_oct24_hdrp",
+    (), Vec3 => u32,
+    scalar: oct::encode_normal_oct24_hdrp,
+    lane: oct::encode_normal_oct24_hdrp,
+);
+batch_fn!(
     /// Batch [`oct::encode_normal_oct24_unity_fast`].
     encode_normal_oct24_unity_fast, encode_normal_oct24_unity_fast_with,
     "normal::encode_normal_oct24_unity_fast",

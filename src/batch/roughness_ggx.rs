@@ -58,6 +58,46 @@ super::batch_fn!(
 );
 
 super::batch_fn!(
+    /// Batch [`g::encode_roughness_urp8`]: `dst[i] = encode_roughness_urp8(src[i])` (URP's
+    /// smoothness byte, `255 −` the linear code).
+    encode_roughness_urp8, encode_roughness_urp8_with, "roughness_ggx::encode_roughness_urp8",
+    (), f32 => u32,
+    scalar: g::encode_roughness_urp8,
+    lane: |r| g::CODE_MAX - linear_lane(r, 256.0),
+);
+
+super::batch_fn!(
+    /// Batch [`g::decode_roughness_urp8`]: `dst[i] = decode_roughness_urp8(src[i])`.
+    decode_roughness_urp8, decode_roughness_urp8_with, "roughness_ggx::decode_roughness_urp8",
+    (), u32 => f32,
+    scalar: g::decode_roughness_urp8,
+    lane: |p: u32| (g::CODE_MAX - p.min(g::CODE_MAX)) as f32 / 255.0,
+);
+
+super::batch_fn!(
+    /// Batch [`g::encode_roughness_substrate8`]: `dst[i] = encode_roughness_substrate8(src[i])`
+    /// (Unreal's truncating `PackR8` on `+0 ≤ r < 1`, the linear code elsewhere).
+    encode_roughness_substrate8, encode_roughness_substrate8_with,
+    "roughness_ggx::encode_roughness_substrate8",
+    (), f32 => u32,
+    scalar: g::encode_roughness_substrate8,
+    lane: |r: f32| {
+        let truncated = (r * 255.0) as u32;
+        let linear = linear_lane(r, 256.0);
+        if r.to_bits() < 0x3f80_0000 { truncated } else { linear }
+    },
+);
+
+super::batch_fn!(
+    /// Batch [`g::decode_roughness_substrate8`]: `dst[i] = decode_roughness_substrate8(src[i])`.
+    decode_roughness_substrate8, decode_roughness_substrate8_with,
+    "roughness_ggx::decode_roughness_substrate8",
+    (), u32 => f32,
+    scalar: g::decode_roughness_substrate8,
+    lane: |p: u32| p.min(g::CODE_MAX) as f32 * (1.0 / 255.0),
+);
+
+super::batch_fn!(
     /// Batch [`g::encode_roughness_godot8`]: `dst[i] = encode_roughness_godot8(src[i],
     /// dynamic_object)`, one flag per batch.
     encode_roughness_godot8, encode_roughness_godot8_with, "roughness_ggx::encode_roughness_godot8",

@@ -832,3 +832,66 @@ pub fn assert_writes_like_the_engine(
         differ.first()
     );
 }
+
+/// The directions an engine-interop test writes (issue 60): 2^20 spherical-Fibonacci directions
+/// first (so `[..1 << 20]` is that set), then the adversarial set (axes, folds, poles; its folds
+/// lie on `|x| + |y| + |z| = 1`, not unit: an engine that writes unnormalised input sees them
+/// shorter), circles with a zero x or y of either sign, and the band `|z| < 2^-10` (z = ±0,
+/// ±2^-11, ±1e-6, ±1e-12) at 4,096 azimuths each.
+#[allow(dead_code)]
+pub fn interop_directions() -> Vec<[f32; 3]> {
+    let mut dirs = prepass::sweep::normal::fibonacci_directions(1 << 20);
+    dirs.extend(prepass::sweep::normal::adversarial_directions());
+    let zs = [
+        0.0f32,
+        -0.0,
+        1.0 / 2048.0,
+        -1.0 / 2048.0,
+        1e-6,
+        -1e-6,
+        1e-12,
+        -1e-12,
+    ];
+    for k in 0..4096 {
+        let (s, c) = (f64::from(k) * std::f64::consts::TAU / 4096.0).sin_cos();
+        let (s, c) = (s as f32, c as f32);
+        for zero in [0.0f32, -0.0] {
+            dirs.push([zero, c, s]);
+            dirs.push([c, zero, s]);
+        }
+        for z in zs {
+            let r = (1.0 - f64::from(z).powi(2)).sqrt() as f32;
+            dirs.push([c * r, s * r, z]);
+        }
+    }
+    dirs
+}
+
+/// An engine's texels read by prepass's `decoder` (in `source`) on the adapter against the
+/// engine's reader in f64 (`None`: no direction there, skipped): asserts every angle within
+/// `sweep::normal::decode_angle_deg` (the decoder's rounding of the exact direction) and returns
+/// the worst, in degrees. `what` names the decoder and the engine in a failure.
+#[allow(dead_code)]
+pub fn assert_reads_like_the_engine(
+    source: &str,
+    decoder: &str,
+    texels: &[u32],
+    engine: impl Fn(u32) -> Option<[f64; 3]>,
+    what: &str,
+) -> f64 {
+    use prepass::precision::metrics::{angle_degrees, widen3};
+    let got = run_kernel(source, decoder, &[Arg::column(texels)], texels.len() as u64);
+    let worst = texels
+        .iter()
+        .zip(got.as_vec3())
+        .filter_map(|(&p, &v)| engine(p).map(|u| angle_degrees(widen3(v), u)))
+        .fold(0f64, f64::max);
+    prepass::assert_within!(
+        worst,
+        prepass::sweep::normal::decode_angle_deg(),
+        "sweep::normal::decode_angle_deg: the decoder's rounding of the exact direction",
+        "{decoder} against {what}, {} texels, degrees",
+        texels.len()
+    );
+    worst
+}

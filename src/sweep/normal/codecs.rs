@@ -229,7 +229,7 @@ macro_rules! oct_codec {
 pub const CODECS: [Codec; 19] = [
     Codec {
         name: "xyz8",
-        stored_by: "Resistance 2; Godot 4 (this decoder; its encoder is `xyz8 best-fit`)",
+        stored_by: "Resistance 2; Godot 4 (this decoder; its encoder is `xyz8 best-fit`) — Godot reads: exact; writes: per-channel rounding, not Godot's best fit (docs/figures.md, Engine interop)",
         bits: 24,
         lanes: &UNORM8X3,
         hemisphere: false,
@@ -405,7 +405,7 @@ pub const CODECS: [Codec; 19] = [
     },
     Codec {
         name: "xyz10",
-        stored_by: "Unreal 5 GBufferA; Bevy normal prepass",
+        stored_by: "Unreal 5 GBufferA (modelled as a unorm write of n·0.5 + 0.5 from the project's notes: Unreal's source is private, not transcribed); Bevy normal prepass — reads: exact; writes: normalised first, alpha 0 where Bevy writes 1 (docs/figures.md, Engine interop)",
         bits: 30,
         lanes: &UNORM10X3,
         hemisphere: false,
@@ -421,7 +421,7 @@ pub const CODECS: [Codec; 19] = [
     },
     Codec {
         name: "snorm8",
-        stored_by: "Unity URP (default target)",
+        stored_by: "Unity URP (default target) — reads: exact; writes: URP's texels but at ties (docs/figures.md, Engine interop)",
         bits: 24,
         lanes: &SNORM8X3,
         hemisphere: false,
@@ -469,7 +469,7 @@ pub const CODECS: [Codec; 19] = [
     },
     Codec {
         name: "xyz8 best-fit",
-        stored_by: "Godot 4 (Forward+ normal_roughness, best-fit normals)",
+        stored_by: "Godot 4 (Forward+ normal_roughness, best-fit normals) — reads: exact; writes: the nearest code, not always Godot's lookup-table texel (docs/figures.md, Engine interop)",
         bits: 24,
         lanes: &UNORM8X3,
         hemisphere: false,
