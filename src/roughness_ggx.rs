@@ -222,7 +222,9 @@ pub fn encode_roughness_substrate8(r: f32) -> u32 {
 /// [`decode_roughness_ggx8`]'s `b/255` by an ULP on some bytes (counted in
 /// `tests/roughness_ggx.rs`).
 ///
-/// **Error bound:** within `2^-24·(1 + 2^-23)` relative of `b/255` (two roundings).
+/// **Error bound:** within [`bounds::SUBSTRATE_DECODE_REL`] `= 2^-23 + 2^-48` relative of
+/// `b/255` (two roundings of `2^-24` each; one is not enough: some bytes are off by more than
+/// `2^-24` relative; `tests/roughness_ggx.rs` checks both on every byte).
 ///
 /// **Bad input:** codes above 255 decode as 255 (`r` ≈ 1: `255·fl(1/255)`).
 pub fn decode_roughness_substrate8(p: u32) -> f32 {
@@ -362,6 +364,11 @@ pub mod bounds {
     /// result `≤ 1`. Dividing an absolute `u` by `127/255` gives `u·255/127`, so in all
     /// `u·255/127 + 2u + O(u²) ≤ 4.01u` (f32 rounding of values ≤ 1).
     pub const GODOT_DECODE: f64 = 4.01 * U;
+
+    /// Largest `|decode_roughness_substrate8(b) − b/255| / (b/255)`, relative, on a correctly
+    /// rounded adapter. Derivation: `fl(1/255)` is within `u` relative of `1/255` and the
+    /// product `b·fl(1/255)` adds `u` relative more: `(1 + u)² − 1 = 2u + u²`.
+    pub const SUBSTRATE_DECODE_REL: f64 = 2.0 * U + U * U;
 
     /// The round-trip bound of an `n`-step linear code, `|r − k/n| ≤ 1/(2n)` (absolute in `r`).
     pub fn linear_half_step(n: u32) -> f64 {

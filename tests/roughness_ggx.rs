@@ -12,7 +12,7 @@ use common::run_kernel;
 use prepass::harness::Arg;
 use prepass::roughness_ggx::{self as ggx, bounds, exact};
 use prepass::wgsl::ROUGHNESS_GGX;
-use prepass::{assert_at_least, assert_within};
+use prepass::{assert_at_least, assert_within, assert_within_abs};
 
 const ENGINES: &str = include_str!("baselines/roughness_ggx_engines.wgsl");
 const U: f64 = 1.0 / 16_777_216.0; // 2^-24, unit roundoff of f32
@@ -496,6 +496,9 @@ fn urp_smoothness_and_substrate_bytes_are_the_engines() {
     let ue_read = run("engine_substrate_roughness_read", &bytes);
     let ours_ue = run("decode_roughness_substrate8", &bytes);
     let mut ulp_apart = 0;
+    // UnpackR8's worst relative error over the bytes: above one rounding's 2^-24, so the
+    // promise needs both roundings (its rustdoc).
+    let mut worst_substrate_rel = 0.0f64;
     for b in 0..nb as usize {
         let (u, o) = (urp_read.as_f32()[b], ours_urp.as_f32()[b]);
         assert_within!(
@@ -516,8 +519,25 @@ fn urp_smoothness_and_substrate_bytes_are_the_engines() {
             ggx::decode_roughness_substrate8(b as u32).to_bits(),
             "twin, byte {b}"
         );
+        let exact = b as f64 / 255.0;
+        if b > 0 {
+            worst_substrate_rel = worst_substrate_rel.max((f64::from(m) - exact).abs() / exact);
+        }
+        assert_within_abs!(
+            f64::from(m),
+            exact,
+            exact * ggx::bounds::SUBSTRATE_DECODE_REL,
+            "roughness_ggx::bounds::SUBSTRATE_DECODE_REL, relative (two f32 roundings)",
+            "decode_roughness_substrate8's promise, byte {b}"
+        );
         ulp_apart += usize::from(m.to_bits() != plain.as_f32()[b].to_bits());
     }
+    assert_at_least!(
+        worst_substrate_rel,
+        > 2f64.powi(-24),
+        "one f32 rounding, 2^-24: decode_roughness_substrate8's rustdoc says some byte exceeds it",
+        "UnpackR8's worst relative error over the 256 bytes"
+    );
     let mut rs: Vec<f32> = (0..=0x3f80_0000u32)
         .step_by(61)
         .map(f32::from_bits)

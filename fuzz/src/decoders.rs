@@ -351,11 +351,12 @@ pub const DECODERS: &[Entry] = &[
             let urp = ggx::decode_roughness_urp8(p);
             assert_eq!(urp, (255 - b) as f32 / 255.0, "{p:#x}");
             let sub = ggx::decode_roughness_substrate8(p);
+            let exact = f64::from(b) / 255.0;
             assert_within_abs!(
                 f64::from(sub),
-                f64::from(b) / 255.0,
-                2f64.powi(-24),
-                "two f32 roundings of a value ≤ 1",
+                exact,
+                exact * ggx::bounds::SUBSTRATE_DECODE_REL,
+                "roughness_ggx::bounds::SUBSTRATE_DECODE_REL, relative (two f32 roundings)",
                 "decode_roughness_substrate8({p:#x})"
             );
             let u = ggx::decode_roughness_urp8_unorm(c);
