@@ -92,7 +92,10 @@ fn probe_refuses_contracting_reassociating_and_flushing_hosts() {
         ),
         (
             "a host simplifying TwoSum's error term to a + b − s",
-            host_model("return (a - (s - bb)) + (b - bb);", "return (a + b) - s;"),
+            host_model(
+                "select((a - (s - bb)) + (b - bb), 0.0, exact)",
+                "select((a + b) - s, 0.0, exact)",
+            ),
             &[
                 "reassociates",
                 "TwoSum's error term (prepass_cf_two_sum) came back 0e0",
