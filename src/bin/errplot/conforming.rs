@@ -59,8 +59,8 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     };
     let (quick, full) = (ctx.opts.quick(), ctx.opts.full());
     // What each tier emulates. The default emulates KIND_CODECS (compiling each codec's
-    // emulated modules is most of this section) and cuts what multiplies the emulated execution: linear depth under the upper and lower
-    // policies (each free operation at either end; the seeded mixes are `--full`'s) with 8 searched
+    // emulated modules is most of this section) and cuts what multiplies the emulated
+    // execution: linear depth under the upper and lower policies (each free operation at either end; the seeded mixes are `--full`'s) with 8 searched
     // inputs; the normal encodings at DEFAULT_DIRECTIONS Fibonacci directions under the upper
     // policy, not searched (`--full`: 2^18 plus the adversarial set, three policies, searched).
     let policies = ctx.opts.pick::<&[Policy]>(
@@ -80,15 +80,10 @@ pub fn section(ctx: &mut Ctx) -> Result<(), String> {
     };
     // The round-trip search compiles one more emulated module per codec: `--full` only.
     let normal_searched = if full { SEARCHED_NORMAL_INPUTS } else { 0 };
+    let emulated: &[&str] = if quick { &QUICK_CODECS } else { &KIND_CODECS };
     let codecs: Vec<Codec> = CODECS
         .into_iter()
-        .filter(|c| {
-            full || if quick {
-                QUICK_CODECS.contains(&c.name)
-            } else {
-                KIND_CODECS.contains(&c.name)
-            }
-        })
+        .filter(|c| full || emulated.contains(&c.name))
         .collect();
     // The two families on two threads: most of each is the driver compiling emulated modules,
     // one thread per module, and this section is the report's longest.
