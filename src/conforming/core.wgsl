@@ -75,11 +75,15 @@ fn prepass_cf_rand(site: u32, x: f32, y: f32) -> u32 {
 // upper end (or larger form), 0 = the lower; a site reads slot hash(site ^ context) % 256. The table
 // wrappers the rewrite adds set it from their last two arguments, so one compiled module
 // serves every table. prepass_cf_touched: the slots this evaluation read, for the search to
-// enumerate only those. Both are flat arrays of eight words indexed by slot >> 5: with two
-// levels (array<vec4<u32>, 2>, a run-time index into each) lavapipe compiled the slot-mask
-// pipeline of an emulated lighting function in 69 s instead of 17.5 s (values: 20 s, not 18).
-var<private> prepass_cf_dirs: array<u32, 8>;
-var<private> prepass_cf_touched: array<u32, 8>;
+// enumerate only those. Each is eight words, slot >> 5 the word, held as two vec4 (words 0-3,
+// 4-7) and reached with selects, never a run-time index: lavapipe turns each indexed access
+// into branches. (Two levels, array<vec4<u32>, 2> with a run-time index into each, compiled
+// the slot-mask pipeline of an emulated lighting function in 69 s instead of 17.5 s; a flat
+// array<u32, 8> builds oct16's emulated round trip in 5.4 s, these selects in 4.9 s.)
+var<private> prepass_cf_dirs_lo: vec4<u32>;
+var<private> prepass_cf_dirs_hi: vec4<u32>;
+var<private> prepass_cf_touched_lo: vec4<u32>;
+var<private> prepass_cf_touched_hi: vec4<u32>;
 
 // The call context: which call of a function this evaluation is in (the rewrite brackets every
 // call of the module's own functions with enter and leave), so that each call of a helper
@@ -99,9 +103,13 @@ fn prepass_cf_leave(saved: u32) {
 fn prepass_cf_table_dir(site: u32) -> i32 {
     let slot = prepass_cf_hash(site ^ prepass_cf_ctx) & 255u;
     // Called under the seeded mode too (the choice then keeps the draw): no slot is read there.
-    let read = select(1u << (slot & 31u), 0u, prepass_cf_seeded());
-    prepass_cf_touched[slot >> 5u] = prepass_cf_touched[slot >> 5u] | read;
-    let bit = (prepass_cf_dirs[slot >> 5u] >> (slot & 31u)) & 1u;
+    let read = vec4<u32>(select(1u << (slot & 31u), 0u, prepass_cf_seeded()));
+    let lo = vec4<u32>(slot >> 5u) == vec4<u32>(0u, 1u, 2u, 3u);
+    let hi = vec4<u32>(slot >> 5u) == vec4<u32>(4u, 5u, 6u, 7u);
+    prepass_cf_touched_lo = prepass_cf_touched_lo | select(vec4<u32>(0u), read, lo);
+    prepass_cf_touched_hi = prepass_cf_touched_hi | select(vec4<u32>(0u), read, hi);
+    let w = select(vec4<u32>(0u), prepass_cf_dirs_lo, lo) | select(vec4<u32>(0u), prepass_cf_dirs_hi, hi);
+    let bit = (((w.x | w.y) | (w.z | w.w)) >> (slot & 31u)) & 1u;
     return select(-1, 1, bit == 1u);
 }
 

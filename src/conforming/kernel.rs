@@ -9,10 +9,11 @@ use crate::harness::{Arg, Gpu, HarnessError, Kernel, Output, Signature};
 pub const UNDEFINED_FLAG: &str = "prepass_cf_undefined";
 
 /// The table slots an evaluation under [`Policy::Searched`] read, as eight `u32` expressions
-/// (`core.wgsl`'s `prepass_cf_touched`, in [`DirectionTable`]'s word order).
+/// (`core.wgsl`'s `prepass_cf_touched_lo` and `_hi`, in [`DirectionTable`]'s word order).
 fn touched_words() -> Vec<String> {
-    (0..8)
-        .map(|k| format!("prepass_cf_touched[{k}u]"))
+    ["lo", "hi"]
+        .into_iter()
+        .flat_map(|h| ["x", "y", "z", "w"].map(|c| format!("prepass_cf_touched_{h}.{c}")))
         .collect()
 }
 

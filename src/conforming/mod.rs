@@ -597,9 +597,7 @@ pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateE
             ]
             .concat()
             .join(", ");
-            let set = format!(
-                "{p}dirs = array<u32, 8>({p}t0.x, {p}t0.y, {p}t0.z, {p}t0.w, {p}t1.x, {p}t1.y, {p}t1.z, {p}t1.w);\n    {p}mode = {p}t2;"
-            );
+            let set = format!("{p}dirs_lo = {p}t0;\n    {p}dirs_hi = {p}t1;\n    {p}mode = {p}t2;");
             let (tv, tu) = (
                 format!("{p}table__{name}"),
                 format!("{p}table_undefined__{name}"),
@@ -611,12 +609,11 @@ pub fn emulate(source: &str, emulation: &Emulation) -> Result<Emulated, EmulateE
             );
             // The slots the evaluation reads, half by half.
             let mut touched = Vec::new();
-            for h in 0..2 {
+            for (h, half) in ["lo", "hi"].into_iter().enumerate() {
                 let tt = format!("{p}table_touched{h}__{name}");
-                let (a, b, c, d) = (4 * h, 4 * h + 1, 4 * h + 2, 4 * h + 3);
                 let _ = writeln!(
                     text,
-                    "fn {tt}({tparams}) -> vec4<u32> {{\n    {set}\n    {p}touched = array<u32, 8>();\n    _ = {call};\n    return vec4<u32>({p}touched[{a}], {p}touched[{b}], {p}touched[{c}], {p}touched[{d}]);\n}}"
+                    "fn {tt}({tparams}) -> vec4<u32> {{\n    {set}\n    {p}touched_lo = vec4<u32>();\n    {p}touched_hi = vec4<u32>();\n    _ = {call};\n    return {p}touched_{half};\n}}"
                 );
                 touched.push(tt);
             }

@@ -14,7 +14,8 @@
 // zeros, read at run time.
 fn prepass_cf_probe(kind: u32, x: vec4<f32>, dirs: u32, mode: vec4<u32>) -> vec2<f32> {
     prepass_cf_mode = mode;
-    prepass_cf_dirs = array<u32, 8>(dirs, dirs, dirs, dirs, dirs, dirs, dirs, dirs);
+    prepass_cf_dirs_lo = vec4<u32>(dirs);
+    prepass_cf_dirs_hi = vec4<u32>(dirs);
     switch kind {
         case 0u: {
             return prepass_cf_two_sum(x.x, x.y);
