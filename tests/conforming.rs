@@ -1765,7 +1765,17 @@ fn every_normal_encoding_under_emulation() {
     let codes16: Vec<u32> = (0..1 << 16).collect();
     let codes24: Vec<u32> = (0..1 << 24).step_by(61).chain([(1 << 24) - 1]).collect();
     let codes32: Vec<u32> = stratified_codes32().into_iter().step_by(97).collect();
-    let codes_for = |c: &prepass::sweep::normal::Codec| match c.bits {
+    // What one codec costs here (its emulated modules built and run under every policy, and its
+    // search), printed for `.ci/timings` (docs/timings.md), never asserted: the sweep asks for a
+    // codec's codes as it starts on it, so the time from one request to the next is one codec's.
+    let started = std::cell::RefCell::new(None::<(String, std::time::Instant)>);
+    let codec_cost = |next: Option<&str>| {
+        let now = next.map(|n| (n.to_string(), std::time::Instant::now()));
+        if let Some((name, t)) = started.replace(now) {
+            eprintln!("codec cost: {name}: {:.1} s", t.elapsed().as_secs_f64());
+        }
+    };
+    let codes_of = |c: &prepass::sweep::normal::Codec| match c.bits {
         16 => codes16.clone(),
         24 => codes24.clone(),
         // The signed octahedron: every 7th of its 2^21 codes, and the last.
@@ -1777,6 +1787,10 @@ fn every_normal_encoding_under_emulation() {
         // xyz10: the stratified 32-bit sample's low 30 bits.
         30 => codes32.iter().map(|p| p & 0x3fff_ffff).collect(),
         _ => codes32.clone(),
+    };
+    let codes_for = |c: &prepass::sweep::normal::Codec| {
+        codec_cost(Some(c.name));
+        codes_of(c)
     };
     let policies = [Policy::Upper, Policy::Lower, Policy::Seeded(1)];
     let mut inspected = 0;
@@ -1876,6 +1890,7 @@ fn every_normal_encoding_under_emulation() {
         &mut inspect,
     )
     .unwrap();
+    codec_cost(None);
     let mut readme = String::from(
         "| encoding | bits | target format | stored by | max° | mean° | max° on the worst conforming adapter, greedy / searched | SPIR-V encode / decode |\n|---|---|---|---|---|---|---|---|\n",
     );
