@@ -1772,7 +1772,10 @@ fn every_normal_encoding_under_emulation() {
     let codec_cost = |next: Option<&str>| {
         let now = next.map(|n| (n.to_string(), std::time::Instant::now()));
         if let Some((name, t)) = started.replace(now) {
-            eprintln!("codec cost: {name}: {:.1} s", t.elapsed().as_secs_f64());
+            common::uncaptured(&format!(
+                "codec cost: {name}: {:.1} s\n",
+                t.elapsed().as_secs_f64()
+            ));
         }
     };
     let codes_of = |c: &prepass::sweep::normal::Codec| match c.bits {

@@ -409,7 +409,6 @@ pub fn corpus_args(words: &[usize]) -> Vec<Vec<u32>> {
 #[allow(dead_code)]
 pub fn progress(label: &str, done: usize, total: usize) {
     use std::collections::BTreeMap;
-    use std::io::Write as _;
     use std::sync::Mutex;
     use std::time::{Duration, Instant};
     // Per label: when it was first seen, and when a line was last written.
@@ -429,7 +428,15 @@ pub fn progress(label: &str, done: usize, total: usize) {
         100.0 * done as f64 / total.max(1) as f64,
         (now - started).as_secs_f64()
     );
-    let _ = std::io::stderr().write_all(line.as_bytes());
+    uncaptured(&line);
+}
+
+/// Write `text` to stderr past libtest's capture (which takes only `print!` and `eprint!`),
+/// so that a passing test's line still reaches the caller: progress, and the figures
+/// `.ci/timings` reads (`codec cost:`).
+pub fn uncaptured(text: &str) {
+    use std::io::Write as _;
+    let _ = std::io::stderr().write_all(text.as_bytes());
 }
 
 /// A published "slots read" cell: the fewest and most direction-table slots a searched
