@@ -894,33 +894,20 @@ fn exact_operations_flag_non_finite_operands_with_bit_2() {
         .iter()
         .flat_map(|&x| finite.iter().map(move |&y| (x, y)))
         .unzip();
-    let cases: [(&str, Vec<Arg<'_>>, Vec<Arg<'_>>); 6] = [
-        (
-            "t_min",
-            vec![Arg::column(&a), Arg::column(&b)],
-            vec![Arg::column(&fa), Arg::column(&fb)],
-        ),
-        (
-            "t_max",
-            vec![Arg::column(&a), Arg::column(&b)],
-            vec![Arg::column(&fa), Arg::column(&fb)],
-        ),
-        (
-            "t_clamp",
-            vec![Arg::column(&a), Arg::column(&b)],
-            vec![Arg::column(&fa), Arg::column(&fb)],
-        ),
-        (
-            "t_lt",
-            vec![Arg::column(&a), Arg::column(&b)],
-            vec![Arg::column(&fa), Arg::column(&fb)],
-        ),
-        ("t_abs", vec![Arg::column(&bad)], vec![Arg::column(&finite)]),
-        (
-            "t_floor",
-            vec![Arg::column(&bad)],
-            vec![Arg::column(&finite)],
-        ),
+    // (function, operands with a non-finite value, finite operands): two-operand functions take
+    // the pairs above, one-operand ones the values themselves.
+    let two = |f| {
+        let bad_args = vec![Arg::column(&a), Arg::column(&b)];
+        (f, bad_args, vec![Arg::column(&fa), Arg::column(&fb)])
+    };
+    let one = |f| (f, vec![Arg::column(&bad)], vec![Arg::column(&finite)]);
+    let cases = [
+        two("t_min"),
+        two("t_max"),
+        two("t_clamp"),
+        two("t_lt"),
+        one("t_abs"),
+        one("t_floor"),
     ];
     for policy in ALL_POLICIES {
         let emu = Emulation::new(policy);
